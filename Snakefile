@@ -1,0 +1,22 @@
+# icub-affordance: one DAG from the simulated iCub to the book.
+#   snakemake -c2                                   reproduce everything with config/config.yaml
+#   snakemake -c2 --configfile .test/config/config.yaml   the small test configuration
+from snakemake.utils import min_version, validate
+
+min_version("9.0")
+
+
+configfile: "config/config.yaml"
+
+
+validate(config, "workflow/schemas/config.schema.yaml")
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/body.smk"
+
+
+rule all:
+    default_target: True
+    input:
+        rules.body_figure.output,

@@ -1,0 +1,60 @@
+"""Writing outputs so that a killed or failed job never leaves a half-written file behind."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+
+@contextlib.contextmanager
+def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
+    """Yield a temporary path beside ``path``; rename it onto ``path`` only if the block succeeds.
+
+    The temporary name keeps the final suffix, so libraries that pick a format from it still work.
+    """
+    final = Path(path)
+    final.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{final.stem}.", suffix=final.suffix, dir=final.parent)
+    os.close(fd)
+    os.chmod(tmp_name, 0o644)  # mkstemp makes 0600; outputs are for everyone to read
+    tmp = Path(tmp_name)
+    try:
+        yield tmp
+        os.replace(tmp, final)
+    finally:
+        tmp.unlink(missing_ok=True)
+
+
+def write_text(path: str | os.PathLike[str], text: str) -> None:
+    """Atomically write a text file."""
+    with atomic_path(path) as tmp:
+        tmp.write_text(text)
+
+
+def write_png(path: str | os.PathLike[str], rgb) -> None:
+    """Atomically write an RGB uint8 image (height, width, 3) as PNG."""
+    import cv2
+    import numpy as np
+
+    image = np.ascontiguousarray(np.asarray(rgb, dtype=np.uint8)[..., ::-1])  # OpenCV wants BGR
+    with atomic_path(path) as tmp:
+        if not cv2.imwrite(str(tmp), image):
+            raise OSError(f"could not write the image {path}")
+
+
+@contextlib.contextmanager
+def redirect_log(path: str | os.PathLike[str]) -> Iterator[None]:
+    """Send a pipeline job's stdout and stderr (tracebacks included) to its log file too."""
+    import traceback
+
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w") as log:
+        try:
+            with contextlib.redirect_stdout(log):
+                yield
+        except BaseException:
+            traceback.print_exc(file=log)
+            raise

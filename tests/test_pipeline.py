@@ -1,0 +1,149 @@
+"""The Snakemake pipeline: its config is checked, and the small test config runs end to end."""
+
+from __future__ import annotations
+
+import copy
+import csv
+import subprocess
+import sys
+from pathlib import Path
+
+import cv2
+import pytest
+import yaml
+from snakemake.utils import validate
+
+REPO = Path(__file__).resolve().parents[1]
+SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
+TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
+
+
+def load_config(path: Path = REPO / "config" / "config.yaml") -> dict:
+    return yaml.safe_load(path.read_text())
+
+
+@pytest.fixture
+def workdir(tmp_path: Path) -> Path:
+    """A scratch copy of the workflow (symlinks), so tests never touch the repository's data/."""
+    for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
+        (tmp_path / name).symlink_to(REPO / name)
+    return tmp_path
+
+
+def snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", "--configfile", str(TEST_CONFIG), *args],
+        cwd=workdir,
+        capture_output=True,
+        text=True,
+    )
+
+
+@pytest.mark.parametrize("config_path", [REPO / "config" / "config.yaml", TEST_CONFIG])
+def test_shipped_configs_are_valid(config_path):
+    validate(load_config(config_path), str(SCHEMA))
+
+
+@pytest.mark.parametrize(
+    ("key", "value", "words"),
+    [
+        ("seed", -1, "minimum"),
+        ("seed", "abc", "integer"),
+        ("initial_posture_deg", [0] * 15, "short"),
+        ("body_figure", {"object": "pear", "width": 320, "height": 240}, "pear"),
+        ("unexpected_key", 1, "unexpected_key"),
+    ],
+)
+def test_bad_config_values_are_refused_with_the_key_named(key, value, words):
+    config = copy.deepcopy(load_config())
+    config[key] = value
+    with pytest.raises(Exception, match=words):
+        validate(config, str(SCHEMA))
+
+
+def test_missing_key_is_refused():
+    config = load_config()
+    del config["seed"]
+    with pytest.raises(Exception, match="seed"):
+        validate(config, str(SCHEMA))
+
+
+def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
+    bad = load_config(TEST_CONFIG)
+    bad["seed"] = -5
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(bad))
+    result = subprocess.run(
+        [sys.executable, "-m", "snakemake", "-n", "--configfile", str(path)],
+        cwd=workdir,
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode != 0
+    assert "seed" in result.stderr + result.stdout
+    assert not (workdir / "data").exists()
+
+
+def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_path):
+    bad = load_config(TEST_CONFIG)
+    bad["initial_posture_deg"][3] = 150  # the elbow stops at 106
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(bad))
+    result = subprocess.run(
+        [sys.executable, "-m", "snakemake", "-c1", "--configfile", str(path)],
+        cwd=workdir,
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode != 0
+    log = (workdir / "data" / "logs" / "body_figure.log").read_text()
+    assert "initial_posture_deg" in log and "elbow = 150" in log
+    assert not (workdir / "data" / "body" / "joint_table.csv").exists()
+
+
+def test_test_config_runs_end_to_end(workdir):
+    result = snakemake(workdir, "-c2")
+    assert result.returncode == 0, result.stderr
+    body = workdir / "data" / "body"
+    config = load_config(TEST_CONFIG)["body_figure"]
+    for name in ("figure1_scene.png", "figure1_eye.png"):
+        image = cv2.imread(str(body / name))
+        assert image.shape == (config["height"], config["width"], 3)
+        assert image.std() > 10  # a picture, not a blank frame
+    with open(body / "joint_table.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["actuator"] for r in rows][:4] == [
+        "shoulder_pitch",
+        "shoulder_roll",
+        "shoulder_yaw",
+        "elbow",
+    ]
+    assert len(rows) == 16
+    assert rows[15]["max_deg"] == "115.0"
+    assert len(rows[15]["driven_joints"].split()) == 6
+    # nothing left half-written beside the outputs
+    assert not list(body.glob(".*"))
+    # a second run has nothing to do
+    again = snakemake(workdir, "-c2", "-n")
+    assert "Nothing to be done" in again.stdout + again.stderr
+
+
+def replace_with_edited_copy(workdir: Path, relative: str) -> None:
+    """Turn a symlinked file of the scratch workflow into a real copy with a new comment line."""
+    parts = Path(relative).parts
+    (workdir / parts[0]).unlink()
+    import shutil
+
+    shutil.copytree(REPO / parts[0], workdir / parts[0])
+    target = workdir / relative
+    comment = "<!-- edited -->\n" if target.suffix == ".xml" else "# edited\n"
+    target.write_text(target.read_text() + comment)
+
+
+@pytest.mark.parametrize("edited", ["assets/icub_scene.xml", "src/icub_affordance/body.py"])
+def test_an_edit_of_the_scene_or_its_code_reruns_the_body_rule(workdir, edited):
+    assert snakemake(workdir, "-c1").returncode == 0
+    assert "Nothing to be done" in snakemake(workdir, "-n").stdout
+    replace_with_edited_copy(workdir, edited)
+    plan = snakemake(workdir, "-n")
+    assert "body_figure" in plan.stdout, plan.stdout

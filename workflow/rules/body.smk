@@ -1,0 +1,21 @@
+# The simulated iCub (paper section 2.1, Figure 1).
+
+
+rule body_figure:
+    """Figure 1: the robot at the table in its initial posture, the eye's view, the joint table."""
+    input:
+        scene=config["scene"],
+        code=package_code("body", "io"),
+    output:
+        scene="data/body/figure1_scene.png",
+        eye="data/body/figure1_eye.png",
+        table="data/body/joint_table.csv",
+    params:
+        posture=config["initial_posture_deg"],
+        figure=config["body_figure"],
+    log:
+        "data/logs/body_figure.log",
+    benchmark:
+        "data/benchmarks/body_figure.tsv"
+    script:
+        "../scripts/body_figure.py"
