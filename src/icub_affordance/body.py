@@ -165,13 +165,17 @@ class Robot:
 
     def set_posture_deg(self, angles_deg: np.ndarray) -> None:
         """Teleport arm and hand to a posture (followers too) and hold it with the servos."""
+        self.write_posture(self.data, angles_deg)
+        self.data.ctrl[:] = np.radians(self._checked(angles_deg))
+        mujoco.mj_forward(self.model, self.data)
+
+    def write_posture(self, data: mujoco.MjData, angles_deg: np.ndarray) -> None:
+        """Write a posture (followers included, at rest) into any MjData of this model."""
         q = np.radians(self._checked(angles_deg))
         for k, lead in enumerate(self.lead_joints):
             for j in (lead, *self.followers[k]):
-                self.data.qpos[self.model.jnt_qposadr[j]] = q[k]
-                self.data.qvel[self.model.jnt_dofadr[j]] = 0.0
-        self.data.ctrl[:] = q
-        mujoco.mj_forward(self.model, self.data)
+                data.qpos[self.model.jnt_qposadr[j]] = q[k]
+                data.qvel[self.model.jnt_dofadr[j]] = 0.0
 
     def command_deg(self, angles_deg: np.ndarray) -> None:
         """Set the 16 position-servo targets; the physics moves the arm there."""

@@ -1,0 +1,86 @@
+"""The robot's visual input (paper section 2.2, Figure 3): an edge map of the foveated object.
+
+Eye image -> Sobel edges of the R, G and B channels -> the strongest of the three -> a fixed-size
+window at the fixation point -> binary edges -> a 10x10 map. The window is the same size for
+every object, so the map carries the object's size as well as its outline.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import cv2
+import mujoco
+import numpy as np
+
+from .body import Robot
+
+
+@dataclass(frozen=True)
+class VisionConfig:
+    width: int = 320  # eye image, pixels
+    height: int = 240
+    window: int = 80  # side of the foveated window, pixels (a multiple of `grid`)
+    grid: int = 10  # the map is grid x grid
+    edge_threshold: float = 60.0  # Sobel magnitude (0-255 image units) that counts as an edge
+    eye: str = "left_eye"
+
+    def __post_init__(self) -> None:
+        if self.window % self.grid or self.window > min(self.width, self.height):
+            raise ValueError(
+                f"vision window {self.window} must be a multiple of grid {self.grid} "
+                f"and fit in the {self.width}x{self.height} eye image"
+            )
+
+
+@dataclass(frozen=True)
+class VisualStages:
+    """What Figure 3 shows for one object."""
+
+    eye: np.ndarray  # (H, W, 3) uint8, the full eye image
+    sobel: np.ndarray  # (window, window) float, the combined edge magnitude
+    edges: np.ndarray  # (window, window) uint8 0/1
+    visual_map: np.ndarray  # (grid, grid) uint8 0/1
+
+
+def render_eye(robot: Robot, config: VisionConfig) -> np.ndarray:
+    """The eye's RGB image without cast shadows: the map should hold the object's own outline."""
+    key = (config.width, config.height)
+    if key not in robot._renderers:
+        robot.render(config.eye, config.width, config.height)
+    renderer = robot._renderers[key]
+    renderer.update_scene(robot.data, camera=config.eye)
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
+    return renderer.render().copy()
+
+
+def sobel_rgb(image: np.ndarray) -> np.ndarray:
+    """Edge magnitude per colour channel (three Sobel filters), combined by taking the strongest."""
+    image = image.astype(np.float32)
+    magnitudes = []
+    for channel in range(3):
+        gx = cv2.Sobel(image[..., channel], cv2.CV_32F, 1, 0, ksize=3)
+        gy = cv2.Sobel(image[..., channel], cv2.CV_32F, 0, 1, ksize=3)
+        magnitudes.append(np.hypot(gx, gy) / 4.0)  # /4: a unit step reads as its height
+    return np.max(magnitudes, axis=0)
+
+
+def foveate(image: np.ndarray, window: int) -> np.ndarray:
+    """The window centred on the image centre, where the fixated object is (the eyes foveate)."""
+    h, w = image.shape[:2]
+    top, left = (h - window) // 2, (w - window) // 2
+    return image[top : top + window, left : left + window]
+
+
+def to_map(edges: np.ndarray, grid: int) -> np.ndarray:
+    """A cell is 1 if any edge pixel falls in it."""
+    n = edges.shape[0] // grid
+    return edges.reshape(grid, n, grid, n).max(axis=(1, 3)).astype(np.uint8)
+
+
+def visual_stages(robot: Robot, obj: str, config: VisionConfig) -> VisualStages:
+    robot.place_object(obj)
+    eye = render_eye(robot, config)
+    sobel = foveate(sobel_rgb(eye), config.window)
+    edges = (sobel >= config.edge_threshold).astype(np.uint8)
+    return VisualStages(eye, sobel, edges, to_map(edges, config.grid))
