@@ -14,9 +14,12 @@ validate(config, "workflow/schemas/config.schema.yaml")
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/body.smk"
+include: "workflow/rules/vision.smk"
 
 
 rule all:
     default_target: True
     input:
         rules.body_figure.output,
+        rules.visual_maps.output,
+        rules.figure3.output,

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import cv2
+import numpy as np
 import pytest
 import yaml
 from snakemake.utils import validate
@@ -121,8 +122,13 @@ def test_test_config_runs_end_to_end(workdir):
     assert len(rows) == 16
     assert rows[15]["max_deg"] == "115.0"
     assert len(rows[15]["driven_joints"].split()) == 6
+    # the visual maps, keyed by object, binary 10x10, and Figure 3
+    with np.load(workdir / "data" / "vision" / "visual_maps.npz", allow_pickle=False) as maps:
+        assert sorted(maps.files) == sorted(load_config(TEST_CONFIG)["objects"])
+        assert all(maps[k].shape == (10, 10) and maps[k].max() == 1 for k in maps.files)
+    assert cv2.imread(str(workdir / "data" / "vision" / "figure3.png")).std() > 10
     # nothing left half-written beside the outputs
-    assert not list(body.glob(".*"))
+    assert not list(body.glob(".*")) and not list((workdir / "data" / "vision").glob(".*"))
     # a second run has nothing to do
     again = snakemake(workdir, "-c2", "-n")
     assert "Nothing to be done" in again.stdout + again.stderr

@@ -58,3 +58,36 @@ def redirect_log(path: str | os.PathLike[str]) -> Iterator[None]:
         except BaseException:
             traceback.print_exc(file=log)
             raise
+
+
+def save_npz(path: str | os.PathLike[str], **arrays) -> None:
+    """Atomically write arrays to a compressed .npz file that loads without pickle."""
+    import numpy as np
+
+    for name, value in arrays.items():
+        if np.asarray(value).dtype == object:
+            raise TypeError(f"{name}: object arrays would need pickle; store plain arrays")
+    with atomic_path(path) as tmp:
+        np.savez_compressed(tmp, **arrays)
+
+
+def load_npz(path: str | os.PathLike[str], required: tuple[str, ...] = ()) -> dict:
+    """Load an .npz safely (no pickle); name the file and what to do if it is missing or corrupt."""
+    import zipfile
+
+    import numpy as np
+
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"{path} is missing: rerun the pipeline (`snakemake -c2`).")
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            arrays = {key: data[key] for key in data.files}
+    except (zipfile.BadZipFile, ValueError, OSError, EOFError) as err:
+        raise ValueError(
+            f"{path} is corrupt or truncated ({err}); delete it and rerun `snakemake -c2`."
+        ) from err
+    missing = [key for key in required if key not in arrays]
+    if missing:
+        raise ValueError(f"{path} lacks {missing}; delete it and rerun `snakemake -c2`.")
+    return arrays

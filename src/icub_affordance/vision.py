@@ -20,7 +20,7 @@ from .body import Robot
 class VisionConfig:
     width: int = 320  # eye image, pixels
     height: int = 240
-    window: int = 80  # side of the foveated window, pixels (a multiple of `grid`)
+    window: int = 100  # side of the foveated window, pixels (a multiple of `grid`)
     grid: int = 10  # the map is grid x grid
     edge_threshold: float = 60.0  # Sobel magnitude (0-255 image units) that counts as an edge
     eye: str = "left_eye"
@@ -84,3 +84,10 @@ def visual_stages(robot: Robot, obj: str, config: VisionConfig) -> VisualStages:
     sobel = foveate(sobel_rgb(eye), config.window)
     edges = (sobel >= config.edge_threshold).astype(np.uint8)
     return VisualStages(eye, sobel, edges, to_map(edges, config.grid))
+
+
+def visual_maps(
+    robot: Robot, objects: tuple[str, ...], config: VisionConfig
+) -> dict[str, VisualStages]:
+    """Figure 3's stages for every object, each seen on the spot from the same posture."""
+    return {obj: visual_stages(robot, obj, config) for obj in objects}

@@ -1,0 +1,38 @@
+# The robot's visual input (paper section 2.2, Figure 3).
+
+
+rule visual_maps:
+    """Render each object on the spot, edge-filter, foveate and reduce to the 10x10 maps."""
+    input:
+        scene=config["scene"],
+        code=package_code("body", "vision", "io"),
+    output:
+        maps="data/vision/visual_maps.npz",
+        stages="data/vision/vision_stages.npz",
+    params:
+        vision=config["vision"],
+        objects=config["objects"],
+        posture=config["initial_posture_deg"],
+    log:
+        "data/logs/visual_maps.log",
+    benchmark:
+        "data/benchmarks/visual_maps.tsv"
+    script:
+        "../scripts/visual_maps.py"
+
+
+rule figure3:
+    """Figure 3: eye image, Sobel edges and visual input for every object (plot only)."""
+    input:
+        stages=rules.visual_maps.output.stages,
+        code=package_code("figures", "io"),
+    output:
+        "data/vision/figure3.png",
+    params:
+        window=config["vision"]["window"],
+    log:
+        "data/logs/figure3.log",
+    benchmark:
+        "data/benchmarks/figure3.tsv"
+    script:
+        "../scripts/figure3.py"

@@ -1,0 +1,25 @@
+"""The four 10x10 visual maps, and every stage of Figure 3, from the eye camera."""
+
+from icub_affordance.body import Robot, check_posture_deg
+from icub_affordance.io import redirect_log, save_npz
+from icub_affordance.vision import VisionConfig, visual_maps
+
+with redirect_log(snakemake.log[0]):
+    config = VisionConfig(**snakemake.params.vision)
+    robot = Robot(snakemake.input.scene)
+    robot.set_posture_deg(
+        check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")
+    )
+    stages = visual_maps(robot, tuple(snakemake.params.objects), config)
+    robot.close()
+    save_npz(snakemake.output.maps, **{obj: s.visual_map for obj, s in stages.items()})
+    save_npz(
+        snakemake.output.stages,
+        **{
+            f"{obj}__{part}": getattr(s, part)
+            for obj, s in stages.items()
+            for part in ("eye", "sobel", "edges", "visual_map")
+        },
+    )
+    for obj, s in stages.items():
+        print(f"{obj}: {int(s.visual_map.sum())} edge cells")
