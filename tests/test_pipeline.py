@@ -91,15 +91,17 @@ def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(bad))
     result = subprocess.run(
-        [sys.executable, "-m", "snakemake", "-c1", "--configfile", str(path)],
+        [sys.executable, "-m", "snakemake", "-c1", "--keep-going", "--configfile", str(path)],
         cwd=workdir,
         capture_output=True,
         text=True,
     )
     assert result.returncode != 0
-    log = (workdir / "data" / "logs" / "body_figure.log").read_text()
-    assert "initial_posture_deg" in log and "elbow = 150" in log
+    for rule in ("body_figure", "visual_maps"):
+        log = (workdir / "data" / "logs" / f"{rule}.log").read_text()
+        assert "initial_posture_deg" in log and "elbow = 150" in log, rule
     assert not (workdir / "data" / "body" / "joint_table.csv").exists()
+    assert not (workdir / "data" / "vision" / "visual_maps.npz").exists()
 
 
 def test_test_config_runs_end_to_end(workdir):
