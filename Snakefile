@@ -15,6 +15,7 @@ validate(config, "workflow/schemas/config.schema.yaml")
 include: "workflow/rules/common.smk"
 include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
+include: "workflow/rules/demos.smk"
 
 
 rule all:
@@ -23,3 +24,5 @@ rule all:
         rules.body_figure.output,
         rules.visual_maps.output,
         rules.figure3.output,
+        rules.demos.output,
+        rules.demo_filmstrip.output,

@@ -16,3 +16,34 @@ def robot() -> Robot:
     r = Robot(REPO / "assets" / "icub_scene.xml")
     yield r
     r.close()
+
+
+TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
+
+
+def scratch_workflow(path: Path) -> Path:
+    """A scratch copy of the workflow (symlinks), so tests never touch the repository's data/."""
+    for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
+        (path / name).symlink_to(REPO / name)
+    return path
+
+
+def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
+    import subprocess
+    import sys
+
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", "--configfile", str(config), *args],
+        cwd=workdir,
+        capture_output=True,
+        text=True,
+    )
+
+
+@pytest.fixture(scope="session")
+def built(tmp_path_factory) -> Path:
+    """The whole pipeline run once on the small test config; tests read its outputs."""
+    workdir = scratch_workflow(tmp_path_factory.mktemp("pipeline"))
+    result = run_snakemake(workdir, "-c2")
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    return workdir

@@ -59,6 +59,23 @@ TOUCH_NAMES: tuple[str, ...] = (
 OBJECT_NAMES: tuple[str, ...] = ("big_ball", "small_ball", "big_cube", "small_cube")
 
 
+@dataclass(frozen=True)
+class ObjectInfo:
+    """What the paper says of an object (section 2.3): balls are natural, cubes artefacts."""
+
+    category: str  # natural | artefact
+    size: str  # large | small
+    natural_grip: str  # power for large objects, precision for small ones
+
+
+OBJECTS: dict[str, ObjectInfo] = {
+    "big_ball": ObjectInfo("natural", "large", "power"),
+    "small_ball": ObjectInfo("natural", "small", "precision"),
+    "big_cube": ObjectInfo("artefact", "large", "power"),
+    "small_cube": ObjectInfo("artefact", "small", "precision"),
+}
+
+
 def to_normalised(angles_deg: np.ndarray) -> np.ndarray:
     """Figure 1's ranges mapped to 0-1, the units the network sees (paper section 2.3)."""
     return (np.asarray(angles_deg, dtype=float) - DOF_MIN_DEG) / (DOF_MAX_DEG - DOF_MIN_DEG)
@@ -214,6 +231,12 @@ class Robot:
         renderer = self._renderers[key]
         renderer.update_scene(self.data, camera=camera)
         return renderer.render().copy()
+
+    def render_state(self, qpos: np.ndarray, camera: str, width: int, height: int) -> np.ndarray:
+        """Render a recorded state (the whole qpos) without simulating: replays for pictures."""
+        self.data.qpos[:] = qpos
+        mujoco.mj_forward(self.model, self.data)
+        return self.render(camera, width, height)
 
     def close(self) -> None:
         for renderer in self._renderers.values():

@@ -48,14 +48,17 @@ class GraspPlan:
 @dataclass
 class GraspOutcome:
     postures_deg: np.ndarray  # (steps, 16) the controlled angles from start to closed grasp
+    touch_trace: np.ndarray  # (steps, 6) touch over the same steps, N
+    qpos_trace: np.ndarray  # (steps, nq) the whole state, to replay the movement for pictures
     touch: np.ndarray  # (6,) touch at the closed grasp, N
     hand_contacts: set[str] = field(default_factory=set)  # hand geoms touching the object
     lift_height: float = 0.0  # how far the object rose when the arm lifted (m)
     palm_error: float = 0.0  # distance of the palm from its planned grasp pose (m)
+    palm_in_object: np.ndarray = field(default_factory=lambda: np.zeros(3))  # final palm - object
 
 
-def pinch_point(robot: Robot, hand_deg: np.ndarray) -> tuple[np.ndarray, float]:
-    """Midpoint of the thumb and index pads (palm frame) for a hand shape, and their distance."""
+def _pads_in_palm(robot: Robot, hand_deg: np.ndarray) -> dict[str, np.ndarray]:
+    """Fingertip pad centres in the palm frame for a hand shape (kinematics only)."""
     data = mujoco.MjData(robot.model)
     posture = np.zeros(N_DOF)
     posture[N_ARM_DOF:] = hand_deg
@@ -63,9 +66,23 @@ def pinch_point(robot: Robot, hand_deg: np.ndarray) -> tuple[np.ndarray, float]:
     mujoco.mj_kinematics(robot.model, data)
     pos = data.site_xpos[robot.palm_site]
     rot = data.site_xmat[robot.palm_site].reshape(3, 3)
-    thumb = rot.T @ (data.site("touch_thumb_site").xpos - pos)
-    index = rot.T @ (data.site("touch_index_site").xpos - pos)
-    return (thumb + index) / 2, float(np.linalg.norm(thumb - index))
+    return {
+        finger: rot.T @ (data.site(f"touch_{finger}_site").xpos - pos)
+        for finger in ("thumb", "index", "middle", "ring", "little")
+    }
+
+
+def pinch_point(robot: Robot, hand_deg: np.ndarray) -> tuple[np.ndarray, float]:
+    """Midpoint of the thumb and index pads (palm frame) for a hand shape, and their distance."""
+    pads = _pads_in_palm(robot, hand_deg)
+    return (pads["thumb"] + pads["index"]) / 2, float(np.linalg.norm(pads["thumb"] - pads["index"]))
+
+
+def cage_point(robot: Robot, hand_deg: np.ndarray) -> np.ndarray:
+    """Midway between the thumb pad and the mean of the index, middle and ring pads."""
+    pads = _pads_in_palm(robot, hand_deg)
+    fingers = np.mean([pads["index"], pads["middle"], pads["ring"]], axis=0)
+    return (pads["thumb"] + fingers) / 2
 
 
 def object_contacts(robot: Robot, obj: str) -> set[str]:
@@ -86,8 +103,22 @@ def object_contacts(robot: Robot, obj: str) -> set[str]:
     return names
 
 
-def _move(robot: Robot, target_deg: np.ndarray, seconds: float, log: list) -> None:
-    """Ramp the servo targets linearly over 80% of the time, hold for the rest; log postures."""
+class _Recorder:
+    """Keeps what the demonstration records at every physics step."""
+
+    def __init__(self) -> None:
+        self.postures: list[np.ndarray] = []
+        self.touch: list[np.ndarray] = []
+        self.qpos: list[np.ndarray] = []
+
+    def __call__(self, robot: Robot) -> None:
+        self.postures.append(robot.posture_deg())
+        self.touch.append(robot.touch())
+        self.qpos.append(robot.data.qpos.copy())
+
+
+def _move(robot: Robot, target_deg: np.ndarray, seconds: float, record=None) -> None:
+    """Ramp the servo targets linearly over 80% of the time, then hold them."""
     start = robot.data.ctrl.copy()
     goal = np.radians(target_deg)
     steps = int(round(seconds / robot.model.opt.timestep))
@@ -95,7 +126,8 @@ def _move(robot: Robot, target_deg: np.ndarray, seconds: float, log: list) -> No
     for i in range(steps):
         robot.data.ctrl[:] = start + (goal - start) * min(1.0, (i + 1) / ramp)
         robot.step()
-        log.append(robot.posture_deg())
+        if record is not None:
+            record(robot)
 
 
 def execute_grasp(
@@ -118,26 +150,257 @@ def execute_grasp(
     above_ik = solve_palm_pose(
         robot, palm_goal + [0.0, 0.0, approach_height], rotation, grasp_ik.arm_deg
     )
-    log: list[np.ndarray] = [robot.posture_deg()]
+    record = _Recorder()
+    record(robot)
     target = np.asarray(initial_deg, dtype=float).copy()
     target[:N_ARM_DOF], target[N_ARM_DOF:] = above_ik.arm_deg, plan.preshape_deg
-    _move(robot, target, 1.0, log)
+    _move(robot, target, 1.0, record)
     target[:N_ARM_DOF] = grasp_ik.arm_deg
-    _move(robot, target, 0.8, log)
+    _move(robot, target, 0.8, record)
     palm_error = float(np.linalg.norm(robot.palm_pose()[0] - palm_goal))
     target[N_ARM_DOF:] = plan.closed_deg
-    _move(robot, target, 0.8, log)
+    _move(robot, target, 0.8, record)
     touch, contacts = robot.touch(), object_contacts(robot, obj)
     height = robot.object_position(obj)[2]
+    palm_in_object = robot.palm_pose()[0] - robot.object_position(obj)
 
     palm, rot = robot.palm_pose()
     lift_ik = solve_palm_pose(robot, palm + [0.0, 0.0, lift], rot, robot.posture_deg()[:N_ARM_DOF])
     target[:N_ARM_DOF] = lift_ik.arm_deg
-    _move(robot, target, 0.8, [])
+    _move(robot, target, 0.8)
     return GraspOutcome(
-        postures_deg=np.array(log),
+        postures_deg=np.array(record.postures),
+        touch_trace=np.array(record.touch),
+        qpos_trace=np.array(record.qpos),
         touch=touch,
         hand_contacts=contacts,
         lift_height=float(robot.object_position(obj)[2] - height),
         palm_error=palm_error,
+        palm_in_object=palm_in_object,
     )
+
+
+# -- the demonstration set (paper sections 2.3 and 3) --------------------------------------------
+
+GRIPS: tuple[str, ...] = ("power", "precision")
+
+
+@dataclass(frozen=True)
+class DemoConfig:
+    """How the demonstrator varies and checks its grasps (config key ``demos``)."""
+
+    sequences: int = 5  # per object and grip; they differ in the hand's final pose
+    steps: int = 10  # recorded time steps, pre-grasp (0) to final grasp (steps - 1)
+    max_attempts: int = 8  # fresh variations tried before a demo is declared impossible
+    yaw_deg: float = 5.0  # variation of the hand's final rotation about the vertical, +-
+    tilt_deg: float = 5.0  # variation of its pitch, +-
+    shift_m: float = 0.003  # variation of its final position relative to the object, +- per axis
+    lift_m: float = 0.05  # the check: lift the arm this far...
+    min_lift_m: float = 0.03  # ...and the object must rise at least this much with the hand
+    touch_threshold: float = 0.01  # N; a touch sensor reads contact above this
+
+    def __post_init__(self) -> None:
+        if self.min_lift_m > self.lift_m:
+            raise ValueError(
+                f"demos.min_lift_m ({self.min_lift_m}) cannot exceed demos.lift_m ({self.lift_m}):"
+                " the object cannot rise further than the hand"
+            )
+
+
+def grasp_template(robot: Robot, grip: str, size: str) -> GraspPlan:
+    """The demonstrator's hand shape and hand pose for a grip on a large or a small object.
+
+    Hand shapes were chosen for this hand model by a grid search in physics (see
+    ``tools/search_grasps.py``): each one wraps or pinches both shapes of its size and lifts them.
+    """
+    if grip == "power" and size == "large":
+        return GraspPlan(
+            object_in_palm=np.array([0.035, -0.01, 0.037]),
+            preshape_deg=np.array([20, 75, 0, 0, 0, 0, 0, 0, 0], dtype=float),
+            closed_deg=np.array([20, 75, 0, 90, 70, 70, 70, 70, 100], dtype=float),
+            yaw_deg=35.0,
+            tilt_deg=15.0,
+        )
+    if grip == "precision":
+        contact, yaw, tilt = {
+            "small": (np.array([0, 75, 10, 10, 45, 20, 0, 0, 0], dtype=float), 30.0, 30.0),
+            "large": (np.array([0, 45, 10, 10, 10, 0, 0, 0, 0], dtype=float), 30.0, 15.0),
+        }[size]
+        centre, _ = pinch_point(robot, contact)
+        opening = np.array([0, 0, 10, 10, 20, 0, 0, 0, 0], dtype=float)
+        return GraspPlan(
+            object_in_palm=centre,
+            preshape_deg=np.maximum(contact - opening, 0.0),
+            closed_deg=contact + [0, 0, 15, 15, 15, 15, 0, 0, 0],
+            yaw_deg=yaw,
+            tilt_deg=tilt,
+        )
+    if grip == "power" and size == "small":
+        # the four fingers pulled together (adduction -20) close on the object with the thumb
+        contact = np.array([-20, 105, 10, 10, 30, 10, 30, 10, 40], dtype=float)
+        centre = cage_point(robot, contact)
+        opening = np.array([0, 0, 10, 10, 20, 20, 20, 20, 20], dtype=float)
+        return GraspPlan(
+            object_in_palm=centre,
+            preshape_deg=np.maximum(contact - opening, [-20, -15, 0, 0, 0, 0, 0, 0, 0]),
+            closed_deg=contact + [0, 0, 15, 15, 15, 15, 15, 15, 15],
+            yaw_deg=30.0,
+            tilt_deg=30.0,
+        )
+    raise ValueError(f"unknown grip {grip!r} or size {size!r}")
+
+
+def varied(plan: GraspPlan, rng: np.random.Generator, config: DemoConfig) -> GraspPlan:
+    """The same grasp with the hand's final position and rotation moved a little."""
+    shift = rng.uniform(-config.shift_m, config.shift_m, size=3)
+    shift[2] = 0.0  # keep the palm's height over the object: the variation is in the plane
+    return GraspPlan(
+        object_in_palm=plan.object_in_palm + shift,
+        preshape_deg=plan.preshape_deg,
+        closed_deg=plan.closed_deg,
+        yaw_deg=plan.yaw_deg + rng.uniform(-config.yaw_deg, config.yaw_deg),
+        tilt_deg=plan.tilt_deg + rng.uniform(-config.tilt_deg, config.tilt_deg),
+    )
+
+
+def is_grasp(grip: str, touch: np.ndarray, lift: float, config: DemoConfig) -> bool:
+    """MODEL.md section 4: the fingers the grip uses touch the object, and it stays in the hand.
+
+    Precision: thumb and index. Power: thumb, and the palm or at least three fingers.
+    """
+    thumb, index, middle, ring, little, palm = (touch > config.touch_threshold).tolist()
+    if grip == "precision":
+        grips = thumb and index
+    else:
+        grips = thumb and (palm or sum([index, middle, ring, little]) >= 3)
+    return bool(grips and lift >= config.min_lift_m)
+
+
+@dataclass
+class Demo:
+    object: str
+    grip: str
+    sequence: int
+    attempts: int
+    plan: GraspPlan
+    postures_deg: np.ndarray  # (steps, 16)
+    touch: np.ndarray  # (steps, 6)
+    qpos: np.ndarray  # (steps, nq)
+    lift_m: float
+    palm_in_object: np.ndarray  # final palm position relative to the object centre (m)
+
+
+def sample_steps(n_total: int, steps: int) -> np.ndarray:
+    """Indices of ``steps`` evenly spaced moments, the first and the last included."""
+    return np.round(np.linspace(0, n_total - 1, steps)).astype(int)
+
+
+def demo_rng(seed: int, obj_index: int, grip_index: int, sequence: int, attempt: int):
+    """One independent random stream per demo and attempt, all derived from the config seed."""
+    return np.random.default_rng([seed, obj_index, grip_index, sequence, attempt])
+
+
+def make_demo(
+    robot: Robot,
+    obj: str,
+    grip: str,
+    sequence: int,
+    initial_deg: np.ndarray,
+    seed: int,
+    config: DemoConfig,
+    size: str,
+) -> Demo:
+    """One validated demonstration, or a RuntimeError naming it if no variation grasps."""
+    from .body import OBJECT_NAMES
+
+    template = grasp_template(robot, grip, size)
+    for attempt in range(config.max_attempts):
+        rng = demo_rng(seed, OBJECT_NAMES.index(obj), GRIPS.index(grip), sequence, attempt)
+        plan = varied(template, rng, config)
+        outcome = execute_grasp(robot, obj, plan, initial_deg, lift=config.lift_m)
+        if is_grasp(grip, outcome.touch, outcome.lift_height, config):
+            idx = sample_steps(len(outcome.postures_deg), config.steps)
+            return Demo(
+                object=obj,
+                grip=grip,
+                sequence=sequence,
+                attempts=attempt + 1,
+                plan=plan,
+                # MuJoCo's joint limits are soft: a finger pushed onto its stop by a contact can
+                # pass it by a few degrees. Proprioception reads within Figure 1's ranges.
+                postures_deg=np.clip(outcome.postures_deg[idx], DOF_MIN_DEG, DOF_MAX_DEG),
+                touch=outcome.touch_trace[idx],
+                qpos=outcome.qpos_trace[idx],
+                lift_m=outcome.lift_height,
+                palm_in_object=outcome.palm_in_object,
+            )
+    raise RuntimeError(
+        f"demo {obj}/{grip}/sequence {sequence}: no grasp in {config.max_attempts} attempts "
+        f"(touch or lift check failed). Widen demos.max_attempts or check the scene's objects."
+    )
+
+
+def object_demos(
+    robot: Robot, obj: str, initial_deg: np.ndarray, seed: int, config: DemoConfig
+) -> dict[str, np.ndarray]:
+    """All grips and sequences of one object, as arrays with (grip, sequence, ...) leading axes."""
+    from .body import OBJECTS
+
+    demos = [
+        [
+            make_demo(robot, obj, grip, seq, initial_deg, seed, config, OBJECTS[obj].size)
+            for seq in range(config.sequences)
+        ]
+        for grip in GRIPS
+    ]
+
+    def stack(get) -> np.ndarray:
+        return np.array([[get(d) for d in row] for row in demos])
+
+    return {
+        "angles_deg": stack(lambda d: d.postures_deg),
+        "touch": stack(lambda d: d.touch),
+        "qpos": stack(lambda d: d.qpos),
+        "lift_m": stack(lambda d: d.lift_m),
+        "attempts": stack(lambda d: d.attempts),
+        "palm_in_object": stack(lambda d: d.palm_in_object),
+        "yaw_deg": stack(lambda d: d.plan.yaw_deg),
+        "tilt_deg": stack(lambda d: d.plan.tilt_deg),
+        "object_in_palm": stack(lambda d: d.plan.object_in_palm),
+    }
+
+
+def merge_demos(parts: dict[str, dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+    """The per-object parts joined into the contract file's layout (object, grip, seq, ...)."""
+    from .body import DOF_NAMES, to_normalised
+
+    objects = list(parts)
+    merged = {key: np.stack([parts[o][key] for o in objects]) for key in parts[objects[0]]}
+    merged["angles"] = to_normalised(merged["angles_deg"])
+    merged["objects"] = np.array(objects)
+    merged["grips"] = np.array(GRIPS)
+    merged["dofs"] = np.array(DOF_NAMES)
+    return merged
+
+
+def summary_rows(merged: dict[str, np.ndarray], config: DemoConfig) -> list[dict[str, object]]:
+    """One readable row per demonstration: how it ended, and where the hand was."""
+    from .body import TOUCH_NAMES
+
+    rows = []
+    for o, obj in enumerate(merged["objects"]):
+        for g, grip in enumerate(merged["grips"]):
+            for s in range(merged["angles"].shape[2]):
+                final_touch = merged["touch"][o, g, s, -1]
+                palm = merged["palm_in_object"][o, g, s]
+                row = {"object": str(obj), "grip": str(grip), "sequence": s}
+                row["attempts"] = int(merged["attempts"][o, g, s])
+                row["yaw_deg"] = round(float(merged["yaw_deg"][o, g, s]), 2)
+                row["tilt_deg"] = round(float(merged["tilt_deg"][o, g, s]), 2)
+                touch = zip(TOUCH_NAMES, final_touch, strict=True)
+                row |= {n: round(float(v), 3) for n, v in touch}
+                row["lift_m"] = round(float(merged["lift_m"][o, g, s]), 4)
+                row["held"] = bool(merged["lift_m"][o, g, s] >= config.min_lift_m)
+                row |= {f"palm_{a}_m": round(float(v), 4) for a, v in zip("xyz", palm, strict=True)}
+                rows.append(row)
+    return rows

@@ -59,3 +59,23 @@ def figure3(stages: dict[str, dict[str, np.ndarray]], window: int, path) -> None
     axes[0, 2].set_title("visual input (10 x 10)", fontsize=10)
     fig.tight_layout()
     save(fig, path)
+
+
+def filmstrip(strips: dict[str, list[np.ndarray]], path, every: int = 1) -> None:
+    """One row of frames per demonstration, labelled with its time step."""
+    rows = list(strips)
+    n = len(strips[rows[0]][::every])
+    fig, axes = plt.subplots(len(rows), n, figsize=(1.6 * n, 1.45 * len(rows) + 0.3))
+    axes = np.atleast_2d(axes)
+    for r, title in enumerate(rows):
+        for k, frame in enumerate(strips[title][::every]):
+            ax = axes[r, k]
+            ax.imshow(frame)
+            ax.set_xticks([])
+            ax.set_yticks([])
+            if r == len(rows) - 1:
+                ax.set_xlabel(f"step {k * every}", fontsize=8)
+        axes[r, 0].set_ylabel(title.split(",")[0], fontsize=8)
+        axes[r, n // 2].set_title(title, fontsize=9)
+    fig.tight_layout()
+    save(fig, path)

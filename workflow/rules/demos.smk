@@ -1,0 +1,59 @@
+# Demonstration grasps (paper sections 2.3 and 3): the sequences the network learns from.
+
+
+rule demos_object:
+    """Every grip and sequence of one object, made and checked in physics (one job per object)."""
+    input:
+        scene=config["scene"],
+        code=package_code("body", "ik", "demos", "io"),
+    output:
+        "data/demos/parts/{object}.npz",
+    params:
+        demos=config["demos"],
+        seed=config["seed"],
+        posture=config["initial_posture_deg"],
+    wildcard_constraints:
+        object="|".join(config["objects"]),
+    log:
+        "data/logs/demos_object/{object}.log",
+    benchmark:
+        "data/benchmarks/demos_object/{object}.tsv"
+    script:
+        "../scripts/demos_object.py"
+
+
+rule demos:
+    """The 4 x 2 x 5 demonstrations in one file, and a readable summary."""
+    input:
+        parts=expand("data/demos/parts/{object}.npz", object=config["objects"]),
+        code=package_code("body", "demos", "io"),
+    output:
+        demos="data/demos/demos.npz",
+        summary="data/demos/summary.csv",
+    params:
+        objects=config["objects"],
+        demos=config["demos"],
+    log:
+        "data/logs/demos.log",
+    benchmark:
+        "data/benchmarks/demos.tsv"
+    script:
+        "../scripts/demos_merge.py"
+
+
+rule demo_filmstrip:
+    """Filmstrips of chosen demonstrations, replayed from their recorded states (render only)."""
+    input:
+        demos=rules.demos.output.demos,
+        scene=config["scene"],
+        code=package_code("body", "figures", "io"),
+    output:
+        "data/demos/filmstrip.png",
+    params:
+        picks=config["figures"]["filmstrip"],
+    log:
+        "data/logs/demo_filmstrip.log",
+    benchmark:
+        "data/benchmarks/demo_filmstrip.tsv"
+    script:
+        "../scripts/demo_filmstrip.py"
