@@ -16,6 +16,7 @@ include: "workflow/rules/common.smk"
 include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
+include: "workflow/rules/model.smk"
 
 
 rule all:
@@ -26,3 +27,7 @@ rule all:
         rules.figure3.output,
         rules.demos.output,
         rules.demo_filmstrip.output,
+        rules.figure2_maps.output,
+        rules.stats.output,
+        rules.figure4.output,
+        rules.figure5.output,

@@ -122,7 +122,16 @@ def test_test_config_runs_end_to_end(built):
         assert all(maps[k].shape == (10, 10) and maps[k].max() == 1 for k in maps.files)
     assert cv2.imread(str(workdir / "data" / "vision" / "figure3.png")).std() > 10
     # nothing left half-written beside the outputs
-    for folder in ("body", "vision", "demos"):
+    for name in (
+        "eval/anova.json",
+        "eval/anova_table.md",
+        "figures/figure4.png",
+        "figures/figure5.png",
+        "figures/conflict_timecourse.png",
+        "soms/figure2_maps.png",
+    ):
+        assert (workdir / "data" / name).stat().st_size > 0, name
+    for folder in ("body", "vision", "demos", "soms", "eval", "figures"):
         assert not list((workdir / "data" / folder).glob(".*")), folder
     assert cv2.imread(str(workdir / "data" / "demos" / "filmstrip.png")).std() > 10
     # a second run has nothing to do

@@ -79,3 +79,114 @@ def filmstrip(strips: dict[str, list[np.ndarray]], path, every: int = 1) -> None
         axes[r, n // 2].set_title(title, fontsize=9)
     fig.tight_layout()
     save(fig, path)
+
+
+def figure2_maps(object_act, task_act, goal_act, objects, tasks, path) -> None:
+    """The three maps' activations: each object on the Object map, each task on the Task map,
+    and each object x task on the Goal map (the inputs the network receives)."""
+    n_obj = len(objects)
+    fig = plt.figure(figsize=(2.1 * n_obj, 9.0))
+    grid = fig.add_gridspec(2 + len(tasks), n_obj)
+
+    def show(ax, act, title):
+        ax.imshow(act, cmap="magma", vmin=0, vmax=1)
+        ax.set_title(title, fontsize=8)
+        ax.set_xticks([])
+        ax.set_yticks([])
+
+    for i, obj in enumerate(objects):
+        show(fig.add_subplot(grid[0, i]), object_act[i], f"Object map: {LABELS.get(obj, obj)}")
+    for k, task in enumerate(tasks):
+        show(fig.add_subplot(grid[1, k]), task_act[k], f"Task map: {task}")
+    for k, task in enumerate(tasks):
+        for i, obj in enumerate(objects):
+            show(
+                fig.add_subplot(grid[2 + k, i]),
+                goal_act[i, k],
+                f"Goal map: {LABELS.get(obj, obj)}, {task}",
+            )
+    fig.tight_layout()
+    save(fig, path)
+
+
+def figure4(curves: list[np.ndarray], phase1: int, path, window: int = 100) -> None:
+    """Training RMSE per iteration, averaged over networks (moving average), with its spread."""
+    data = np.array(curves)  # (networks, iterations)
+    kernel = np.ones(window) / window
+    smooth = np.array([np.convolve(c, kernel, mode="valid") for c in data])
+    x = np.arange(window, data.shape[1] + 1)
+    mean = smooth.mean(axis=0)
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    ax.fill_between(
+        x,
+        smooth.min(axis=0),
+        smooth.max(axis=0),
+        color="C0",
+        alpha=0.2,
+        label=f"range over {len(data)} networks",
+    )
+    ax.plot(x, mean, color="C0", lw=1.5, label=f"mean ({window}-iteration moving average)")
+    ax.axvline(phase1, color="0.4", ls="--", lw=1)
+    ax.text(
+        phase1,
+        ax.get_ylim()[1] * 0.95,
+        "  phase 2: grasping + categorisation",
+        fontsize=8,
+        va="top",
+    )
+    ax.set_xlabel("training iteration")
+    ax.set_ylabel("RMSE (normalised joint angles)")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=8, loc="upper right", bbox_to_anchor=(1.0, 0.85))
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    save(fig, path)
+
+
+def figure5(per_network: dict[str, dict[tuple[str, str], np.ndarray]], path) -> None:
+    """Mean RMSE of congruent and incongruent categorisation trials, large vs small objects,
+    with standard errors over networks; one panel per test mode."""
+    modes = list(per_network)
+    fig, axes = plt.subplots(1, len(modes), figsize=(4.2 * len(modes), 3.6), squeeze=False)
+    for ax, mode in zip(axes[0], modes, strict=True):
+        cells = per_network[mode]
+        for size, colour, marker in (("large", "C0", "o"), ("small", "C3", "s")):
+            means = [cells[c, size].mean() for c in ("congruent", "incongruent")]
+            sems = [
+                cells[c, size].std(ddof=1) / np.sqrt(len(cells[c, size]))
+                for c in ("congruent", "incongruent")
+            ]
+            ax.errorbar(
+                [0, 1],
+                means,
+                yerr=sems,
+                color=colour,
+                marker=marker,
+                capsize=4,
+                label=f"{size} objects",
+            )
+        ax.set_xticks([0, 1], ["congruent", "incongruent"])
+        ax.set_xlim(-0.4, 1.4)
+        ax.set_ylabel("RMSE (stands for reaction time)")
+        ax.set_title(mode.replace("_", " "), fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, path)
+
+
+def conflict_timecourse(per_step: dict[str, np.ndarray], path) -> None:
+    """Per-step RMSE of congruent vs incongruent categorisation trials, mean +- SE over networks."""
+    fig, ax = plt.subplots(figsize=(6, 3.4))
+    for (label, values), colour in zip(per_step.items(), ("C2", "C1", "C0", "C3"), strict=False):
+        mean = values.mean(axis=0)
+        sem = values.std(axis=0, ddof=1) / np.sqrt(len(values))
+        steps = np.arange(1, len(mean) + 1)
+        ax.plot(steps, mean, marker="o", ms=3, color=colour, label=label)
+        ax.fill_between(steps, mean - sem, mean + sem, color=colour, alpha=0.2)
+    ax.set_xlabel("time step of the movement (output for step t)")
+    ax.set_ylabel("RMSE")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, path)

@@ -1,0 +1,68 @@
+"""Speed of training one network: the project's trainer vs a plain per-step torch autograd loop.
+
+Both run the same arithmetic on the same schedule (online back-propagation, one update per time
+step). The plain loop is timed on a sample of iterations and scaled to the full run.
+Prints a small table; the last line is JSON: {"fast_s": ..., "plain_s": ..., "ratio": ...}.
+
+    python benchmarks/train_speed.py            # synthetic materials with the real shapes
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import torch
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from test_jordan import synthetic_materials  # noqa: E402
+
+from icub_affordance.jordan import JordanNet, Weights, train_sequence_torch  # noqa: E402
+from icub_affordance.train import (  # noqa: E402
+    TrainConfig,
+    context,
+    schedule,
+    target_grip,
+    train_network,
+)
+
+
+def main(plain_sample: int = 1500) -> None:
+    torch.set_num_threads(1)
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    m = synthetic_materials()
+    config = TrainConfig()
+
+    start = time.perf_counter()
+    train_network(m, config, "A", seed=1)
+    fast = time.perf_counter() - start
+
+    rng = np.random.default_rng(1)
+    weights = Weights.init(config.hidden, config.init_scale, rng)
+    tasks, objects, sequences = schedule(config, 4, 4, rng)
+    net = JordanNet(weights)
+    sgd = torch.optim.SGD(net.parameters(), lr=config.learning_rate)
+    start = time.perf_counter()
+    for task, obj, seq in list(zip(tasks, objects, sequences, strict=True))[:plain_sample]:
+        grip = m.grips.index(target_grip(m.objects[obj], task, "A"))
+        train_sequence_torch(net, sgd, context(m, obj, task, "first_step"), m.demos[obj, grip, seq])
+    plain = (time.perf_counter() - start) * config.iterations / plain_sample
+
+    print(f"{'trainer':<28}{'one network, 12000 iterations (s)':>36}")
+    print(f"{'fast (NumPy, BLAS rank-1)':<28}{fast:>36.2f}")
+    print(f"{'plain torch autograd loop':<28}{plain:>36.2f}   (timed on {plain_sample} iterations)")
+    print(f"{'ratio':<28}{plain / fast:>36.1f}x")
+    print(
+        json.dumps(
+            {"fast_s": round(fast, 3), "plain_s": round(plain, 3), "ratio": round(plain / fast, 1)}
+        )
+    )
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,114 @@
+"""The three Kohonen maps of the paper (section 2.2): Object, Task and Goal.
+
+The maps themselves are MiniSom's. What the network receives from a map is this project's
+choice, stated here and in the book: a Gaussian bump on the map centred on the winning unit.
+For the Task and Goal maps the bump has a fixed width. For the Object map its width grows with the
+square root of the number of edge cells in the visual input, so a large object (more edge cells,
+a longer outline) lights up a larger cluster than a small one (paper section 2.3, after Caligiore
+et al. 2008). The width is computed from the input alone; nothing is keyed by the object's name.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from minisom import MiniSom
+
+TASKS: tuple[str, ...] = ("grasping", "categorisation")
+
+
+@dataclass(frozen=True)
+class SOMConfig:
+    grid: int = 10  # each map is grid x grid units
+    iterations: int = 2000  # training presentations per map
+    sigma: float = 3.0  # initial neighbourhood width (units), decays during training
+    learning_rate: float = 0.5
+    object_width_per_edge: float = 0.45  # object bump width = this * sqrt(edge cells), units
+    bump_sigma: float = 1.2  # width of the Task and Goal bumps, units
+    task_pattern_size: int = 20  # length of the random binary task patterns
+
+
+def train_som(data: np.ndarray, config: SOMConfig, seed: int) -> MiniSom:
+    som = MiniSom(
+        config.grid,
+        config.grid,
+        data.shape[1],
+        sigma=config.sigma,
+        learning_rate=config.learning_rate,
+        random_seed=seed,
+    )
+    som.random_weights_init(data)
+    som.train(data, config.iterations, random_order=True)
+    return som
+
+
+def bump(grid: int, centre: tuple[int, int], sigma: float) -> np.ndarray:
+    """A Gaussian of the map distance to ``centre``: the activation pattern a map sends on."""
+    rows, cols = np.mgrid[0:grid, 0:grid]
+    d2 = (rows - centre[0]) ** 2 + (cols - centre[1]) ** 2
+    return np.exp(-d2 / (2.0 * sigma**2))
+
+
+def object_activation(som: MiniSom, visual_map: np.ndarray, config: SOMConfig) -> np.ndarray:
+    """The Object map's response: a bump at the winner, as wide as the input is active."""
+    x = visual_map.astype(float).ravel()
+    width = config.object_width_per_edge * np.sqrt(max(x.sum(), 1.0))
+    return bump(config.grid, som.winner(x), width)
+
+
+def fixed_activation(som: MiniSom, x: np.ndarray, config: SOMConfig) -> np.ndarray:
+    return bump(config.grid, som.winner(np.asarray(x, dtype=float)), config.bump_sigma)
+
+
+@dataclass
+class SOMs:
+    """The three trained maps' outputs, everything the network and the figures need."""
+
+    object_act: np.ndarray  # (objects, grid, grid)
+    task_act: np.ndarray  # (tasks, grid, grid)
+    goal_act: np.ndarray  # (objects, tasks, grid, grid)
+    task_patterns: np.ndarray  # (tasks, task_pattern_size) the random task inputs
+    object_weights: np.ndarray  # MiniSom weights (grid, grid, 100)
+    task_weights: np.ndarray
+    goal_weights: np.ndarray
+    object_winners: np.ndarray  # (objects, 2)
+    goal_winners: np.ndarray  # (objects, tasks, 2)
+
+
+def train_soms(visual_maps: np.ndarray, config: SOMConfig, seed: int) -> SOMs:
+    """Train Object, Task and Goal maps in that order (the Goal map learns from the other two)."""
+    rng = np.random.default_rng([seed, 1])
+    flat = visual_maps.reshape(len(visual_maps), -1).astype(float)
+    object_som = train_som(flat, config, seed + 11)
+    object_act = np.array([object_activation(object_som, m, config) for m in visual_maps])
+
+    # the paper's task inputs: a pattern for grasping and a "new (random)" one for categorising
+    patterns = rng.integers(0, 2, size=(len(TASKS), config.task_pattern_size)).astype(float)
+    while np.array_equal(patterns[0], patterns[1]):
+        patterns[1] = rng.integers(0, 2, size=config.task_pattern_size)
+    task_som = train_som(patterns, config, seed + 12)
+    task_act = np.array([fixed_activation(task_som, p, config) for p in patterns])
+
+    goal_inputs = np.array(
+        [np.concatenate([o.ravel(), t.ravel()]) for o in object_act for t in task_act]
+    )
+    goal_som = train_som(goal_inputs, config, seed + 13)
+    goal_act = np.array([fixed_activation(goal_som, g, config) for g in goal_inputs])
+    n_obj, n_task = len(object_act), len(task_act)
+    return SOMs(
+        object_act=object_act,
+        task_act=task_act,
+        goal_act=goal_act.reshape(n_obj, n_task, config.grid, config.grid),
+        task_patterns=patterns,
+        object_weights=object_som.get_weights(),
+        task_weights=task_som.get_weights(),
+        goal_weights=goal_som.get_weights(),
+        object_winners=np.array([object_som.winner(x) for x in flat]),
+        goal_winners=np.array([goal_som.winner(g) for g in goal_inputs]).reshape(n_obj, n_task, 2),
+    )
+
+
+def active_units(activation: np.ndarray, threshold: float = 0.5) -> int:
+    """How many units of a map respond above ``threshold`` (the size of its cluster)."""
+    return int((activation > threshold).sum())

@@ -1,0 +1,119 @@
+"""The paper's statistics (section 3): ANOVAs of trial RMSE by congruency and object size.
+
+Two analyses of the categorisation trials: the paper's two-way ANOVA over all trials (every
+trial an observation), and a repeated-measures ANOVA with the network as the subject, which
+respects that each network contributes trials to every cell. Both report F, degrees of freedom,
+p and partial eta squared.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import statsmodels.formula.api as smf
+from statsmodels.stats.anova import AnovaRM, anova_lm
+
+EFFECTS = {"congruency": "congruency", "size": "size", "interaction": "congruency:size"}
+
+
+def categorisation_trials(trials: pd.DataFrame, mode: str) -> pd.DataFrame:
+    df = trials[(trials["task"] == "categorisation") & (trials["mode"] == mode)].copy()
+    df["congruency"] = np.where(df["congruent"].astype(str) == "True", "congruent", "incongruent")
+    return df
+
+
+def partial_eta_squared(f: float, df1: float, df2: float) -> float:
+    return float(f * df1 / (f * df1 + df2))
+
+
+def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
+    model = smf.ols("rmse ~ C(congruency) * C(size)", data=df).fit()
+    table = anova_lm(model, typ=2)
+    names = {
+        "congruency": "C(congruency)",
+        "size": "C(size)",
+        "interaction": "C(congruency):C(size)",
+    }
+    df2 = float(table.loc["Residual", "df"])
+    out = {}
+    for effect, row in names.items():
+        f, df1 = float(table.loc[row, "F"]), float(table.loc[row, "df"])
+        out[effect] = {
+            "F": f,
+            "df1": df1,
+            "df2": df2,
+            "p": float(table.loc[row, "PR(>F)"]),
+            "eta_p2": partial_eta_squared(f, df1, df2),
+        }
+    return out
+
+
+def repeated_measures_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
+    fit = AnovaRM(
+        df, depvar="rmse", subject="network", within=["congruency", "size"], aggregate_func="mean"
+    ).fit()
+    table = fit.anova_table
+    out = {}
+    for effect, row in EFFECTS.items():
+        f, df1, df2 = (float(table.loc[row, c]) for c in ("F Value", "Num DF", "Den DF"))
+        out[effect] = {
+            "F": f,
+            "df1": df1,
+            "df2": df2,
+            "p": float(table.loc[row, "Pr > F"]),
+            "eta_p2": partial_eta_squared(f, df1, df2),
+        }
+    return out
+
+
+def cell_means(df: pd.DataFrame) -> dict[str, float]:
+    """Mean RMSE per congruency x size cell (over networks' means), and the marginal means."""
+    per_net = df.groupby(["network", "congruency", "size"])["rmse"].mean().reset_index()
+    out = {
+        f"{c}_{s}": float(v)
+        for (c, s), v in per_net.groupby(["congruency", "size"])["rmse"].mean().items()
+    }
+    out |= {c: float(v) for c, v in per_net.groupby("congruency")["rmse"].mean().items()}
+    out |= {s: float(v) for s, v in per_net.groupby("size")["rmse"].mean().items()}
+    return out
+
+
+def analyse(trials: pd.DataFrame) -> dict[str, object]:
+    """Everything anova.json holds, for both test modes."""
+    result: dict[str, object] = {}
+    for mode in ("closed_loop", "teacher_forced"):
+        df = categorisation_trials(trials, mode)
+        result[mode] = {
+            "n_trials": int(len(df)),
+            "n_networks": int(df["network"].nunique()),
+            "two_way": two_way_anova(df),
+            "repeated_measures": repeated_measures_anova(df),
+            "means": cell_means(df),
+            "wrong_grip_rate": wrong_grip_rates(df),
+        }
+    return result
+
+
+def wrong_grip_rates(df: pd.DataFrame) -> dict[str, float]:
+    """How often the final posture is nearer the other grip than the required one, per cell."""
+    wrong = df["final_grip"] != df["target_grip"]
+    return {
+        f"{c}_{s}": float(v)
+        for (c, s), v in wrong.groupby([df["congruency"], df["size"]]).mean().items()
+    }
+
+
+def anova_table_markdown(result: dict[str, object]) -> str:
+    lines = [
+        "| mode | analysis | effect | F | df | p | partial eta^2 |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for mode in ("closed_loop", "teacher_forced"):
+        for analysis in ("two_way", "repeated_measures"):
+            for effect, r in result[mode][analysis].items():
+                lines.append(
+                    f"| {mode.replace('_', ' ')} | {analysis.replace('_', ' ')} | {effect} | "
+                    f"{r['F']:.2f} | {r['df1']:.0f}, {r['df2']:.0f} | {r['p']:.3g} | "
+                    f"{r['eta_p2']:.3f} |"
+                )
+    return "\n".join(lines) + "\n"

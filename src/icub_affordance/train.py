@@ -1,0 +1,159 @@
+"""The paper's training regime (sections 2.3 and 3; MODEL.md section 7).
+
+Phase 1: every iteration a grasping trial, target the object's natural grip. Phase 2: half the
+iterations grasping trials, half categorisation trials whose target grip follows the network's
+mapping of the object's category. Each iteration: one object and one of its training sequences
+drawn at random, presented step by step with the demonstrated posture fed back.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .body import OBJECTS
+from .jordan import N_GOAL, N_VISUAL, OnlineTrainer, Weights, equal_runs
+from .som import TASKS
+
+GRASPING, CATEGORISATION = 0, 1
+MAPPINGS = {
+    # mapping A (the paper's networks 1-6): natural objects -> power, artefacts -> precision
+    "A": {"natural": "power", "artefact": "precision"},
+    "B": {"natural": "precision", "artefact": "power"},
+}
+CUES = ("first_step", "all_steps")
+
+
+@dataclass(frozen=True)
+class TrainConfig:
+    hidden: int = 10
+    learning_rate: float = 0.075
+    iterations: int = 12000
+    phase1_iterations: int = 6000
+    init_scale: float = 0.5  # initial weights uniform in +- this
+    categorisation_cue: str = "first_step"  # or "all_steps"
+
+    def __post_init__(self) -> None:
+        if self.categorisation_cue not in CUES:
+            raise ValueError(
+                f"categorisation_cue must be one of {CUES}, not {self.categorisation_cue!r}"
+            )
+        if not 0 <= self.phase1_iterations <= self.iterations:
+            raise ValueError("phase1_iterations must lie between 0 and iterations")
+        if (self.iterations - self.phase1_iterations) % 2:
+            raise ValueError("phase 2 must have an even number of iterations (half of each task)")
+
+
+@dataclass(frozen=True)
+class Materials:
+    """Everything a network learns from, with the object axis in the same order everywhere."""
+
+    objects: tuple[str, ...]
+    grips: tuple[str, ...]
+    visual: np.ndarray  # (objects, 100) the visual maps
+    goal: np.ndarray  # (objects, tasks, 100) the Goal map's activations
+    demos: np.ndarray  # (objects, grips, sequences, steps, 16) normalised postures
+
+    @property
+    def n_train_sequences(self) -> int:
+        return self.demos.shape[2] - 1  # the last sequence is held out
+
+
+def mapping_of(network: int, n_networks: int) -> str:
+    """The first half of the networks learn mapping A, the second half mapping B (paper, sec. 3)."""
+    return "A" if network < n_networks // 2 else "B"
+
+
+def target_grip(obj: str, task: int, mapping: str) -> str:
+    info = OBJECTS[obj]
+    return info.natural_grip if task == GRASPING else MAPPINGS[mapping][info.category]
+
+
+def context(m: Materials, obj: int, task: int, cue: str) -> np.ndarray:
+    """Visual and goal input at each of the steps-1 transitions of a trial: (steps-1, 200).
+
+    In a categorisation trial the Task map shows the categorisation pattern at the first step
+    only (cue "first_step", this project's reading of the paper), then the grasping pattern again;
+    with cue "all_steps" it stays on.
+    """
+    steps = m.demos.shape[3] - 1
+    ctx = np.empty((steps, N_VISUAL + N_GOAL))
+    ctx[:, :N_VISUAL] = m.visual[obj]
+    ctx[:, N_VISUAL:] = m.goal[obj, GRASPING]
+    if task == CATEGORISATION:
+        cued = slice(0, 1) if cue == "first_step" else slice(0, steps)
+        ctx[cued, N_VISUAL:] = m.goal[obj, CATEGORISATION]
+    return ctx
+
+
+def schedule(config: TrainConfig, n_objects: int, n_sequences: int, rng: np.random.Generator):
+    """(task, object, sequence) for every iteration: phase 1 grasping, phase 2 half and half."""
+    phase2 = config.iterations - config.phase1_iterations
+    tasks = np.concatenate(
+        [
+            np.full(config.phase1_iterations, GRASPING),
+            rng.permutation(np.repeat([GRASPING, CATEGORISATION], phase2 // 2)),
+        ]
+    )
+    objects = rng.integers(0, n_objects, config.iterations)
+    sequences = rng.integers(0, n_sequences, config.iterations)
+    return tasks, objects, sequences
+
+
+def train_network(
+    m: Materials, config: TrainConfig, mapping: str, seed: int
+) -> tuple[Weights, dict[str, np.ndarray]]:
+    """Train one network; return its weights and its learning curve (one row per iteration)."""
+    rng = np.random.default_rng(seed)
+    weights = Weights.init(config.hidden, config.init_scale, rng)
+    tasks, objects, sequences = schedule(config, len(m.objects), m.n_train_sequences, rng)
+    trainer = OnlineTrainer(weights, config.learning_rate)
+    contexts = {
+        (o, k): context(m, o, k, config.categorisation_cue)
+        for o in range(len(m.objects))
+        for k in range(len(TASKS))
+    }
+    runs = {key: equal_runs(ctx) for key, ctx in contexts.items()}
+    grips = {
+        (o, k): m.grips.index(target_grip(m.objects[o], k, mapping))
+        for o in range(len(m.objects))
+        for k in range(len(TASKS))
+    }
+    rmse = np.empty(config.iterations)
+    for i, (task, obj, seq) in enumerate(zip(tasks, objects, sequences, strict=True)):
+        key = (obj, task)
+        rmse[i] = trainer.train_sequence(contexts[key], m.demos[obj, grips[key], seq], runs[key])
+    curve = {
+        "iteration": np.arange(1, config.iterations + 1),
+        "phase": np.where(np.arange(config.iterations) < config.phase1_iterations, 1, 2),
+        "task": tasks,
+        "object": objects,
+        "sequence": sequences,
+        "rmse": rmse,
+    }
+    return trainer.w, curve
+
+
+def network_seed(seed: int, network: int) -> int:
+    """Each network's own seed, derived from the config's seed and its index."""
+    return int(np.random.SeedSequence([seed, 1000 + network]).generate_state(1)[0])
+
+
+def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
+    """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle."""
+    from .io import load_npz
+
+    demos = load_npz(demos_path, required=("angles", "objects", "grips"))
+    objects = tuple(demos["objects"].tolist())
+    maps = load_npz(visual_maps_path, required=objects)
+    soms = load_npz(soms_path, required=("goal_act", "objects"))
+    if tuple(soms["objects"].tolist()) != objects:
+        raise ValueError(f"{soms_path} and {demos_path} list different objects; rerun the pipeline")
+    return Materials(
+        objects=objects,
+        grips=tuple(demos["grips"].tolist()),
+        visual=np.array([maps[o].ravel() for o in objects], dtype=float),
+        goal=soms["goal_act"].reshape(len(objects), len(TASKS), -1),
+        demos=demos["angles"],
+    )

@@ -1,0 +1,133 @@
+"""The Jordan network and its training: shapes, the fast trainer's exactness, learning, schedule."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import torch
+
+from icub_affordance.jordan import (
+    N_INPUT,
+    JordanNet,
+    OnlineTrainer,
+    Weights,
+    run_closed_loop,
+    train_sequence_torch,
+)
+from icub_affordance.train import (
+    CATEGORISATION,
+    GRASPING,
+    Materials,
+    TrainConfig,
+    context,
+    mapping_of,
+    schedule,
+    target_grip,
+    train_network,
+)
+
+
+def synthetic_materials(seed: int = 0) -> Materials:
+    """Small stand-ins for the pipeline's outputs with the real shapes."""
+    rng = np.random.default_rng(seed)
+    start = rng.uniform(0.2, 0.8, 16)
+    ends = rng.uniform(0, 1, (4, 2, 16))
+    steps = np.linspace(0, 1, 10)[:, None]
+    demos = np.empty((4, 2, 5, 10, 16))
+    for o, g, s in np.ndindex(4, 2, 5):
+        end = np.clip(ends[o, g] + rng.normal(0, 0.02, 16), 0, 1)
+        demos[o, g, s] = start + steps * (end - start)
+    return Materials(
+        objects=("big_ball", "small_ball", "big_cube", "small_cube"),
+        grips=("power", "precision"),
+        visual=rng.integers(0, 2, (4, 100)).astype(float),
+        goal=rng.uniform(0, 1, (4, 2, 100)),
+        demos=demos,
+    )
+
+
+def test_network_shapes_and_outputs():
+    w = Weights.init(10, 0.5, np.random.default_rng(0))
+    assert w.W1.shape == (10, N_INPUT) == (10, 216) and w.W2.shape == (16, 10)
+    net = JordanNet(w)
+    y, h = net(torch.zeros(216, dtype=torch.float64))
+    assert y.shape == (16,) and h.shape == (10,)
+    assert ((y > 0) & (y < 1)).all()
+
+
+def test_fast_trainer_equals_the_plain_torch_loop():
+    m = synthetic_materials()
+    rng = np.random.default_rng(1)
+    w0 = Weights.init(10, 0.5, rng)
+    fast = OnlineTrainer(w0, 0.075)
+    net = JordanNet(w0)
+    sgd = torch.optim.SGD(net.parameters(), lr=0.075)
+    for _ in range(300):
+        o, k, g, s = rng.integers(4), rng.integers(2), rng.integers(2), rng.integers(4)
+        ctx, postures = context(m, o, k, "first_step"), m.demos[o, g, s]
+        a = fast.train_sequence(ctx, postures)
+        b = train_sequence_torch(net, sgd, ctx, postures)
+        assert a == pytest.approx(b, abs=1e-9)
+    reference = net.weights()
+    for name in ("W1", "b1", "W2", "b2"):
+        np.testing.assert_allclose(getattr(fast.w, name), getattr(reference, name), atol=1e-6)
+
+
+def test_training_lowers_the_error():
+    m = synthetic_materials()
+    config = TrainConfig(iterations=2000, phase1_iterations=1000)
+    _, curve = train_network(m, config, "A", seed=4)
+    assert curve["rmse"][:100].mean() > 2 * curve["rmse"][900:1000].mean()
+
+
+def test_closed_loop_feeds_the_output_back():
+    m = synthetic_materials()
+    w = Weights.init(10, 0.5, np.random.default_rng(2))
+    ctx = np.array([context(m, 0, GRASPING, "first_step")])
+    teacher = m.demos[0, 0, :1]
+    out, hidden = run_closed_loop(w, ctx, teacher[:, 0])
+    assert out.shape == (1, 9, 16) and hidden.shape == (1, 9, 10)
+    # step 2's input is step 1's output: recompute it by hand
+    x = np.concatenate([ctx[0, 1, :100], out[0, 0], ctx[0, 1, 100:]])
+    h = 1 / (1 + np.exp(-(w.W1 @ x + w.b1)))
+    np.testing.assert_allclose(out[0, 1], 1 / (1 + np.exp(-(w.W2 @ h + w.b2))))
+    forced, _ = run_closed_loop(w, ctx, teacher[:, 0], teacher)
+    assert not np.allclose(forced, out)
+
+
+def test_categorisation_cue_is_on_at_the_first_step_only_or_throughout():
+    m = synthetic_materials()
+    first = context(m, 2, CATEGORISATION, "first_step")
+    always = context(m, 2, CATEGORISATION, "all_steps")
+    np.testing.assert_array_equal(first[0, 100:], m.goal[2, CATEGORISATION])
+    np.testing.assert_array_equal(first[1:, 100:], np.broadcast_to(m.goal[2, GRASPING], (8, 100)))
+    np.testing.assert_array_equal(
+        always[:, 100:], np.broadcast_to(m.goal[2, CATEGORISATION], (9, 100))
+    )
+    np.testing.assert_array_equal(
+        context(m, 2, GRASPING, "first_step")[:, 100:], first[1:2, 100:].repeat(9, 0)
+    )
+
+
+def test_schedule_has_two_phases_half_and_half():
+    config = TrainConfig(iterations=12000, phase1_iterations=6000)
+    tasks, objects, sequences = schedule(config, 4, 4, np.random.default_rng(0))
+    assert (tasks[:6000] == GRASPING).all()
+    assert (tasks[6000:] == CATEGORISATION).sum() == 3000
+    assert set(objects) == {0, 1, 2, 3} and set(sequences) == {0, 1, 2, 3}  # never the 5th
+
+
+def test_mappings_and_targets():
+    assert [mapping_of(i, 12) for i in range(12)] == ["A"] * 6 + ["B"] * 6
+    assert target_grip("big_ball", CATEGORISATION, "A") == "power"
+    assert target_grip("small_ball", CATEGORISATION, "A") == "power"
+    assert target_grip("big_cube", CATEGORISATION, "A") == "precision"
+    assert target_grip("big_ball", CATEGORISATION, "B") == "precision"
+    assert target_grip("small_cube", GRASPING, "B") == "precision"
+
+
+def test_bad_training_settings_are_refused():
+    with pytest.raises(ValueError, match="categorisation_cue"):
+        TrainConfig(categorisation_cue="sometimes")
+    with pytest.raises(ValueError, match="even"):
+        TrainConfig(iterations=101, phase1_iterations=50)

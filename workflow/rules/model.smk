@@ -1,0 +1,134 @@
+# The learning model (paper sections 2.2, 2.3 and 3): SOMs, 12 Jordan networks, tests, ANOVA.
+
+NETWORKS = [f"{i:02d}" for i in range(config["network"]["networks"])]
+
+
+rule soms:
+    """Train the Object, Task and Goal maps offline and save what they send to the network."""
+    input:
+        maps=rules.visual_maps.output.maps,
+        code=package_code("som", "io"),
+    output:
+        "data/soms/soms.npz",
+    params:
+        soms=config["soms"],
+        seed=config["seed"],
+        objects=config["objects"],
+    log:
+        "data/logs/soms.log",
+    benchmark:
+        "data/benchmarks/soms.tsv"
+    script:
+        "../scripts/soms.py"
+
+
+rule figure2_maps:
+    """The three maps' activations for every object and task (plot only)."""
+    input:
+        soms=rules.soms.output[0],
+        code=package_code("figures", "io"),
+    output:
+        "data/soms/figure2_maps.png",
+    log:
+        "data/logs/figure2_maps.log",
+    benchmark:
+        "data/benchmarks/figure2_maps.tsv"
+    script:
+        "../scripts/figure2_maps.py"
+
+
+rule train:
+    """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B."""
+    input:
+        maps=rules.visual_maps.output.maps,
+        soms=rules.soms.output[0],
+        demos=rules.demos.output.demos,
+        code=package_code("body", "jordan", "som", "train", "io"),
+    output:
+        curve="data/train/net{net}/curve.csv",
+        weights="data/train/net{net}/weights.npz",
+    params:
+        network=config["network"],
+        seed=config["seed"],
+    wildcard_constraints:
+        net=r"\d\d",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=10,
+    log:
+        "data/logs/train/net{net}.log",
+    benchmark:
+        "data/benchmarks/train/net{net}.tsv"
+    script:
+        "../scripts/train.py"
+
+
+rule evaluate:
+    """Test every network on both tasks, all objects and sequences, closed loop and forced."""
+    input:
+        maps=rules.visual_maps.output.maps,
+        soms=rules.soms.output[0],
+        demos=rules.demos.output.demos,
+        weights=expand("data/train/net{net}/weights.npz", net=NETWORKS),
+        code=package_code("body", "jordan", "som", "train", "evaluate", "io"),
+    output:
+        trials="data/eval/trials.csv",
+        hidden="data/eval/hidden.npz",
+    params:
+        network=config["network"],
+    log:
+        "data/logs/evaluate.log",
+    benchmark:
+        "data/benchmarks/evaluate.tsv"
+    script:
+        "../scripts/evaluate.py"
+
+
+rule stats:
+    """The two-way and repeated-measures ANOVAs of the categorisation trials."""
+    input:
+        trials=rules.evaluate.output.trials,
+        code=package_code("stats", "io"),
+    output:
+        json="data/eval/anova.json",
+        table="data/eval/anova_table.md",
+    log:
+        "data/logs/stats.log",
+    benchmark:
+        "data/benchmarks/stats.tsv"
+    script:
+        "../scripts/stats.py"
+
+
+rule figure4:
+    """Figure 4: training RMSE over iterations, mean and range over the networks (plot only)."""
+    input:
+        curves=expand("data/train/net{net}/curve.csv", net=NETWORKS),
+        code=package_code("figures", "io"),
+    output:
+        "data/figures/figure4.png",
+    params:
+        phase1=config["network"]["phase1_iterations"],
+    log:
+        "data/logs/figure4.log",
+    benchmark:
+        "data/benchmarks/figure4.tsv"
+    script:
+        "../scripts/figure4.py"
+
+
+rule figure5:
+    """Figure 5 and the per-step conflict time-course, from the trials (plot only)."""
+    input:
+        trials=rules.evaluate.output.trials,
+        code=package_code("figures", "stats", "io"),
+    output:
+        figure5="data/figures/figure5.png",
+        timecourse="data/figures/conflict_timecourse.png",
+    log:
+        "data/logs/figure5.log",
+    benchmark:
+        "data/benchmarks/figure5.tsv"
+    script:
+        "../scripts/figure5.py"

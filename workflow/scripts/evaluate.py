@@ -1,0 +1,26 @@
+"""Test all networks; one row per trial in data/eval/trials.csv."""
+
+import numpy as np
+import pandas as pd
+
+from icub_affordance.evaluate import evaluate_network
+from icub_affordance.io import atomic_path, load_npz, redirect_log, save_npz
+from icub_affordance.jordan import Weights
+from icub_affordance.train import load_materials, mapping_of
+
+with redirect_log(snakemake.log[0]):
+    materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
+    n_networks = snakemake.params.network["networks"]
+    cue = snakemake.params.network["categorisation_cue"]
+    rows, hidden = [], {}
+    for net, path in enumerate(snakemake.input.weights):
+        weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+        net_rows, net_hidden = evaluate_network(
+            materials, weights, net, mapping_of(net, n_networks), cue
+        )
+        rows += net_rows
+        for mode, h in net_hidden.items():
+            hidden[f"net{net:02d}__{mode}"] = h
+    with atomic_path(snakemake.output.trials) as tmp:
+        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.6f")
+    save_npz(snakemake.output.hidden, **{k: np.asarray(v) for k, v in hidden.items()})

@@ -1,0 +1,15 @@
+"""The ANOVAs of the categorisation trials, to data/eval/anova.json and a table."""
+
+import json
+
+import pandas as pd
+
+from icub_affordance.io import redirect_log, write_text
+from icub_affordance.stats import analyse, anova_table_markdown
+
+with redirect_log(snakemake.log[0]):
+    trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)
+    result = analyse(trials)
+    write_text(snakemake.output.json, json.dumps(result, indent=2, sort_keys=True) + "\n")
+    write_text(snakemake.output.table, anova_table_markdown(result))
+    print(anova_table_markdown(result))
