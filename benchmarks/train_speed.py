@@ -22,7 +22,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from test_jordan import synthetic_materials  # noqa: E402
 
-from icub_affordance.jordan import JordanNet, Weights, train_sequence_torch  # noqa: E402
+from icub_affordance.jordan import Weights  # noqa: E402
+from icub_affordance.jordan_torch import JordanNet, train_sequence_torch  # noqa: E402
 from icub_affordance.train import (  # noqa: E402
     TrainConfig,
     context,

@@ -6,14 +6,8 @@ import numpy as np
 import pytest
 import torch
 
-from icub_affordance.jordan import (
-    N_INPUT,
-    JordanNet,
-    OnlineTrainer,
-    Weights,
-    run_closed_loop,
-    train_sequence_torch,
-)
+from icub_affordance.jordan import N_INPUT, OnlineTrainer, Weights, run_closed_loop
+from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
 from icub_affordance.train import (
     CATEGORISATION,
     GRASPING,
