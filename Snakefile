@@ -17,11 +17,14 @@ include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
+include: "workflow/rules/book.smk"
 
 
 rule all:
+    """Everything: the book and every output it shows."""
     default_target: True
     input:
+        rules.book.output,
         rules.body_figure.output,
         rules.visual_maps.output,
         rules.figure3.output,

@@ -23,8 +23,12 @@ TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
 
 def scratch_workflow(path: Path) -> Path:
     """A scratch copy of the workflow (symlinks), so tests never touch the repository's data/."""
+    import shutil
+
     for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
         (path / name).symlink_to(REPO / name)
+    # the book's sources are copied: its build writes beside them
+    shutil.copytree(REPO / "book", path / "book", ignore=shutil.ignore_patterns("_build", "_data"))
     return path
 
 

@@ -1,4 +1,9 @@
 # Shared helpers of the rules.
+import sys
+
+# The interpreter running Snakemake, for the rare shell command that calls Python tools.
+PYTHON = sys.executable
+
 
 
 def package_code(*modules):

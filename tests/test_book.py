@@ -1,0 +1,91 @@
+"""The book: built by the pipeline, showing Figures 1-5 and the ANOVA, numbers from the outputs."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import pytest
+from conftest import run_snakemake
+
+HTML = "book/_build/html"
+
+
+@pytest.fixture(scope="module")
+def html(built):
+    return {page.stem: page.read_text() for page in (built / HTML).glob("*.html")}
+
+
+def test_every_chapter_is_built(html):
+    for page in (
+        "intro",
+        "introduction",
+        "robot",
+        "architecture",
+        "vision",
+        "training",
+        "results",
+        "discussion",
+        "comparison",
+        "notes",
+        "reproduce",
+        "references",
+    ):
+        assert page in html, page
+
+
+@pytest.mark.parametrize(
+    ("page", "image"),
+    [
+        ("robot", "figure1_scene.png"),
+        ("architecture", "figure2_maps.png"),
+        ("vision", "figure3.png"),
+        ("results", "figure4.png"),
+        ("results", "figure5.png"),
+        ("results", "conflict_timecourse.png"),
+        ("training", "filmstrip.png"),
+    ],
+)
+def test_figures_are_the_pipelines_outputs(built, html, page, image):
+    assert f"_images/{image}" in html[page]
+    shown = (built / HTML / "_images" / image).read_bytes()
+    source = next((built / "data").rglob(image)).read_bytes()
+    assert shown == source  # the very file the pipeline wrote
+
+
+def test_figure2_diagram_is_drawn_by_code(html):
+    assert "Figure 2 (drawn by this page" in html["architecture"]
+    assert (
+        'src="data:image/png;base64' in html["architecture"] or "_images/" in html["architecture"]
+    )
+
+
+def test_anova_numbers_in_the_book_equal_anova_json(built, html):
+    anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
+    for mode in ("closed_loop", "teacher_forced"):
+        for analysis in ("two_way", "repeated_measures"):
+            for effect, r in anova[mode][analysis].items():
+                assert f"{r['F']:.2f}" in html["results"], (mode, analysis, effect)
+                assert f"{r['p']:.2g}" in html["results"], (mode, analysis, effect)
+    rm = anova["closed_loop"]["repeated_measures"]["congruency"]
+    assert f"F({rm['df1']:.0f}, {rm['df2']:.0f}) = {rm['F']:.2f}" in html["intro"]
+
+
+def test_front_page_shows_provenance(built, html):
+    run = json.loads((built / "book" / "_data" / "run.json").read_text())
+    assert run["commit"] in html["intro"]
+    assert run["versions"]["mujoco"] in html["intro"]
+    assert f"seed: {run['config']['seed']}" in html["intro"]
+
+
+def test_a_changed_output_changes_the_book_after_a_rebuild(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    anova_path = copy / "data" / "eval" / "anova.json"
+    anova = json.loads(anova_path.read_text())
+    anova["closed_loop"]["repeated_measures"]["congruency"]["F"] = 12345.678
+    anova_path.write_text(json.dumps(anova))
+    result = run_snakemake(copy, "-c1", "book/_build/html/index.html")
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert "12345.68" in (copy / HTML / "results.html").read_text()
+    assert "12345.68" not in (built / HTML / "results.html").read_text()

@@ -1,0 +1,60 @@
+# The book (a Jupyter Book 1.x in book/), built from the pipeline's own outputs.
+
+BOOK_DATA = {
+    "figure1_scene.png": "data/body/figure1_scene.png",
+    "figure1_eye.png": "data/body/figure1_eye.png",
+    "joint_table.csv": "data/body/joint_table.csv",
+    "figure2_maps.png": "data/soms/figure2_maps.png",
+    "soms.npz": "data/soms/soms.npz",
+    "figure3.png": "data/vision/figure3.png",
+    "visual_maps.npz": "data/vision/visual_maps.npz",
+    "filmstrip.png": "data/demos/filmstrip.png",
+    "demo_summary.csv": "data/demos/summary.csv",
+    "demos.npz": "data/demos/demos.npz",
+    "figure4.png": "data/figures/figure4.png",
+    "figure5.png": "data/figures/figure5.png",
+    "conflict_timecourse.png": "data/figures/conflict_timecourse.png",
+    "anova.json": "data/eval/anova.json",
+    "trials.csv": "data/eval/trials.csv",
+    "rulegraph.dot": "data/book/rulegraph.dot",
+} | {
+    f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
+}
+
+
+rule rulegraph:
+    """The DAG's rules and their dependencies, for the book's reproduction page."""
+    input:
+        "Snakefile",
+        "workflow/rules/common.smk",
+        "workflow/rules/body.smk",
+        "workflow/rules/vision.smk",
+        "workflow/rules/demos.smk",
+        "workflow/rules/model.smk",
+        "workflow/rules/book.smk",
+    output:
+        "data/book/rulegraph.dot",
+    log:
+        "data/logs/rulegraph.log",
+    shell:
+        "{PYTHON} -m snakemake --rulegraph --nolock all > {output} 2> {log}"
+
+
+rule book:
+    """Stage the outputs the book shows, record the run's provenance, build the book strictly."""
+    input:
+        data=list(BOOK_DATA.values()),
+        pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
+        book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
+        code=package_code("report", "figures"),
+    output:
+        "book/_build/html/index.html",
+    params:
+        config=config,
+        names=list(BOOK_DATA),
+    log:
+        "data/logs/book.log",
+    benchmark:
+        "data/benchmarks/book.tsv"
+    script:
+        "../scripts/book.py"

@@ -1,0 +1,31 @@
+"""Stage the outputs, record provenance, and build the Jupyter Book strictly (warnings fail)."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from icub_affordance.io import redirect_log, write_text
+from icub_affordance.report import provenance, stage
+
+with redirect_log(snakemake.log[0]):
+    book = Path("book")
+    data_dir = book / "_data"
+    stage(dict(zip(snakemake.params.names, snakemake.input.data, strict=True)), data_dir)
+    run = provenance(dict(snakemake.params.config), Path.cwd())
+    write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
+    benchmarks = {
+        str(path.relative_to("data/benchmarks").with_suffix("")): path.read_text()
+        for path in sorted(Path("data/benchmarks").rglob("*.tsv"))
+    }
+    write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
+    jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
+    result = subprocess.run(
+        [jupyter_book, "build", "-W", "-n", "--keep-going", str(book)],
+        capture_output=True,
+        text=True,
+    )
+    print(result.stdout[-20000:])
+    print(result.stderr[-20000:])
+    if result.returncode != 0:
+        raise RuntimeError(f"the book did not build cleanly (see {snakemake.log[0]})")
