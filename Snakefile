@@ -1,9 +1,16 @@
 # icub-affordance: one DAG from the simulated iCub to the book.
 #   snakemake -c2                                   reproduce everything with config/config.yaml
 #   snakemake -c2 --configfile .test/config/config.yaml   the small test configuration
+import os
+
 from snakemake.utils import min_version, validate
 
 min_version("9.0")
+
+# One thread per job for the numerical libraries: results must not depend on how many cores a
+# library happens to use (floating-point sums in another order), and jobs run side by side.
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ[_var] = "1"
 
 
 configfile: "config/config.yaml"

@@ -25,6 +25,7 @@ def scratch_workflow(path: Path) -> Path:
     """A scratch copy of the workflow (symlinks), so tests never touch the repository's data/."""
     import shutil
 
+    path.mkdir(parents=True, exist_ok=True)
     for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
         (path / name).symlink_to(REPO / name)
     # the book's sources are copied: its build writes beside them
@@ -37,7 +38,7 @@ def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
     import sys
 
     return subprocess.run(
-        [sys.executable, "-m", "snakemake", "--configfile", str(config), *args],
+        [sys.executable, "-m", "snakemake", *args, "--configfile", str(config)],
         cwd=workdir,
         capture_output=True,
         text=True,

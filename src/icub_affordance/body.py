@@ -101,11 +101,29 @@ def check_posture_deg(angles_deg, what: str = "posture") -> np.ndarray:
     return angles
 
 
+def resize_object(spec: mujoco.MjSpec, name: str, size: float) -> None:
+    """Give object ``name`` a new diameter or edge ``size`` (m), keeping its density."""
+    if name not in OBJECT_NAMES:
+        raise ValueError(f"unknown object {name!r}; choose one of {OBJECT_NAMES}")
+    if not 0.005 <= size <= 0.15:
+        raise ValueError(f"object size {size} m for {name} is outside 0.005..0.15 m")
+    geom = spec.geom(name)
+    half = size / 2.0
+    old_half = float(geom.size[0])
+    geom.mass = geom.mass * (half / old_half) ** 3
+    geom.size = [half, half, half] if geom.type == mujoco.mjtGeom.mjGEOM_BOX else [half, 0, 0]
+    body = spec.body(name)
+    body.pos = [body.pos[0], body.pos[1], half]  # resting on the floor while parked
+
+
 @dataclass
 class Robot:
     """One MuJoCo model and its state, with the 16 DoF of Figure 1 as the interface."""
 
     path: Path = SCENE_PATH
+    #: Optional sizes (m) of the objects, by name: ball diameter or cube edge. Masses scale with
+    #: the volume, so density stays the scene's. None keeps the scene's own sizes.
+    object_sizes: dict[str, float] | None = None
     model: mujoco.MjModel = field(init=False)
     data: mujoco.MjData = field(init=False)
 
@@ -116,7 +134,10 @@ class Robot:
                 f"MuJoCo scene not found: {path}. Restore it with `git checkout -- assets/`."
             )
         try:
-            self.model = mujoco.MjModel.from_xml_path(str(path))
+            spec = mujoco.MjSpec.from_file(str(path))
+            for name, size in (self.object_sizes or {}).items():
+                resize_object(spec, name, size)
+            self.model = spec.compile()
         except ValueError as err:  # mujoco reports XML and model errors as ValueError
             raise ValueError(f"cannot load the MuJoCo scene {path}: {err}") from err
         self.data = mujoco.MjData(self.model)

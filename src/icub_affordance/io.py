@@ -61,14 +61,24 @@ def redirect_log(path: str | os.PathLike[str]) -> Iterator[None]:
 
 
 def save_npz(path: str | os.PathLike[str], **arrays) -> None:
-    """Atomically write arrays to a compressed .npz file that loads without pickle."""
+    """Atomically write arrays to a compressed .npz that loads without pickle, byte for byte the
+    same for the same arrays (NumPy's own writer stamps each member with the current time)."""
+    import io
+    import zipfile
+
     import numpy as np
 
-    for name, value in arrays.items():
-        if np.asarray(value).dtype == object:
-            raise TypeError(f"{name}: object arrays would need pickle; store plain arrays")
-    with atomic_path(path) as tmp:
-        np.savez_compressed(tmp, **arrays)
+    with atomic_path(path) as tmp, zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as archive:
+        for name, value in arrays.items():
+            value = np.asarray(value)
+            if value.dtype == object:
+                raise TypeError(f"{name}: object arrays would need pickle; store plain arrays")
+            buffer = io.BytesIO()
+            np.lib.format.write_array(buffer, value, allow_pickle=False)
+            member = zipfile.ZipInfo(f"{name}.npy", date_time=(1980, 1, 1, 0, 0, 0))
+            member.compress_type = zipfile.ZIP_DEFLATED
+            member.external_attr = 0o644 << 16
+            archive.writestr(member, buffer.getvalue())
 
 
 def load_npz(path: str | os.PathLike[str], required: tuple[str, ...] = ()) -> dict:

@@ -11,8 +11,9 @@ rule body_figure:
         eye="data/body/figure1_eye.png",
         table="data/body/joint_table.csv",
     params:
-        posture=config["initial_posture_deg"],
-        figure=config["body_figure"],
+        object_sizes=settings(config["object_sizes_m"]),
+        posture=settings(config["initial_posture_deg"]),
+        figure=settings(config["body_figure"]),
     log:
         "data/logs/body_figure.log",
     benchmark:

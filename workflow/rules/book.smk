@@ -46,11 +46,11 @@ rule book:
         data=list(BOOK_DATA.values()),
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
-        code=package_code("report", "figures"),
+        code=package_code("report", "figures", "som"),
     output:
         "book/_build/html/index.html",
     params:
-        config=config,
+        config=settings(config),
         names=list(BOOK_DATA),
     log:
         "data/logs/book.log",

@@ -9,9 +9,10 @@ rule demos_object:
     output:
         "data/demos/parts/{object}.npz",
     params:
-        demos=config["demos"],
-        seed=config["seed"],
-        posture=config["initial_posture_deg"],
+        object_sizes=settings(config["object_sizes_m"]),
+        demos=settings(config["demos"]),
+        seed=settings(config["seed"]),
+        posture=settings(config["initial_posture_deg"]),
     wildcard_constraints:
         object="|".join(config["objects"]),
     log:
@@ -31,8 +32,8 @@ rule demos:
         demos="data/demos/demos.npz",
         summary="data/demos/summary.csv",
     params:
-        objects=config["objects"],
-        demos=config["demos"],
+        objects=settings(config["objects"]),
+        demos=settings(config["demos"]),
     log:
         "data/logs/demos.log",
     benchmark:
@@ -50,6 +51,7 @@ rule demo_filmstrip:
     output:
         "data/demos/filmstrip.png",
     params:
+        object_sizes=settings(config["object_sizes_m"]),
         picks=config["figures"]["filmstrip"],
     log:
         "data/logs/demo_filmstrip.log",

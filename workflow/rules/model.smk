@@ -11,9 +11,9 @@ rule soms:
     output:
         "data/soms/soms.npz",
     params:
-        soms=config["soms"],
-        seed=config["seed"],
-        objects=config["objects"],
+        soms=settings(config["soms"]),
+        seed=settings(config["seed"]),
+        objects=settings(config["objects"]),
     log:
         "data/logs/soms.log",
     benchmark:
@@ -48,8 +48,8 @@ rule train:
         curve="data/train/net{net}/curve.csv",
         weights="data/train/net{net}/weights.npz",
     params:
-        network=config["network"],
-        seed=config["seed"],
+        network=settings(config["network"]),
+        seed=settings(config["seed"]),
     wildcard_constraints:
         net=r"\d\d",
     threads: 1
@@ -76,7 +76,7 @@ rule evaluate:
         trials="data/eval/trials.csv",
         hidden="data/eval/hidden.npz",
     params:
-        network=config["network"],
+        network=settings(config["network"]),
     log:
         "data/logs/evaluate.log",
     benchmark:

@@ -10,9 +10,10 @@ rule visual_maps:
         maps="data/vision/visual_maps.npz",
         stages="data/vision/vision_stages.npz",
     params:
-        vision=config["vision"],
-        objects=config["objects"],
-        posture=config["initial_posture_deg"],
+        object_sizes=settings(config["object_sizes_m"]),
+        vision=settings(config["vision"]),
+        objects=settings(config["objects"]),
+        posture=settings(config["initial_posture_deg"]),
     log:
         "data/logs/visual_maps.log",
     benchmark:

@@ -9,7 +9,7 @@ from icub_affordance.io import redirect_log, write_png, write_text
 with redirect_log(snakemake.log[0]):
     posture = check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")
     figure = snakemake.params.figure
-    robot = Robot(snakemake.input.scene)
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     robot.place_object(figure["object"])
     robot.set_posture_deg(posture)
     size = dict(width=figure["width"], height=figure["height"])

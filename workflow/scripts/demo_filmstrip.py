@@ -6,7 +6,7 @@ from icub_affordance.io import load_npz, redirect_log
 
 with redirect_log(snakemake.log[0]):
     demos = load_npz(snakemake.input.demos, required=("qpos", "objects", "grips"))
-    robot = Robot(snakemake.input.scene)
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
     strips = {}
     for obj, grip, seq in snakemake.params.picks:

@@ -7,7 +7,7 @@ from icub_affordance.io import redirect_log, save_npz
 with redirect_log(snakemake.log[0]):
     obj = snakemake.wildcards.object
     initial = check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")
-    robot = Robot(snakemake.input.scene)
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     arrays = object_demos(
         robot, obj, initial, snakemake.params.seed, DemoConfig(**snakemake.params.demos)
     )

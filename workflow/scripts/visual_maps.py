@@ -6,7 +6,7 @@ from icub_affordance.vision import VisionConfig, visual_maps
 
 with redirect_log(snakemake.log[0]):
     config = VisionConfig(**snakemake.params.vision)
-    robot = Robot(snakemake.input.scene)
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     robot.set_posture_deg(
         check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")
     )

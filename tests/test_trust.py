@@ -1,0 +1,198 @@
+"""Trust: identical reruns (also -c1 vs -c2 and after a kill), rerun scope, errors on bad input."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+from conftest import REPO, TEST_CONFIG, run_snakemake, scratch_workflow
+
+from icub_affordance.body import Robot
+from icub_affordance.io import load_npz
+
+COMPARED = [
+    "data/vision/visual_maps.npz",
+    "data/demos/demos.npz",
+    "data/soms/soms.npz",
+    "data/eval/trials.csv",
+    "data/eval/anova.json",
+]
+
+
+def planned_jobs(output: str) -> dict[str, int]:
+    """The job counts of a dry run's summary table."""
+    counts = {}
+    table = output.split("Job stats:")[-1]
+    for line in table.splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[1].isdigit() and parts[0] != "total":
+            counts[parts[0]] = int(parts[1])
+    return counts
+
+
+def test_killed_and_resumed_single_core_run_equals_the_two_core_run(built, tmp_path):
+    """A run with -c1, killed hard part-way and resumed, gives byte-identical outputs."""
+    workdir = scratch_workflow(tmp_path)
+    cmd = [sys.executable, "-m", "snakemake", "data/eval/anova.json", "-c1"]
+    cmd += ["--configfile", str(TEST_CONFIG)]  # last: --configfile takes several values
+    proc = subprocess.Popen(
+        cmd,
+        cwd=workdir,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        start_new_session=True,
+    )
+    deadline = time.time() + 240
+    while not (workdir / "data/train/net00/curve.csv").exists() and time.time() < deadline:
+        time.sleep(0.2)
+    assert proc.poll() is None, "the run ended before it could be killed"
+    os.killpg(proc.pid, signal.SIGKILL)  # a hard kill, as by a power cut
+    proc.wait()
+    assert not (workdir / "data/eval/anova.json").exists(), "killed too late to test a resume"
+    for npz in (workdir / "data").rglob("*.npz"):
+        load_npz(npz)  # whatever exists is whole: outputs are written atomically
+    # what a user does after a hard kill: release Snakemake's lock, then resume
+    assert run_snakemake(workdir, "--unlock").returncode == 0
+    resumed = run_snakemake(workdir, "-c1", "--rerun-incomplete", "data/eval/anova.json")
+    assert resumed.returncode == 0, resumed.stderr[-3000:]
+    nets = sorted(p.name for p in (built / "data/train").iterdir())
+    for name in COMPARED + [
+        f"data/train/{n}/{f}" for n in nets for f in ("curve.csv", "weights.npz")
+    ]:
+        assert (workdir / name).read_bytes() == (built / name).read_bytes(), name
+
+
+def changed_config(tmp_path: Path, change) -> Path:
+    config = yaml.safe_load(TEST_CONFIG.read_text())
+    change(config)
+    path = tmp_path / "changed.yaml"
+    path.write_text(yaml.safe_dump(config))
+    return path
+
+
+def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(built, tmp_path):
+    path = changed_config(tmp_path, lambda c: c["network"].update(learning_rate=0.05))
+    plan = run_snakemake(built, "-n", config=path)
+    jobs = planned_jobs(plan.stdout)
+    n_nets = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
+    assert jobs.get("train") == n_nets
+    for rule in ("evaluate", "stats", "figure4", "figure5", "book"):
+        assert jobs.get(rule) == 1, (rule, jobs)
+    for rule in ("demos_object", "visual_maps", "soms", "body_figure", "demos"):
+        assert rule not in jobs, (rule, jobs)
+
+
+def test_the_cue_timing_reruns_training_too(built, tmp_path):
+    path = changed_config(tmp_path, lambda c: c["network"].update(categorisation_cue="all_steps"))
+    jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
+    assert "train" in jobs and "demos_object" not in jobs and "soms" not in jobs
+
+
+def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
+    path = changed_config(tmp_path, lambda c: c["object_sizes_m"].update(big_ball=0.065))
+    jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
+    for rule in ("body_figure", "visual_maps", "demos_object", "soms", "train", "book"):
+        assert rule in jobs, (rule, jobs)
+
+
+def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
+    path = changed_config(
+        tmp_path, lambda c: c["figures"].update(filmstrip=[["small_ball", "power", 1]])
+    )
+    jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
+    assert set(jobs) <= {"demo_filmstrip", "book", "all", "rulegraph"}, jobs
+
+
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        (lambda c: c["network"].update(learning_rate=-0.1), ["learning_rate", "minimum"]),
+        (lambda c: c["figures"].update(filmstrip=[["big_ball", "pinch", 0]]), ["pinch", "power"]),
+        (lambda c: c.update(objects=["big_ball", "pear"]), ["pear", "small_cube"]),
+        (lambda c: c["network"].pop("hidden"), ["hidden", "required"]),
+        (lambda c: c["network"].update(iterations="many"), ["many", "integer"]),
+        (lambda c: c["network"].update(categorisation_cue="sometimes"), ["sometimes", "all_steps"]),
+    ],
+)
+def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path, change, words):
+    workdir = scratch_workflow(tmp_path / "w")
+    # the bad file replaces the default config itself, so that a missing key is really missing
+    (workdir / "config").unlink()
+    (workdir / "config").mkdir()
+    shutil.copy(changed_config(tmp_path, change), workdir / "config" / "config.yaml")
+    result = run_snakemake(workdir, "-c1", config=workdir / "config" / "config.yaml")
+    assert result.returncode != 0
+    message = result.stdout + result.stderr
+    for word in words:
+        assert word in message, (word, message[-2000:])
+    assert not (workdir / "data").exists()
+
+
+def test_a_missing_scene_is_named_before_any_job(tmp_path):
+    workdir = scratch_workflow(tmp_path / "w")
+    path = changed_config(tmp_path, lambda c: c.update(scene="assets/missing.xml"))
+    result = run_snakemake(workdir, "-c1", config=path)
+    assert result.returncode != 0
+    assert "assets/missing.xml" in result.stdout + result.stderr
+
+
+def test_a_missing_or_broken_scene_file_gives_a_clear_error(tmp_path):
+    with pytest.raises(FileNotFoundError, match="git checkout"):
+        Robot(tmp_path / "nothing.xml")
+    broken = tmp_path / "broken.xml"
+    broken.write_text("<mujoco><worldbody><body></mujoco>")
+    with pytest.raises(ValueError, match="broken.xml"):
+        Robot(broken)
+
+
+@pytest.mark.parametrize("name", ["data/demos/demos.npz", "data/train/net00/weights.npz"])
+def test_a_truncated_file_is_named_with_what_to_do(built, tmp_path, name):
+    bad = tmp_path / Path(name).name
+    data = (built / name).read_bytes()
+    bad.write_bytes(data[: len(data) // 2])
+    with pytest.raises(ValueError, match=re.escape(str(bad)) + ".*rerun"):
+        load_npz(bad)
+    with pytest.raises(FileNotFoundError, match="rerun"):
+        load_npz(tmp_path / "gone.npz")
+
+
+def test_a_corrupt_weights_file_fails_the_evaluation_and_keeps_the_old_trials(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    (copy / "data/eval/trials.csv").read_bytes()
+    weights = copy / "data/train/net00/weights.npz"
+    weights.write_bytes(weights.read_bytes()[:100])
+    result = run_snakemake(copy, "-c1", "--forcerun", "evaluate", "data/eval/trials.csv")
+    assert result.returncode != 0
+    log = (copy / "data/logs/evaluate.log").read_text()
+    assert "weights.npz" in log and "rerun" in log
+    assert not list((copy / "data/eval").glob(".*"))  # no half-written temporary files
+
+
+def test_loading_never_unpickles():
+    sources = [p.read_text() for p in (REPO / "src").rglob("*.py")]
+    sources += [p.read_text() for p in (REPO / "workflow/scripts").glob("*.py")]
+    for text in sources:
+        assert "allow_pickle=True" not in text
+        assert "import pickle" not in text
+        assert "torch.load(" not in text
+
+
+def test_object_sizes_change_the_scene():
+    robot = Robot(object_sizes={"big_ball": 0.06})
+    assert robot.model.geom("big_ball").size[0] == pytest.approx(0.03)
+    default = Robot()
+    ratio = robot.model.body("big_ball").mass[0] / default.model.body("big_ball").mass[0]
+    assert ratio == pytest.approx((0.06 / 0.07) ** 3)
+    with pytest.raises(ValueError, match="pear"):
+        Robot(object_sizes={"pear": 0.05})
+    np.testing.assert_allclose(default.model.geom("big_ball").size[0], 0.035)
