@@ -34,8 +34,14 @@ rule rulegraph:
         "workflow/rules/book.smk",
     output:
         "data/book/rulegraph.dot",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/rulegraph.log",
+    benchmark:
+        "data/benchmarks/rulegraph.tsv"
     shell:
         "{PYTHON} -m snakemake --rulegraph --nolock all > {output} 2> {log}"
 
@@ -52,6 +58,10 @@ rule book:
     params:
         config=settings(config),
         names=list(BOOK_DATA),
+    threads: 1
+    resources:
+        mem_mb=2000,
+        runtime=15,
     log:
         "data/logs/book.log",
     benchmark:

@@ -15,6 +15,10 @@ rule demos_object:
         posture=settings(config["initial_posture_deg"]),
     wildcard_constraints:
         object="|".join(config["objects"]),
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
     log:
         "data/logs/demos_object/{object}.log",
     benchmark:
@@ -34,6 +38,10 @@ rule demos:
     params:
         objects=settings(config["objects"]),
         demos=settings(config["demos"]),
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/demos.log",
     benchmark:
@@ -53,6 +61,10 @@ rule demo_filmstrip:
     params:
         object_sizes=settings(config["object_sizes_m"]),
         picks=config["figures"]["filmstrip"],
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
     log:
         "data/logs/demo_filmstrip.log",
     benchmark:

@@ -14,6 +14,10 @@ rule soms:
         soms=settings(config["soms"]),
         seed=settings(config["seed"]),
         objects=settings(config["objects"]),
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/soms.log",
     benchmark:
@@ -29,6 +33,10 @@ rule figure2_maps:
         code=package_code("figures", "io"),
     output:
         "data/soms/figure2_maps.png",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/figure2_maps.log",
     benchmark:
@@ -77,6 +85,10 @@ rule evaluate:
         hidden="data/eval/hidden.npz",
     params:
         network=settings(config["network"]),
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
     log:
         "data/logs/evaluate.log",
     benchmark:
@@ -93,6 +105,10 @@ rule stats:
     output:
         json="data/eval/anova.json",
         table="data/eval/anova_table.md",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/stats.log",
     benchmark:
@@ -110,6 +126,10 @@ rule figure4:
         "data/figures/figure4.png",
     params:
         phase1=config["network"]["phase1_iterations"],
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/figure4.log",
     benchmark:
@@ -126,6 +146,10 @@ rule figure5:
     output:
         figure5="data/figures/figure5.png",
         timecourse="data/figures/conflict_timecourse.png",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
     log:
         "data/logs/figure5.log",
     benchmark:
