@@ -25,6 +25,7 @@ include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
 include: "workflow/rules/book.smk"
+include: "workflow/rules/sweep.smk"
 
 
 rule all:

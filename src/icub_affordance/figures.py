@@ -190,3 +190,28 @@ def conflict_timecourse(per_step: dict[str, np.ndarray], path) -> None:
     ax.legend(fontsize=8)
     fig.tight_layout()
     save(fig, path)
+
+
+def sweep_effects(points, path) -> None:
+    """Congruency and size effects (mean and 95% interval over networks) of every sweep point."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 0.35 * len(points) + 1.6), sharey=True)
+    labels = points["point"].tolist()
+    y = np.arange(len(labels))
+    for ax, effect in zip(axes, ("congruency", "size"), strict=True):
+        mean = points[f"{effect}_effect"].to_numpy()
+        err = np.vstack([mean - points[f"{effect}_ci_low"], points[f"{effect}_ci_high"] - mean])
+        colours = [
+            "C2" if s else ("C3" if r else "0.5")
+            for s, r in zip(
+                points[f"{effect}_significant"], points[f"{effect}_reversed"], strict=True
+            )
+        ]
+        ax.errorbar(mean, y, xerr=err, fmt="none", ecolor="0.6", capsize=3)
+        ax.scatter(mean, y, c=colours, zorder=3)
+        ax.axvline(0, color="0.3", lw=0.8)
+        ax.set_xlabel(f"{effect} effect (RMSE difference)")
+        ax.set_title(f"{effect}: green = paper's direction, red = reversed (p < .05)", fontsize=8)
+        ax.grid(alpha=0.3)
+    axes[0].set_yticks(y, labels, fontsize=7)
+    fig.tight_layout()
+    save(fig, path)

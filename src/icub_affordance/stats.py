@@ -117,3 +117,70 @@ def anova_table_markdown(result: dict[str, object]) -> str:
                     f"{r['eta_p2']:.3f} |"
                 )
     return "\n".join(lines) + "\n"
+
+
+def network_effects(trials: pd.DataFrame, mode: str = "closed_loop") -> pd.DataFrame:
+    """Per network: congruency effect (incongruent - congruent RMSE) and size effect (small -
+    large). Positive values are the paper's direction (congruent and large objects faster)."""
+    df = categorisation_trials(trials, mode)
+    cells = df.groupby(["network", "congruency"])["rmse"].mean().unstack()
+    sizes = df.groupby(["network", "size"])["rmse"].mean().unstack()
+    return pd.DataFrame(
+        {
+            "congruency_effect": cells["incongruent"] - cells["congruent"],
+            "size_effect": sizes["small"] - sizes["large"],
+        }
+    )
+
+
+def mean_ci(values: np.ndarray, level: float = 0.95) -> tuple[float, float, float]:
+    """Mean and its t-interval."""
+    from scipy import stats as sps
+
+    values = np.asarray(values, dtype=float)
+    mean = float(values.mean())
+    if len(values) < 2:
+        return mean, float("nan"), float("nan")
+    half = float(
+        sps.t.ppf(0.5 + level / 2, len(values) - 1) * values.std(ddof=1) / np.sqrt(len(values))
+    )
+    return mean, mean - half, mean + half
+
+
+def sweep_tables(
+    points: dict[str, dict], trials: dict[str, pd.DataFrame], anovas: dict[str, dict]
+) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """One row per point (effects with 95% intervals over its networks, RM-ANOVA p), and one row
+    per setting (over its replications: mean effect with 95% interval, how many significant)."""
+    rows = []
+    for name, point in points.items():
+        effects = network_effects(trials[name])
+        row = {"point": name, **point}
+        for effect, key in (("congruency", "congruency_effect"), ("size", "size_effect")):
+            mean, lo, hi = mean_ci(effects[key].to_numpy())
+            p = anovas[name]["closed_loop"]["repeated_measures"][effect]["p"]
+            row |= {
+                f"{effect}_effect": mean,
+                f"{effect}_ci_low": lo,
+                f"{effect}_ci_high": hi,
+                f"{effect}_p": p,
+                f"{effect}_significant": bool(p < 0.05 and mean > 0),
+                f"{effect}_reversed": bool(p < 0.05 and mean < 0),
+            }
+        rows.append(row)
+    per_point = pd.DataFrame(rows)
+    setting = ["learning_rate", "hidden", "categorisation_cue"]
+    summary = []
+    for key, group in per_point.groupby(setting, sort=False):
+        row = dict(zip(setting, key, strict=True)) | {"replications": len(group)}
+        for effect in ("congruency", "size"):
+            mean, lo, hi = mean_ci(group[f"{effect}_effect"].to_numpy())
+            row |= {
+                f"{effect}_effect": mean,
+                f"{effect}_ci_low": lo,
+                f"{effect}_ci_high": hi,
+                f"{effect}_n_significant": int(group[f"{effect}_significant"].sum()),
+                f"{effect}_n_reversed": int(group[f"{effect}_reversed"].sum()),
+            }
+        summary.append(row)
+    return per_point, pd.DataFrame(summary)
