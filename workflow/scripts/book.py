@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 from icub_affordance.io import redirect_log, write_text
-from icub_affordance.report import provenance, stage
+from icub_affordance.report import provenance, read_benchmarks, stage
 
 with redirect_log(snakemake.log[0]):
     book = Path("book")
@@ -15,8 +15,9 @@ with redirect_log(snakemake.log[0]):
     run = provenance(dict(snakemake.params.config), Path.cwd())
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
     benchmarks = {
-        str(path.relative_to("data/benchmarks").with_suffix("")): path.read_text()
-        for path in sorted(Path("data/benchmarks").rglob("*.tsv"))
+        job: text
+        for job, text in read_benchmarks(Path("data/benchmarks")).items()
+        if not job.startswith("sweep/")
     }
     write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")

@@ -1,0 +1,28 @@
+"""Collect the pipeline's benchmark files into one table: rule, jobs, wall time, memory.
+
+    python benchmarks/collect.py [data/benchmarks]
+
+The last line is JSON with the summed wall time of all jobs and the number of jobs. The wall
+time of a `-c2` run is less than the sum (two jobs run at once); Snakemake prints it at the end.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from icub_affordance.report import benchmark_table, read_benchmarks
+
+directory = Path(sys.argv[1] if len(sys.argv) > 1 else "data/benchmarks")
+tables = {k: v for k, v in read_benchmarks(directory).items() if not k.startswith("sweep/")}
+table = benchmark_table(tables)
+print(table.round(2).to_string())
+print(
+    json.dumps(
+        {
+            "jobs": int(table["jobs"].sum()),
+            "sum_of_job_seconds": round(float(table["total_s"].sum()), 1),
+        }
+    )
+)
