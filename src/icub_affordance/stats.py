@@ -26,6 +26,17 @@ def partial_eta_squared(f: float, df1: float, df2: float) -> float:
     return float(f * df1 / (f * df1 + df2))
 
 
+def effect_row(f, df1, df2, p) -> dict[str, float]:
+    f, df1, df2 = float(f), float(df1), float(df2)
+    return {
+        "F": f,
+        "df1": df1,
+        "df2": df2,
+        "p": float(p),
+        "eta_p2": partial_eta_squared(f, df1, df2),
+    }
+
+
 def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
     model = smf.ols("rmse ~ C(congruency) * C(size)", data=df).fit()
     table = anova_lm(model, typ=2)
@@ -35,17 +46,10 @@ def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
         "interaction": "C(congruency):C(size)",
     }
     df2 = float(table.loc["Residual", "df"])
-    out = {}
-    for effect, row in names.items():
-        f, df1 = float(table.loc[row, "F"]), float(table.loc[row, "df"])
-        out[effect] = {
-            "F": f,
-            "df1": df1,
-            "df2": df2,
-            "p": float(table.loc[row, "PR(>F)"]),
-            "eta_p2": partial_eta_squared(f, df1, df2),
-        }
-    return out
+    return {
+        effect: effect_row(table.loc[row, "F"], table.loc[row, "df"], df2, table.loc[row, "PR(>F)"])
+        for effect, row in names.items()
+    }
 
 
 def repeated_measures_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
@@ -53,17 +57,10 @@ def repeated_measures_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
         df, depvar="rmse", subject="network", within=["congruency", "size"], aggregate_func="mean"
     ).fit()
     table = fit.anova_table
-    out = {}
-    for effect, row in EFFECTS.items():
-        f, df1, df2 = (float(table.loc[row, c]) for c in ("F Value", "Num DF", "Den DF"))
-        out[effect] = {
-            "F": f,
-            "df1": df1,
-            "df2": df2,
-            "p": float(table.loc[row, "Pr > F"]),
-            "eta_p2": partial_eta_squared(f, df1, df2),
-        }
-    return out
+    return {
+        effect: effect_row(*(table.loc[row, c] for c in ("F Value", "Num DF", "Den DF", "Pr > F")))
+        for effect, row in EFFECTS.items()
+    }
 
 
 def cell_means(df: pd.DataFrame) -> dict[str, float]:
