@@ -244,13 +244,16 @@ class Robot:
         )
 
     # -- rendering -------------------------------------------------------------------------------
-    def render(self, camera: str = "left_eye", width: int = 320, height: int = 240) -> np.ndarray:
+    def render(
+        self, camera: str = "left_eye", width: int = 320, height: int = 240, shadows: bool = True
+    ) -> np.ndarray:
         """An RGB image (height, width, 3, uint8) from a named camera; renderers are reused."""
         key = (width, height)
         if key not in self._renderers:
             self._renderers[key] = mujoco.Renderer(self.model, height=height, width=width)
         renderer = self._renderers[key]
         renderer.update_scene(self.data, camera=camera)
+        renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = shadows
         return renderer.render().copy()
 
     def render_state(self, qpos: np.ndarray, camera: str, width: int, height: int) -> np.ndarray:

@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import cv2
-import mujoco
 import numpy as np
 
 from .body import Robot
@@ -45,13 +44,7 @@ class VisualStages:
 
 def render_eye(robot: Robot, config: VisionConfig) -> np.ndarray:
     """The eye's RGB image without cast shadows: the map should hold the object's own outline."""
-    key = (config.width, config.height)
-    if key not in robot._renderers:
-        robot.render(config.eye, config.width, config.height)
-    renderer = robot._renderers[key]
-    renderer.update_scene(robot.data, camera=config.eye)
-    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
-    return renderer.render().copy()
+    return robot.render(config.eye, config.width, config.height, shadows=False)
 
 
 def sobel_rgb(image: np.ndarray) -> np.ndarray:
