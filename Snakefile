@@ -19,11 +19,14 @@ configfile: "config/config.yaml"
 validate(config, "workflow/schemas/config.schema.yaml")
 
 
+
 include: "workflow/rules/common.smk"
 include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
+include: "workflow/rules/ablation.smk"
+include: "workflow/rules/embodied.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 
@@ -42,3 +45,8 @@ rule all:
         rules.stats.output,
         rules.figure4.output,
         rules.figure5.output,
+        rules.figure_hidden.output,
+        rules.ablation_stats.output,
+        rules.ablation_figure5.output,
+        rules.embodied_summary.output,
+        rules.embodied_filmstrip.output,

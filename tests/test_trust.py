@@ -171,7 +171,7 @@ def test_a_corrupt_weights_file_fails_the_evaluation_and_keeps_the_old_trials(bu
     (copy / "data/eval/trials.csv").read_bytes()
     weights = copy / "data/train/net00/weights.npz"
     weights.write_bytes(weights.read_bytes()[:100])
-    result = run_snakemake(copy, "-c1", "--forcerun", "evaluate", "data/eval/trials.csv")
+    result = run_snakemake(copy, "-c1", "data/eval/trials.csv", "--forcerun", "evaluate")
     assert result.returncode != 0
     log = (copy / "data/logs/evaluate.log").read_text()
     assert "weights.npz" in log and "rerun" in log

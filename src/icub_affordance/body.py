@@ -17,88 +17,24 @@ os.environ.setdefault("MUJOCO_GL", "egl")
 
 import mujoco  # noqa: E402
 
+from .spec import (  # noqa: E402, F401  (re-exported: the body's interface)
+    DOF_MAX_DEG,
+    DOF_MIN_DEG,
+    DOF_NAMES,
+    FIGURE1,
+    N_ARM_DOF,
+    N_DOF,
+    OBJECT_NAMES,
+    OBJECTS,
+    TOUCH_NAMES,
+    ObjectInfo,
+    check_posture_deg,
+    to_degrees,
+    to_normalised,
+)
+
 #: The scene shipped with the project.
 SCENE_PATH = Path(__file__).resolve().parents[2] / "assets" / "icub_scene.xml"
-
-#: The paper's Figure 1: the 16 controlled DoF, in its order, with their ranges in degrees.
-FIGURE1: tuple[tuple[str, str, float, float], ...] = (
-    ("shoulder_pitch", "shoulder pitch", -95, 90),
-    ("shoulder_roll", "shoulder roll", 0, 161),
-    ("shoulder_yaw", "shoulder yaw", -37, 100),
-    ("elbow", "elbow", 6, 106),
-    ("wrist_prosup", "wrist pronosupination", -90, 90),
-    ("wrist_pitch", "wrist pitch", -90, 10),
-    ("wrist_yaw", "wrist yaw", -20, 40),
-    ("hand_finger", "hand finger adduction/abduction", -20, 30),
-    ("thumb_oppose", "thumb opposition", -15, 105),
-    ("thumb_proximal", "thumb proximal flexion", 0, 90),
-    ("thumb_distal", "thumb distal flexion", 0, 90),
-    ("index_proximal", "index proximal flexion", 0, 90),
-    ("index_distal", "index distal flexion", 0, 90),
-    ("middle_proximal", "middle proximal flexion", 0, 90),
-    ("middle_distal", "middle distal flexion", 0, 90),
-    ("ring_little", "ring & little flexion", 0, 115),
-)
-DOF_NAMES: tuple[str, ...] = tuple(row[0] for row in FIGURE1)
-DOF_MIN_DEG = np.array([row[2] for row in FIGURE1], dtype=float)
-DOF_MAX_DEG = np.array([row[3] for row in FIGURE1], dtype=float)
-N_DOF = len(FIGURE1)
-N_ARM_DOF = 7
-
-#: The six tactile sensors of the paper (one per finger, one on the palm).
-TOUCH_NAMES: tuple[str, ...] = (
-    "touch_thumb",
-    "touch_index",
-    "touch_middle",
-    "touch_ring",
-    "touch_little",
-    "touch_palm",
-)
-
-#: The objects of MODEL.md section 2, in the project's order.
-OBJECT_NAMES: tuple[str, ...] = ("big_ball", "small_ball", "big_cube", "small_cube")
-
-
-@dataclass(frozen=True)
-class ObjectInfo:
-    """What the paper says of an object (section 2.3): balls are natural, cubes artefacts."""
-
-    category: str  # natural | artefact
-    size: str  # large | small
-    natural_grip: str  # power for large objects, precision for small ones
-
-
-OBJECTS: dict[str, ObjectInfo] = {
-    "big_ball": ObjectInfo("natural", "large", "power"),
-    "small_ball": ObjectInfo("natural", "small", "precision"),
-    "big_cube": ObjectInfo("artefact", "large", "power"),
-    "small_cube": ObjectInfo("artefact", "small", "precision"),
-}
-
-
-def to_normalised(angles_deg: np.ndarray) -> np.ndarray:
-    """Figure 1's ranges mapped to 0-1, the units the network sees (paper section 2.3)."""
-    return (np.asarray(angles_deg, dtype=float) - DOF_MIN_DEG) / (DOF_MAX_DEG - DOF_MIN_DEG)
-
-
-def to_degrees(angles_norm: np.ndarray) -> np.ndarray:
-    """Inverse of :func:`to_normalised`."""
-    return DOF_MIN_DEG + np.asarray(angles_norm, dtype=float) * (DOF_MAX_DEG - DOF_MIN_DEG)
-
-
-def check_posture_deg(angles_deg, what: str = "posture") -> np.ndarray:
-    """Refuse a posture outside Figure 1's ranges, naming the joint, instead of clipping it."""
-    angles = np.asarray(angles_deg, dtype=float)
-    if angles.shape != (N_DOF,):
-        raise ValueError(f"{what}: expected {N_DOF} angles in Figure 1's order, got {angles.shape}")
-    bad = [
-        f"{FIGURE1[k][1]} = {angles[k]:g} (allowed {DOF_MIN_DEG[k]:g}..{DOF_MAX_DEG[k]:g})"
-        for k in range(N_DOF)
-        if not DOF_MIN_DEG[k] <= angles[k] <= DOF_MAX_DEG[k]
-    ]
-    if bad:
-        raise ValueError(f"{what}: outside Figure 1's ranges (degrees): " + "; ".join(bad))
-    return angles
 
 
 def resize_object(spec: mujoco.MjSpec, name: str, size: float) -> None:
@@ -164,6 +100,9 @@ class Robot:
         self.object_qpos = {n: m.jnt_qposadr[m.joint(n).id] for n in OBJECT_NAMES}
         self.object_dof = {n: m.jnt_dofadr[m.joint(n).id] for n in OBJECT_NAMES}
         self._parking = {n: m.body(n).pos.copy() for n in OBJECT_NAMES}
+        self._collides = {
+            n: (m.geom(n).contype.copy(), m.geom(n).conaffinity.copy()) for n in OBJECT_NAMES
+        }
         self.palm_site = m.site("right_palm").id
         self.spot = m.site("spot").pos.copy()
         self.gaze_mocap = m.body_mocapid[m.body("gaze_target").id]
@@ -175,13 +114,23 @@ class Robot:
         mujoco.mj_forward(self.model, self.data)
 
     def place_object(self, name: str) -> None:
-        """Put ``name`` at rest on the spot, the others back in their parking places."""
+        """Put ``name`` at rest on the spot, the others back in their parking places.
+
+        Parked objects are taken out of the physics (no contacts, gravity compensated, so they
+        hover where they are): they only cost the contact solver time. They still render.
+        """
         if name not in OBJECT_NAMES:
             raise ValueError(f"unknown object {name!r}; choose one of {OBJECT_NAMES}")
         for other in OBJECT_NAMES:
             adr, dof = self.object_qpos[other], self.object_dof[other]
             pos = self._parking[other]
-            if other == name:
+            live = other == name
+            geom = self.model.geom(other)
+            contype, conaffinity = self._collides[other]
+            geom.contype[:] = contype if live else 0
+            geom.conaffinity[:] = conaffinity if live else 0
+            self.model.body_gravcomp[self.model.body(other).id] = 0.0 if live else 1.0
+            if live:
                 pos = self.spot + np.array([0.0, 0.0, self.object_half_height(name)])
             self.data.qpos[adr : adr + 3] = pos
             self.data.qpos[adr + 3 : adr + 7] = (1.0, 0.0, 0.0, 0.0)

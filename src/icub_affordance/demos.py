@@ -48,6 +48,7 @@ class GraspPlan:
 @dataclass
 class GraspOutcome:
     postures_deg: np.ndarray  # (steps, 16) the controlled angles from start to closed grasp
+    commands_deg: np.ndarray  # (steps, 16) the servo targets at the same moments
     touch_trace: np.ndarray  # (steps, 6) touch over the same steps, N
     qpos_trace: np.ndarray  # (steps, nq) the whole state, to replay the movement for pictures
     touch: np.ndarray  # (6,) touch at the closed grasp, N
@@ -108,16 +109,24 @@ class _Recorder:
 
     def __init__(self) -> None:
         self.postures: list[np.ndarray] = []
+        self.commands: list[np.ndarray] = []
         self.touch: list[np.ndarray] = []
         self.qpos: list[np.ndarray] = []
 
     def __call__(self, robot: Robot) -> None:
         self.postures.append(robot.posture_deg())
+        self.commands.append(np.degrees(robot.data.ctrl))
         self.touch.append(robot.touch())
         self.qpos.append(robot.data.qpos.copy())
 
 
-def _move(robot: Robot, target_deg: np.ndarray, seconds: float, record=None) -> None:
+#: How long the demonstrator takes to reach above the object, descend and close (s); the
+#: recorded steps are spread evenly over their sum. Then it lifts, in LIFT_S.
+APPROACH_S, DESCEND_S, CLOSE_S, LIFT_S = 1.0, 0.8, 0.8, 0.8
+DEMO_S = APPROACH_S + DESCEND_S + CLOSE_S
+
+
+def move(robot: Robot, target_deg: np.ndarray, seconds: float, record=None) -> None:
     """Ramp the servo targets linearly over 80% of the time, then hold them."""
     start = robot.data.ctrl.copy()
     goal = np.radians(target_deg)
@@ -154,22 +163,20 @@ def execute_grasp(
     record(robot)
     target = np.asarray(initial_deg, dtype=float).copy()
     target[:N_ARM_DOF], target[N_ARM_DOF:] = above_ik.arm_deg, plan.preshape_deg
-    _move(robot, target, 1.0, record)
+    move(robot, target, APPROACH_S, record)
     target[:N_ARM_DOF] = grasp_ik.arm_deg
-    _move(robot, target, 0.8, record)
+    move(robot, target, DESCEND_S, record)
     palm_error = float(np.linalg.norm(robot.palm_pose()[0] - palm_goal))
     target[N_ARM_DOF:] = plan.closed_deg
-    _move(robot, target, 0.8, record)
+    move(robot, target, CLOSE_S, record)
     touch, contacts = robot.touch(), object_contacts(robot, obj)
     height = robot.object_position(obj)[2]
     palm_in_object = robot.palm_pose()[0] - robot.object_position(obj)
 
-    palm, rot = robot.palm_pose()
-    lift_ik = solve_palm_pose(robot, palm + [0.0, 0.0, lift], rot, robot.posture_deg()[:N_ARM_DOF])
-    target[:N_ARM_DOF] = lift_ik.arm_deg
-    _move(robot, target, 0.8)
+    lift_arm(robot, lift)
     return GraspOutcome(
         postures_deg=np.array(record.postures),
+        commands_deg=np.array(record.commands),
         touch_trace=np.array(record.touch),
         qpos_trace=np.array(record.qpos),
         touch=touch,
@@ -178,6 +185,15 @@ def execute_grasp(
         palm_error=palm_error,
         palm_in_object=palm_in_object,
     )
+
+
+def lift_arm(robot: Robot, lift: float) -> None:
+    """Raise the palm by ``lift`` (m) without turning it, the hand's servo targets held."""
+    palm, rot = robot.palm_pose()
+    lift_ik = solve_palm_pose(robot, palm + [0.0, 0.0, lift], rot, robot.posture_deg()[:N_ARM_DOF])
+    target = np.degrees(robot.data.ctrl)
+    target[:N_ARM_DOF] = lift_ik.arm_deg
+    move(robot, target, LIFT_S)
 
 
 # -- the demonstration set (paper sections 2.3 and 3) --------------------------------------------
@@ -263,17 +279,30 @@ def varied(plan: GraspPlan, rng: np.random.Generator, config: DemoConfig) -> Gra
     )
 
 
-def is_grasp(grip: str, touch: np.ndarray, lift: float, config: DemoConfig) -> bool:
-    """MODEL.md section 4: the fingers the grip uses touch the object, and it stays in the hand.
+def grip_in_contact(grip: str, touch: np.ndarray, threshold: float) -> bool:
+    """MODEL.md section 4: the fingers a grip uses touch the object.
 
     Precision: thumb and index. Power: thumb, and the palm or at least three fingers.
     """
-    thumb, index, middle, ring, little, palm = (touch > config.touch_threshold).tolist()
+    thumb, index, middle, ring, little, palm = (np.asarray(touch) > threshold).tolist()
     if grip == "precision":
-        grips = thumb and index
-    else:
-        grips = thumb and (palm or sum([index, middle, ring, little]) >= 3)
-    return bool(grips and lift >= config.min_lift_m)
+        return bool(thumb and index)
+    if grip == "power":
+        return bool(thumb and (palm or sum([index, middle, ring, little]) >= 3))
+    raise ValueError(f"unknown grip {grip!r}; choose one of {GRIPS}")
+
+
+def grip_used(touch: np.ndarray, threshold: float) -> str:
+    """The grip the touch sensors report: power if it is one, else precision, else none."""
+    for grip in ("power", "precision"):
+        if grip_in_contact(grip, touch, threshold):
+            return grip
+    return "none"
+
+
+def is_grasp(grip: str, touch: np.ndarray, lift: float, config: DemoConfig) -> bool:
+    """A grasp holds: the grip's fingers touch the object, and it rises with the lifted hand."""
+    return grip_in_contact(grip, touch, config.touch_threshold) and bool(lift >= config.min_lift_m)
 
 
 @dataclass
@@ -283,7 +312,8 @@ class Demo:
     sequence: int
     attempts: int
     plan: GraspPlan
-    postures_deg: np.ndarray  # (steps, 16)
+    postures_deg: np.ndarray  # (steps, 16) as proprioception read them
+    commands_deg: np.ndarray  # (steps, 16) the servo targets at the same moments
     touch: np.ndarray  # (steps, 6)
     qpos: np.ndarray  # (steps, nq)
     lift_m: float
@@ -329,6 +359,7 @@ def make_demo(
                 # MuJoCo's joint limits are soft: a finger pushed onto its stop by a contact can
                 # pass it by a few degrees. Proprioception reads within Figure 1's ranges.
                 postures_deg=np.clip(outcome.postures_deg[idx], DOF_MIN_DEG, DOF_MAX_DEG),
+                commands_deg=outcome.commands_deg[idx],
                 touch=outcome.touch_trace[idx],
                 qpos=outcome.qpos_trace[idx],
                 lift_m=outcome.lift_height,
@@ -359,6 +390,7 @@ def object_demos(
 
     return {
         "angles_deg": stack(lambda d: d.postures_deg),
+        "commands_deg": stack(lambda d: d.commands_deg),
         "touch": stack(lambda d: d.touch),
         "qpos": stack(lambda d: d.qpos),
         "lift_m": stack(lambda d: d.lift_m),

@@ -7,11 +7,13 @@ and stands for the reaction time (paper section 3).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from .body import OBJECTS
 from .jordan import Weights, run_closed_loop
 from .som import TASKS
+from .spec import OBJECTS
 from .train import GRASPING, Materials, context, target_grip
 
 MODES = ("closed_loop", "teacher_forced")
@@ -21,48 +23,78 @@ def evaluate_network(
     m: Materials, weights: Weights, network: int, mapping: str, cue: str
 ) -> tuple[list[dict[str, object]], dict[str, np.ndarray]]:
     """One row per trial, and the hidden activity of every trial for later analysis."""
-    n_seq = m.demos.shape[2]
-    trials = [
-        (task, o, s)
-        for task in range(len(TASKS))
-        for o in range(len(m.objects))
-        for s in range(n_seq)
-    ]
-    grips = [m.grips.index(target_grip(m.objects[o], task, mapping)) for task, o, _ in trials]
-    ctx = np.array([context(m, o, task, cue) for task, o, _ in trials])
-    teacher = np.array([m.demos[o, g, s] for (_, o, s), g in zip(trials, grips, strict=True)])
+    setup = TrialSet.of(m, mapping, cue)
     rows, hidden = [], {}
     for mode in MODES:
-        forced = teacher if mode == "teacher_forced" else None
-        out, hid = run_closed_loop(weights, ctx, teacher[:, 0], forced)
+        forced = setup.teacher if mode == "teacher_forced" else None
+        out, hid = run_closed_loop(weights, setup.context, setup.teacher[:, 0], forced)
         hidden[mode] = hid
-        sq = (out - teacher[:, 1:]) ** 2  # (trials, steps-1, 16)
-        per_step = np.sqrt(sq.mean(axis=2))
-        overall = np.sqrt(sq.mean(axis=(1, 2)))
-        # which grip the final output is nearer to (the same object and sequence's two demos)
-        finals = m.demos[:, :, :, -1]  # (objects, grips, seq, 16)
-        for i, ((task, o, s), g) in enumerate(zip(trials, grips, strict=True)):
-            obj = m.objects[o]
-            info = OBJECTS[obj]
-            grip = m.grips[g]
-            nearest = int(np.argmin(np.linalg.norm(finals[o, :, s] - out[i, -1], axis=1)))
-            congruent = "" if task == GRASPING else str(grip == info.natural_grip)
-            row = {
-                "network": network,
-                "mapping": mapping,
-                "mode": mode,
-                "task": TASKS[task],
-                "object": obj,
-                "size": info.size,
-                "category": info.category,
-                "natural_grip": info.natural_grip,
-                "target_grip": grip,
-                "congruent": congruent,
-                "sequence": s,
-                "held_out": s == n_seq - 1,
-                "rmse": float(overall[i]),
-                "final_grip": m.grips[nearest],
-            }
-            row |= {f"rmse_step{t + 1}": float(v) for t, v in enumerate(per_step[i])}
-            rows.append(row)
+        rows += [
+            trial_row(m, setup, i, out[i], out[i, -1], network, mapping, mode)
+            for i in range(len(setup.trials))
+        ]
     return rows, hidden
+
+
+@dataclass(frozen=True)
+class TrialSet:
+    """Every test trial of one network: task, object, sequence, and what it is shown and taught."""
+
+    trials: list[tuple[int, int, int]]  # (task, object, sequence)
+    grips: list[int]  # the grip each trial requires, as an index into Materials.grips
+    context: np.ndarray  # (trials, steps-1, 200) the maps' input at every step
+    teacher: np.ndarray  # (trials, steps, 16) the demonstration of the required grip
+
+    @classmethod
+    def of(cls, m: Materials, mapping: str, cue: str) -> TrialSet:
+        n_seq = m.demos.shape[2]
+        trials = [
+            (task, o, s)
+            for task in range(len(TASKS))
+            for o in range(len(m.objects))
+            for s in range(n_seq)
+        ]
+        grips = [m.grips.index(target_grip(m.objects[o], task, mapping)) for task, o, _ in trials]
+        ctx = np.array([context(m, o, task, cue) for task, o, _ in trials])
+        teacher = np.array([m.demos[o, g, s] for (_, o, s), g in zip(trials, grips, strict=True)])
+        return cls(trials, grips, ctx, teacher)
+
+
+def trial_row(
+    m: Materials,
+    setup: TrialSet,
+    i: int,
+    outputs: np.ndarray,
+    final_posture: np.ndarray,
+    network: int,
+    mapping: str,
+    mode: str,
+) -> dict[str, object]:
+    """One trial's row: what it was, its RMSE against the demonstration, and per step.
+
+    ``final_grip`` is the grip whose demonstrated final posture (same object and sequence) is
+    nearer to ``final_posture``.
+    """
+    task, o, s = setup.trials[i]
+    obj, grip = m.objects[o], m.grips[setup.grips[i]]
+    info = OBJECTS[obj]
+    sq = (outputs - setup.teacher[i, 1:]) ** 2  # (steps-1, 16)
+    nearest = int(np.argmin(np.linalg.norm(m.demos[o, :, s, -1] - final_posture, axis=1)))
+    row = {
+        "network": network,
+        "mapping": mapping,
+        "mode": mode,
+        "task": TASKS[task],
+        "object": obj,
+        "size": info.size,
+        "category": info.category,
+        "natural_grip": info.natural_grip,
+        "target_grip": grip,
+        "congruent": "" if task == GRASPING else str(grip == info.natural_grip),
+        "sequence": s,
+        "held_out": s == m.demos.shape[2] - 1,
+        "rmse": float(np.sqrt(sq.mean())),
+        "final_grip": m.grips[nearest],
+    }
+    row |= {f"rmse_step{t + 1}": float(v) for t, v in enumerate(np.sqrt(sq.mean(axis=1)))}
+    return row

@@ -61,8 +61,10 @@ def figure3(stages: dict[str, dict[str, np.ndarray]], window: int, path) -> None
     save(fig, path)
 
 
-def filmstrip(strips: dict[str, list[np.ndarray]], path, every: int = 1) -> None:
-    """One row of frames per demonstration, labelled with its time step."""
+def filmstrip(
+    strips: dict[str, list[np.ndarray]], path, every: int = 1, labels: list[str] | None = None
+) -> None:
+    """One row of frames per demonstration, labelled with its time step (or ``labels``)."""
     rows = list(strips)
     n = len(strips[rows[0]][::every])
     fig, axes = plt.subplots(len(rows), n, figsize=(1.6 * n, 1.45 * len(rows) + 0.3))
@@ -74,7 +76,7 @@ def filmstrip(strips: dict[str, list[np.ndarray]], path, every: int = 1) -> None
             ax.set_xticks([])
             ax.set_yticks([])
             if r == len(rows) - 1:
-                ax.set_xlabel(f"step {k * every}", fontsize=8)
+                ax.set_xlabel(labels[k] if labels else f"step {k * every}", fontsize=8)
         axes[r, 0].set_ylabel(title.split(",")[0], fontsize=8)
         axes[r, n // 2].set_title(title, fontsize=9)
     fig.tight_layout()
@@ -213,5 +215,54 @@ def sweep_effects(points, path) -> None:
         ax.set_title(f"{effect}: green = paper's direction, red = reversed (p < .05)", fontsize=8)
         ax.grid(alpha=0.3)
     axes[0].set_yticks(y, labels, fontsize=7)
+    fig.tight_layout()
+    save(fig, path)
+
+
+CONDITION_STYLE = {
+    "grasping": {"color": "0.45", "ls": "-"},
+    "congruent": {"color": "tab:green", "ls": "-"},
+    "incongruent": {"color": "tab:red", "ls": "--"},
+}
+
+
+def hidden_representations(paths, explained, divergence, network: int, path) -> None:
+    """Left: one network's mean hidden trajectories on its first two principal axes, per object
+    and condition. Right: distance of categorisation trials' hidden states from the grasping
+    trial of the same object and sequence, per step (mean and 95% interval over networks)."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.6))
+    mine = paths[paths["network"] == network]
+    markers = dict(zip(LABELS, "osD^", strict=True))
+    for (obj, condition), group in mine.groupby(["object", "condition"], sort=False):
+        style = CONDITION_STYLE[condition]
+        left.plot(group["pc1"], group["pc2"], color=style["color"], ls=style["ls"], lw=1.4)
+        left.scatter(group["pc1"].iloc[0], group["pc2"].iloc[0], color=style["color"],
+                     marker=markers.get(obj, "o"), s=40, zorder=3)  # fmt: skip
+        left.annotate(
+            f"{LABELS.get(obj, obj)}", (group["pc1"].iloc[-1], group["pc2"].iloc[-1]),
+            fontsize=7, color=style["color"], xytext=(3, 3), textcoords="offset points",
+        )  # fmt: skip
+    ev = explained[explained["network"] == network].iloc[0]
+    left.set_xlabel(f"principal axis 1 ({ev['pc1']:.0%} of variance)")
+    left.set_ylabel(f"principal axis 2 ({ev['pc2']:.0%})")
+    left.set_title(f"network {network}: hidden state over the steps (marker = step 1)", fontsize=10)
+    for condition in ("grasping", "congruent", "incongruent"):
+        style = CONDITION_STYLE[condition]
+        left.plot([], [], color=style["color"], ls=style["ls"], label=condition)
+    left.legend(fontsize=8, frameon=False)
+    steps = divergence["step"]
+    for condition in ("congruent", "incongruent"):
+        style = CONDITION_STYLE[condition]
+        right.plot(steps, divergence[condition], color=style["color"], ls=style["ls"], marker="o",
+                   label=f"{condition} categorisation")  # fmt: skip
+    right.fill_between(
+        steps, divergence["congruent"] + divergence["ci_low"],
+        divergence["congruent"] + divergence["ci_high"], color="tab:red", alpha=0.15,
+        label="incongruent, 95% interval of the difference",
+    )  # fmt: skip
+    right.set_xlabel("step")
+    right.set_ylabel("distance from the grasping trial's hidden state")
+    right.set_title("how far categorising takes the hidden layer from grasping", fontsize=10)
+    right.legend(fontsize=8, frameon=False)
     fig.tight_layout()
     save(fig, path)

@@ -126,6 +126,16 @@ def equal_runs(context: np.ndarray) -> list[tuple[int, int]]:
     return runs
 
 
+def network_step(
+    weights: Weights, context: np.ndarray, proprio: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """One forward step: the maps' input ``context`` (..., 200) and the posture (..., 16) in,
+    the next posture (..., 16) and the hidden activity out."""
+    x = np.concatenate([context[..., :N_VISUAL], proprio, context[..., N_VISUAL:]], axis=-1)
+    h = sigmoid(x @ weights.W1.T + weights.b1)
+    return sigmoid(h @ weights.W2.T + weights.b2), h
+
+
 def run_closed_loop(
     weights: Weights, context: np.ndarray, start: np.ndarray, teacher: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -141,9 +151,7 @@ def run_closed_loop(
     for t in range(steps):
         if teacher is not None:
             proprio = teacher[:, t]
-        x = np.concatenate([context[:, t, :N_VISUAL], proprio, context[:, t, N_VISUAL:]], axis=1)
-        h = sigmoid(x @ weights.W1.T + weights.b1)
-        y = sigmoid(h @ weights.W2.T + weights.b2)
+        y, h = network_step(weights, context[:, t], proprio)
         outputs.append(y)
         hiddens.append(h)
         proprio = y

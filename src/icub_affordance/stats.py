@@ -52,9 +52,9 @@ def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
     }
 
 
-def repeated_measures_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
+def repeated_measures_anova(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
     fit = AnovaRM(
-        df, depvar="rmse", subject="network", within=["congruency", "size"], aggregate_func="mean"
+        df, depvar=depvar, subject="network", within=["congruency", "size"], aggregate_func="mean"
     ).fit()
     table = fit.anova_table
     return {
@@ -63,15 +63,15 @@ def repeated_measures_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
     }
 
 
-def cell_means(df: pd.DataFrame) -> dict[str, float]:
-    """Mean RMSE per congruency x size cell (over networks' means), and the marginal means."""
-    per_net = df.groupby(["network", "congruency", "size"])["rmse"].mean().reset_index()
+def cell_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, float]:
+    """Mean per congruency x size cell (over networks' means), and the marginal means."""
+    per_net = df.groupby(["network", "congruency", "size"])[depvar].mean().reset_index()
     out = {
         f"{c}_{s}": float(v)
-        for (c, s), v in per_net.groupby(["congruency", "size"])["rmse"].mean().items()
+        for (c, s), v in per_net.groupby(["congruency", "size"])[depvar].mean().items()
     }
-    out |= {c: float(v) for c, v in per_net.groupby("congruency")["rmse"].mean().items()}
-    out |= {s: float(v) for s, v in per_net.groupby("size")["rmse"].mean().items()}
+    out |= {c: float(v) for c, v in per_net.groupby("congruency")[depvar].mean().items()}
+    out |= {s: float(v) for s, v in per_net.groupby("size")[depvar].mean().items()}
     return out
 
 

@@ -12,9 +12,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .body import OBJECTS
 from .jordan import N_GOAL, N_VISUAL, OnlineTrainer, Weights, equal_runs
 from .som import TASKS
+from .spec import OBJECTS
 
 GRASPING, CATEGORISATION = 0, 1
 MAPPINGS = {

@@ -1,4 +1,5 @@
 # The book (a Jupyter Book 1.x in book/), built from the pipeline's own outputs.
+import glob
 
 BOOK_DATA = {
     "figure1_scene.png": "data/body/figure1_scene.png",
@@ -17,6 +18,15 @@ BOOK_DATA = {
     "anova.json": "data/eval/anova.json",
     "trials.csv": "data/eval/trials.csv",
     "rulegraph.dot": "data/book/rulegraph.dot",
+    "embodied_analysis.json": "data/embodied/analysis.json",
+    "embodied_success.csv": "data/embodied/success.csv",
+    "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
+    "ablation_anova.json": "data/ablation/eval/anova.json",
+    "ablation_figure5.png": "data/figures/ablation_figure5.png",
+    "divergence.csv": "data/eval/divergence.csv",
+    "divergence.json": "data/eval/divergence.json",
+    "hidden_explained.csv": "data/eval/hidden_explained.csv",
+    "hidden_representations.png": "data/figures/hidden_representations.png",
 } | {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
@@ -26,12 +36,7 @@ rule rulegraph:
     """The DAG's rules and their dependencies, for the book's reproduction page."""
     input:
         "Snakefile",
-        "workflow/rules/common.smk",
-        "workflow/rules/body.smk",
-        "workflow/rules/vision.smk",
-        "workflow/rules/demos.smk",
-        "workflow/rules/model.smk",
-        "workflow/rules/book.smk",
+        sorted(glob.glob("workflow/rules/*.smk")),
     output:
         "data/book/rulegraph.dot",
     threads: 1

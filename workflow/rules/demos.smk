@@ -5,7 +5,7 @@ rule demos_object:
     """Every grip and sequence of one object, made and checked in physics (one job per object)."""
     input:
         scene=config["scene"],
-        code=package_code("body", "ik", "demos", "io"),
+        code=package_code("body", "spec", "ik", "demos", "io"),
     output:
         "data/demos/parts/{object}.npz",
     params:
@@ -31,7 +31,7 @@ rule demos:
     """The 4 x 2 x 5 demonstrations in one file, and a readable summary."""
     input:
         parts=expand("data/demos/parts/{object}.npz", object=config["objects"]),
-        code=package_code("body", "demos", "io"),
+        code=package_code("body", "spec", "demos", "io"),
     output:
         demos="data/demos/demos.npz",
         summary="data/demos/summary.csv",
@@ -55,7 +55,7 @@ rule demo_filmstrip:
     input:
         demos=rules.demos.output.demos,
         scene=config["scene"],
-        code=package_code("body", "figures", "io"),
+        code=package_code("body", "spec", "figures", "io"),
     output:
         "data/demos/filmstrip.png",
     params:

@@ -51,7 +51,7 @@ rule train:
         maps=rules.visual_maps.output.maps,
         soms=rules.soms.output[0],
         demos=rules.demos.output.demos,
-        code=package_code("body", "jordan", "som", "train", "io"),
+        code=package_code("spec", "jordan", "som", "train", "io"),
     output:
         curve="data/train/net{net}/curve.csv",
         weights="data/train/net{net}/weights.npz",
@@ -79,7 +79,7 @@ rule evaluate:
         soms=rules.soms.output[0],
         demos=rules.demos.output.demos,
         weights=expand("data/train/net{net}/weights.npz", net=NETWORKS),
-        code=package_code("body", "jordan", "som", "train", "evaluate", "io"),
+        code=package_code("spec", "jordan", "som", "train", "evaluate", "io"),
     output:
         trials="data/eval/trials.csv",
         hidden="data/eval/hidden.npz",
@@ -156,3 +156,50 @@ rule figure5:
         "data/benchmarks/figure5.tsv"
     script:
         "../scripts/figure5.py"
+
+
+rule representations:
+    """The hidden units over the steps: how far categorisation trials are from grasping, and
+    each network's trajectories on its first two principal axes."""
+    input:
+        trials=rules.evaluate.output.trials,
+        hidden=rules.evaluate.output.hidden,
+        code=package_code("representations", "stats", "io"),
+    output:
+        divergence="data/eval/divergence.csv",
+        trajectories="data/eval/hidden_trajectories.csv",
+        explained="data/eval/hidden_explained.csv",
+        summary="data/eval/divergence.json",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/representations.log",
+    benchmark:
+        "data/benchmarks/representations.tsv"
+    script:
+        "../scripts/representations.py"
+
+
+rule figure_hidden:
+    """The hidden-representation figure (plot only)."""
+    input:
+        trajectories=rules.representations.output.trajectories,
+        explained=rules.representations.output.explained,
+        divergence=rules.representations.output.divergence,
+        code=package_code("figures", "io"),
+    output:
+        "data/figures/hidden_representations.png",
+    params:
+        network=0,
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/figure_hidden.log",
+    benchmark:
+        "data/benchmarks/figure_hidden.tsv"
+    script:
+        "../scripts/figure_hidden.py"

@@ -37,7 +37,7 @@ rule sweep_train:
         maps=rules.visual_maps.output.maps,
         soms=rules.soms.output[0],
         demos=rules.demos.output.demos,
-        code=package_code("body", "jordan", "som", "train", "io"),
+        code=package_code("spec", "jordan", "som", "train", "io"),
     output:
         curve="data/sweep/{point}/train/net{net}/curve.csv",
         weights="data/sweep/{point}/train/net{net}/weights.npz",
@@ -65,7 +65,7 @@ rule sweep_evaluate:
         soms=rules.soms.output[0],
         demos=rules.demos.output.demos,
         weights=expand("data/sweep/{{point}}/train/net{net}/weights.npz", net=NETWORKS),
-        code=package_code("body", "jordan", "som", "train", "evaluate", "io"),
+        code=package_code("spec", "jordan", "som", "train", "evaluate", "io"),
     output:
         trials="data/sweep/{point}/eval/trials.csv",
         hidden="data/sweep/{point}/eval/hidden.npz",

@@ -5,7 +5,7 @@ rule visual_maps:
     """Render each object on the spot, edge-filter, foveate and reduce to the 10x10 maps."""
     input:
         scene=config["scene"],
-        code=package_code("body", "vision", "io"),
+        code=package_code("body", "spec", "vision", "io"),
     output:
         maps="data/vision/visual_maps.npz",
         stages="data/vision/vision_stages.npz",

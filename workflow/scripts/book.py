@@ -22,7 +22,7 @@ with redirect_log(snakemake.log[0]):
     write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
     result = subprocess.run(
-        [jupyter_book, "build", "-W", "-n", "--keep-going", str(book)],
+        [jupyter_book, "build", "--all", "-W", "-n", "--keep-going", str(book)],
         capture_output=True,
         text=True,
     )

@@ -8,7 +8,7 @@ from icub_affordance.io import load_npz, redirect_log, save_npz, write_text
 
 with redirect_log(snakemake.log[0]):
     parts = {
-        obj: load_npz(path, required=("angles_deg", "touch", "qpos"))
+        obj: load_npz(path, required=("angles_deg", "commands_deg", "touch", "qpos"))
         for obj, path in zip(snakemake.params.objects, snakemake.input.parts, strict=True)
     }
     merged = merge_demos(parts)

@@ -1,8 +1,6 @@
 """Train one Jordan network (the wildcard `net`) and save its learning curve and weights."""
 
-import pandas as pd
-
-from icub_affordance.io import atomic_path, redirect_log, save_npz
+from icub_affordance.io import redirect_log, save_npz, write_text
 from icub_affordance.som import TASKS
 from icub_affordance.train import (
     TrainConfig,
@@ -24,10 +22,17 @@ with redirect_log(snakemake.log[0]):
     weights, curve = train_network(
         materials, config, mapping, network_seed(snakemake.params.seed, net)
     )
-    table = pd.DataFrame(curve)
-    table["task"] = [TASKS[k] for k in table["task"]]
-    table["object"] = [materials.objects[o] for o in table["object"]]
-    with atomic_path(snakemake.output.curve) as tmp:
-        table.to_csv(tmp, index=False, float_format="%.6f")
+    # written by hand rather than through pandas: a training job is short, and importing
+    # pandas would be a fifth of it
+    lines = ["iteration,phase,task,object,sequence,rmse"]
+    lines += [
+        f"{i},{phase},{TASKS[task]},{materials.objects[obj]},{seq},{rmse:.6f}"
+        for i, phase, task, obj, seq, rmse in zip(
+            curve["iteration"], curve["phase"], curve["task"], curve["object"],
+            curve["sequence"], curve["rmse"], strict=True,
+        )
+    ]  # fmt: skip
+    write_text(snakemake.output.curve, "\n".join(lines) + "\n")
     save_npz(snakemake.output.weights, **weights.as_dict())
-    print(f"network {net} (mapping {mapping}): final RMSE {table['rmse'].tail(500).mean():.4f}")
+    final = curve["rmse"][-500:].mean()
+    print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")

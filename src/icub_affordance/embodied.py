@@ -1,0 +1,236 @@
+"""Beyond the paper: the trained network drives the simulated arm, and physics judges the grasp.
+
+The paper scored its networks by how far their outputs were from the demonstrated postures and
+never let them move the robot. Here each test trial is run on the MuJoCo iCub, closed loop: at
+every step the network reads the arm's *actual* posture from the simulator (proprioception) and
+its output becomes the 16 position-servo targets, ramped over one demonstration step's time. The
+arm then lifts, and the grasp counts as a success by the demonstrator's own test (MODEL.md
+section 4): the required grip's fingers touch the object, and the object rises with the hand.
+
+Two replays bound what a network could achieve with this controller: the demonstrator's own
+servo targets at the ten recorded moments (a correct plan), and the postures proprioception
+recorded at those moments (what the networks were taught).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .body import DOF_MAX_DEG, DOF_MIN_DEG, TOUCH_NAMES, Robot, to_degrees, to_normalised
+from .demos import DEMO_S, DemoConfig, grip_in_contact, grip_used, lift_arm, move
+from .evaluate import TrialSet, trial_row
+from .jordan import Weights, network_step
+from .train import Materials
+
+#: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.
+Policy = Callable[[int, np.ndarray], np.ndarray]
+
+
+@dataclass(frozen=True)
+class Outcome:
+    commands: np.ndarray  # (steps-1, 16) the servo targets sent, 0-1
+    sensed: np.ndarray  # (steps, 16) the posture read before each command and at the end, 0-1
+    touch: np.ndarray  # (6,) N, at the end of the last step
+    lift_m: float  # how far the object rose with the lifted hand; NaN when not lifted
+    qpos: np.ndarray  # (steps + 1, nq) the state at every step and after the lift, for pictures
+
+
+def sensed_posture(robot: Robot) -> np.ndarray:
+    """Proprioception, 0-1 within Figure 1's ranges (as the demonstrations were recorded)."""
+    return to_normalised(np.clip(robot.posture_deg(), DOF_MIN_DEG, DOF_MAX_DEG))
+
+
+def run_trial(
+    robot: Robot,
+    obj: str,
+    policy: Policy,
+    start: np.ndarray,
+    steps: int,
+    grip: str,
+    config: DemoConfig,
+) -> Outcome:
+    """One trial in physics from the posture ``start`` (0-1), ``steps`` postures long.
+
+    The arm is lifted only if the required grip's fingers touch the object: without that the
+    trial has failed whatever the lift would show, and the lift is the costliest part.
+    """
+    robot.reset()
+    robot.place_object(obj)
+    robot.set_posture_deg(to_degrees(start))
+    height = robot.object_position(obj)[2]
+    step_s = DEMO_S / (steps - 1)  # the demonstrations' time between recorded steps
+    sensed, commands, states = [sensed_posture(robot)], [], [robot.data.qpos.copy()]
+    for t in range(steps - 1):
+        command = np.asarray(policy(t, sensed[-1]), dtype=float)
+        move(robot, to_degrees(command), step_s)
+        commands.append(command)
+        sensed.append(sensed_posture(robot))
+        states.append(robot.data.qpos.copy())
+    touch = robot.touch()
+    lift = float("nan")
+    if grip_in_contact(grip, touch, config.touch_threshold):
+        lift_arm(robot, config.lift_m)
+        lift = float(robot.object_position(obj)[2] - height)
+    states.append(robot.data.qpos.copy())
+    return Outcome(np.array(commands), np.array(sensed), touch, lift, np.array(states))
+
+
+def network_policy(weights: Weights, context: np.ndarray) -> Policy:
+    """The Jordan network as a controller; ``context`` (steps-1, 200) is the trial's map input."""
+
+    def policy(t: int, proprio: np.ndarray) -> np.ndarray:
+        return network_step(weights, context[t], proprio)[0]
+
+    return policy
+
+
+def replay_policy(plan: np.ndarray) -> Policy:
+    """Send the postures of a recorded plan (steps, 16; 0-1) one after another, ignoring the
+    senses: the controller's part of the job, with no network in the way."""
+    return lambda t, _proprio: plan[t + 1]
+
+
+def outcome_columns(out: Outcome, grip: str, target_final: np.ndarray, config: DemoConfig):
+    """What a roboticist measures of one trial."""
+    held = bool(out.lift_m >= config.min_lift_m)  # NaN (not lifted) compares False
+    return {
+        "success": bool(grip_in_contact(grip, out.touch, config.touch_threshold) and held),
+        "grip_used": grip_used(out.touch, config.touch_threshold),
+        "final_error": float(np.sqrt(np.mean((out.sensed[-1] - target_final) ** 2))),
+        "lift_m": out.lift_m,
+    } | {name: float(v) for name, v in zip(TOUCH_NAMES, out.touch, strict=True)}
+
+
+def embodied_network(
+    robot: Robot,
+    m: Materials,
+    weights: Weights,
+    network: int,
+    mapping: str,
+    cue: str,
+    config: DemoConfig,
+) -> tuple[list[dict[str, object]], np.ndarray]:
+    """Every test trial of one network on the robot: rows with the columns of the evaluation's
+    trials (mode ``embodied``) plus the physical outcome, and the states for pictures."""
+    setup = TrialSet.of(m, mapping, cue)
+    rows, states = [], []
+    for i, (_task, o, _s) in enumerate(setup.trials):
+        grip = m.grips[setup.grips[i]]
+        start = setup.teacher[i, 0]
+        out = run_trial(
+            robot,
+            m.objects[o],
+            network_policy(weights, setup.context[i]),
+            start,
+            len(setup.teacher[i]),
+            grip,
+            config,
+        )
+        row = trial_row(m, setup, i, out.commands, out.sensed[-1], network, mapping, "embodied")
+        rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], config))
+        states.append(out.qpos)
+    return rows, np.array(states)
+
+
+def replay_demos(
+    robot: Robot, demos: dict[str, np.ndarray], config: DemoConfig
+) -> list[dict[str, object]]:
+    """Each demonstration replayed through the controller twice: its servo targets (a correct
+    plan) and its sensed postures (what the networks learn to output)."""
+    rows = []
+    plans = {
+        "commands": to_normalised(demos["commands_deg"]),
+        "sensed_postures": demos["angles"],
+    }
+    objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
+    for o, obj in enumerate(objects):
+        for g, grip in enumerate(grips):
+            for s in range(demos["angles"].shape[2]):
+                for plan_name, plan in plans.items():
+                    p = plan[o, g, s]
+                    out = run_trial(
+                        robot, obj, replay_policy(p), demos["angles"][o, g, s, 0], len(p),
+                        grip, config,
+                    )  # fmt: skip
+                    row = {"object": obj, "grip": grip, "sequence": s, "plan": plan_name}
+                    rows.append(
+                        row | outcome_columns(out, grip, demos["angles"][o, g, s, -1], config)
+                    )
+    return rows
+
+
+# -- the summary -------------------------------------------------------------------------------
+
+
+def _condition(trials: pd.DataFrame) -> pd.Series:
+    congruent = trials["congruent"].astype(str)
+    return np.where(
+        trials["task"] == "grasping",
+        "grasping",
+        np.where(congruent == "True", "congruent", "incongruent"),
+    )
+
+
+def success_table(trials: pd.DataFrame) -> pd.DataFrame:
+    """Success, grip used and final error by task, congruency and size (over all trials)."""
+    df = trials.assign(condition=_condition(trials))
+    groups = df.groupby(["condition", "size"], sort=True)
+    table = groups.agg(
+        trials=("success", "size"),
+        success=("success", "mean"),
+        final_error=("final_error", "mean"),
+    )
+    for grip in ("power", "precision", "none"):
+        table[f"grip_{grip}"] = groups["grip_used"].apply(lambda g, grip=grip: (g == grip).mean())
+    table["grip_target"] = groups.apply(
+        lambda g: (g["grip_used"] == g["target_grip"]).mean(), include_groups=False
+    )
+    return table.reset_index()
+
+
+def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, object]:
+    """Does congruency (or size) change the robot's categorisation grasps?
+
+    For success (0/1) and for the final posture error: each network's mean per congruency x size
+    cell, the repeated-measures ANOVA of the main analysis (network as subject), and the
+    per-network incongruent - congruent difference with its 95% interval. Where every network
+    scores the same in every cell the ANOVA is undefined and reported as None.
+    """
+    from .stats import categorisation_trials, cell_means, mean_ci, repeated_measures_anova
+
+    df = categorisation_trials(trials, "embodied")
+    df["success"] = df["success"].astype(float)
+    measures = {}
+    for measure in ("success", "final_error"):
+        per_net = df.groupby(["network", "congruency"])[measure].mean().unstack()
+        mean, lo, hi = mean_ci((per_net["incongruent"] - per_net["congruent"]).to_numpy())
+        with np.errstate(divide="ignore", invalid="ignore"):
+            try:
+                anova = repeated_measures_anova(df, measure)
+            except (ValueError, ZeroDivisionError, np.linalg.LinAlgError):
+                anova = None
+        if anova and not all(np.isfinite(r["F"]) for r in anova.values()):
+            anova = None
+        measures[measure] = {
+            "means": cell_means(df, measure),
+            "incongruent_minus_congruent": {"mean": mean, "ci_low": lo, "ci_high": hi},
+            "repeated_measures": anova,
+        }
+    grasping = trials[trials["task"] == "grasping"]
+    return {
+        "n_networks": int(df["network"].nunique()),
+        "n_trials": int(len(trials)),
+        "success_rate": float(trials["success"].astype(float).mean()),
+        "grasping_success": float(grasping["success"].astype(float).mean()),
+        "categorisation_success": float(df["success"].mean()),
+        "touching_rate": float((trials["grip_used"] != "none").mean()),
+        "measures": measures,
+        "replay_success": {
+            plan: float(group["success"].astype(float).mean())
+            for plan, group in replay.groupby("plan")
+        },
+    }

@@ -1,0 +1,114 @@
+# Beyond the paper: the trained networks drive the simulated arm (one job per network), the
+# demonstrations are replayed through the same controller, and the robot's success is summarised.
+
+# The filmstrip shows the first network of each mapping: for any object one of them categorises
+# it with its natural grip (congruent) and the other with the other grip (incongruent).
+EMBODIED_FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
+
+
+rule embodied:
+    """One network drives the MuJoCo arm through every test trial, closed loop on its senses."""
+    input:
+        maps=rules.visual_maps.output.maps,
+        soms=rules.soms.output[0],
+        demos=rules.demos.output.demos,
+        weights="data/train/net{net}/weights.npz",
+        scene=config["scene"],
+        code=package_code(
+            "body", "spec", "demos", "ik", "jordan", "som", "train", "evaluate", "embodied", "io"
+        ),
+    output:
+        trials="data/embodied/net{net}/trials.csv",
+        states="data/embodied/net{net}/states.npz",
+    params:
+        network=settings(config["network"]),
+        demos=settings(config["demos"]),
+        object_sizes=settings(config["object_sizes_m"]),
+    wildcard_constraints:
+        net=r"\d\d",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=10,
+    log:
+        "data/logs/embodied/net{net}.log",
+    benchmark:
+        "data/benchmarks/embodied/net{net}.tsv"
+    script:
+        "../scripts/embodied.py"
+
+
+rule embodied_replay:
+    """Every demonstration replayed through the embodied controller: its servo targets and its
+    sensed postures."""
+    input:
+        demos=rules.demos.output.demos,
+        scene=config["scene"],
+        code=package_code(
+            "body", "spec", "demos", "ik", "jordan", "som", "train", "evaluate", "embodied", "io"
+        ),
+    output:
+        "data/embodied/replay.csv",
+    params:
+        demos=settings(config["demos"]),
+        object_sizes=settings(config["object_sizes_m"]),
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=10,
+    log:
+        "data/logs/embodied/replay.log",
+    benchmark:
+        "data/benchmarks/embodied_replay.tsv"
+    script:
+        "../scripts/embodied_replay.py"
+
+
+rule embodied_summary:
+    """All networks' embodied trials in one table; success rates; the effect of congruency."""
+    input:
+        trials=expand("data/embodied/net{net}/trials.csv", net=NETWORKS),
+        replay=rules.embodied_replay.output[0],
+        code=package_code("embodied", "stats", "io"),
+    output:
+        trials="data/embodied/trials.csv",
+        success="data/embodied/success.csv",
+        analysis="data/embodied/analysis.json",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/embodied/summary.log",
+    benchmark:
+        "data/benchmarks/embodied_summary.tsv"
+    script:
+        "../scripts/embodied_summary.py"
+
+
+rule embodied_filmstrip:
+    """A congruent and an incongruent categorisation trial of the same object, on the robot
+    (render only)."""
+    input:
+        states=lambda w: [
+            f"data/embodied/net{net}/states.npz" for net in EMBODIED_FILM_NETWORKS
+        ],
+        trials=rules.embodied_summary.output.trials,
+        scene=config["scene"],
+        code=package_code("body", "spec", "figures", "io"),
+    output:
+        "data/figures/embodied_filmstrip.png",
+    params:
+        networks=EMBODIED_FILM_NETWORKS,
+        pick=settings(config["figures"]["embodied"]),
+        object_sizes=settings(config["object_sizes_m"]),
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
+    log:
+        "data/logs/embodied/filmstrip.log",
+    benchmark:
+        "data/benchmarks/embodied_filmstrip.tsv"
+    script:
+        "../scripts/embodied_filmstrip.py"

@@ -1,0 +1,36 @@
+"""A congruent and an incongruent categorisation trial of one object, as the robot moved."""
+
+import pandas as pd
+
+from icub_affordance.body import Robot
+from icub_affordance.figures import filmstrip
+from icub_affordance.io import load_npz, redirect_log
+
+with redirect_log(snakemake.log[0]):
+    obj, seq = snakemake.params.pick["object"], int(snakemake.params.pick["sequence"])
+    trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
+    strips = {}
+    for net, path in zip(snakemake.params.networks, snakemake.input.states, strict=True):
+        mine = trials[trials["network"] == int(net)].reset_index(drop=True)
+        hit = mine[
+            (mine["task"] == "categorisation") & (mine["object"] == obj) & (mine["sequence"] == seq)
+        ]
+        if len(hit) != 1:
+            raise ValueError(
+                f"no single categorisation trial of {obj}, sequence {seq}, network {net}"
+            )
+        row = hit.iloc[0]
+        kind = "congruent" if row["congruent"] == "True" else "incongruent"
+        outcome = "held" if row["success"] == "True" else "not held"
+        title = (
+            f"{kind}, network {int(net)}: categorise {obj.replace('_', ' ')} with a "
+            f"{row['target_grip']} grip; touch reads {row['grip_used']}, {outcome}"
+        )
+        states = load_npz(path, required=("qpos",))["qpos"][hit.index[0]]
+        # every other step, the last step, and the state after the lift test
+        frames = [*range(0, len(states) - 2, 2), len(states) - 2, len(states) - 1]
+        strips[title] = [robot.render_state(states[k], "closeup", 320, 240) for k in frames]
+    robot.close()
+    labels = [f"step {k}" for k in frames[:-1]] + ["lift test"]
+    filmstrip(strips, snakemake.output[0], labels=labels)
