@@ -99,7 +99,14 @@ def test_sweep_tables_count_significant_replications():
         return pd.DataFrame(rows)
 
     def anova(p):
-        return {"closed_loop": {"repeated_measures": {"congruency": {"p": p}, "size": {"p": 0.5}}}}
+        return {
+            "closed_loop": {
+                "repeated_measures": {
+                    "congruency": {"p": p, "eta_p2": 0.6 if p < 0.05 else 0.3},
+                    "size": {"p": 0.5, "eta_p2": 0.0},
+                }
+            }
+        }
 
     points = {
         f"s{i}": {
@@ -121,3 +128,5 @@ def test_sweep_tables_count_significant_replications():
     assert summary.loc[0, "replications"] == 3
     assert summary.loc[0, "congruency_n_significant"] == 1
     assert summary.loc[0, "congruency_n_reversed"] == 1
+    assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(0.5)
+
