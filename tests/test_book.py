@@ -26,6 +26,7 @@ def test_every_chapter_is_built(html):
         "training",
         "results",
         "discussion",
+        "robustness",
         "comparison",
         "notes",
         "reproduce",
@@ -95,3 +96,10 @@ def test_a_changed_output_changes_the_book_after_a_rebuild(built, tmp_path):
     result = run_snakemake(copy, "-c1", "book/_build/html/index.html")
     assert result.returncode == 0, result.stderr[-3000:]
     assert "54321.00" in (copy / HTML / "results.html").read_text()
+
+
+def test_without_robustness_the_robustness_page_says_so_and_gives_the_command(built, html):
+    page = html["robustness"]
+    assert "This build did not run the sweep." in page
+    assert "snakemake -c2 --config robustness=True" in page
+    assert "sweep_effects.png" not in page and "<table" not in page  # no numbers invented
