@@ -16,6 +16,13 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 configfile: "config/config.yaml"
 
 
+# `--config robustness=true` reaches Snakemake as the text "true" (only True and False are read
+# as booleans there): say so plainly instead of the schema's bare type error.
+if isinstance(config.get("robustness"), str):
+    raise ValueError(
+        f"config robustness: {config['robustness']!r} is text, not a boolean. On the command line "
+        "write it capitalised, as Snakemake reads booleans: --config robustness=True (or False)."
+    )
 validate(config, "workflow/schemas/config.schema.yaml")
 
 

@@ -1,65 +1,44 @@
 """Does the cost of a sweep grow linearly? Wall time of `snakemake -c2 sweep` for 1, 4 and 10
-replications (cue at the first step), each in a fresh scratch copy of the workflow that reuses
-this checkout's demonstrations, visual maps and SOMs.
+replications (seeds 1..n at the network settings of config/config.yaml), each in a fresh scratch
+copy of the workflow that reuses this checkout's demonstrations, visual maps and SOMs.
 
-    python benchmarks/sweep_cost.py [1 4 10]
+    python benchmarks/sweep_cost.py [1 4 10] [--cores 2] [--output data/benchmarks/sweep_cost.csv]
 
-Prints a table and, last, JSON: replications, seconds and seconds per replication.
+Prints a table and, last, JSON: replications, seconds and seconds per replication. The pipeline
+makes the same table as `data/benchmarks/sweep_cost.csv` when run with `--config robustness=True`
+(rule `sweep_cost`); the measuring is `icub_affordance.sweep_cost`.
 """
 
 from __future__ import annotations
 
+import argparse
 import json
-import shutil
-import subprocess
-import sys
-import tempfile
-import time
 from pathlib import Path
 
 import yaml
 
+from icub_affordance.sweep_cost import measure, write_cost_table
+
 REPO = Path(__file__).resolve().parents[1]
 
 
-def run(replications: int) -> float:
-    with tempfile.TemporaryDirectory() as tmp:
-        work = Path(tmp)
-        for name in ("Snakefile", "workflow", "assets", "src"):
-            (work / name).symlink_to(REPO / name)
-        shutil.copytree(REPO / "config", work / "config")
-        config = yaml.safe_load((work / "config" / "config.yaml").read_text())
-        config["sweep"] |= {
-            "seeds": list(range(1, replications + 1)),
-            "categorisation_cue": ["first_step"],
-        }
-        (work / "config" / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-        # the sweep's inputs, as made by the main run
-        for path in ("data/vision", "data/demos", "data/soms"):
-            shutil.copytree(REPO / path, work / path)
-        cmd = [sys.executable, "-m", "snakemake", "-c2", "sweep", "--quiet"]
-        subprocess.run(cmd + ["--touch"], cwd=work, check=True, capture_output=True)
-        for part in (work / "data" / "sweep").glob("*"):
-            shutil.rmtree(part) if part.is_dir() else part.unlink()
-        start = time.perf_counter()
-        subprocess.run(cmd, cwd=work, check=True, capture_output=True)
-        return time.perf_counter() - start
-
-
 def main() -> None:
-    counts = [int(a) for a in sys.argv[1:]] or [1, 4, 10]
-    seconds = [run(n) for n in counts]
-    print(f"{'replications':>14}{'wall time (s)':>16}{'per replication (s)':>22}")
-    for n, s in zip(counts, seconds, strict=True):
-        print(f"{n:>14}{s:>16.1f}{s / n:>22.1f}")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("replications", nargs="*", type=int, default=[1, 4, 10])
+    parser.add_argument("--cores", type=int, default=2, help="snakemake -c (default 2)")
+    parser.add_argument("--output", type=Path, help="also write the table to this CSV")
+    args = parser.parse_args()
+    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    table = measure(REPO, config, args.replications, args.cores)
+    if args.output:
+        write_cost_table(table, args.output)
+    print(table.round(1).to_string(index=False))
     print(
         json.dumps(
             {
-                "replications": counts,
-                "seconds": [round(s, 1) for s in seconds],
-                "seconds_per_replication": [
-                    round(s / n, 1) for n, s in zip(counts, seconds, strict=True)
-                ],
+                "replications": table["replications"].tolist(),
+                "seconds": table["seconds"].round(1).tolist(),
+                "seconds_per_replication": table["seconds_per_replication"].round(1).tolist(),
             }
         )
     )

@@ -26,6 +26,7 @@ def test_every_chapter_is_built(html):
         "training",
         "results",
         "discussion",
+        "robustness",
         "comparison",
         "notes",
         "reproduce",
@@ -89,3 +90,16 @@ def test_a_changed_output_changes_the_book_after_a_rebuild(built, tmp_path):
     assert result.returncode == 0, result.stderr[-3000:]
     assert "12345.68" in (copy / HTML / "results.html").read_text()
     assert "12345.68" not in (built / HTML / "results.html").read_text()
+    # and again in the same place: only the data changed, not the page, yet the page follows
+    anova["closed_loop"]["repeated_measures"]["congruency"]["F"] = 54321.0
+    anova_path.write_text(json.dumps(anova))
+    result = run_snakemake(copy, "-c1", "book/_build/html/index.html")
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert "54321.00" in (copy / HTML / "results.html").read_text()
+
+
+def test_without_robustness_the_robustness_page_says_so_and_gives_the_command(built, html):
+    page = html["robustness"]
+    assert "This build did not run the sweep." in page
+    assert "snakemake -c2 --config robustness=True" in page
+    assert "sweep_effects.png" not in page and "<table" not in page  # no numbers invented

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import REPO, run_snakemake, scratch_workflow
+from conftest import REPO, TEST_CONFIG, run_snakemake, scratch_workflow
 
 COMPARED = [
     "data/demos/demos.npz",
@@ -99,7 +99,14 @@ def test_sweep_tables_count_significant_replications():
         return pd.DataFrame(rows)
 
     def anova(p):
-        return {"closed_loop": {"repeated_measures": {"congruency": {"p": p}, "size": {"p": 0.5}}}}
+        return {
+            "closed_loop": {
+                "repeated_measures": {
+                    "congruency": {"p": p, "eta_p2": 0.6 if p < 0.05 else 0.3},
+                    "size": {"p": 0.5, "eta_p2": 0.0},
+                }
+            }
+        }
 
     points = {
         f"s{i}": {
@@ -121,3 +128,170 @@ def test_sweep_tables_count_significant_replications():
     assert summary.loc[0, "replications"] == 3
     assert summary.loc[0, "congruency_n_significant"] == 1
     assert summary.loc[0, "congruency_n_reversed"] == 1
+    assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(0.5)
+
+
+def dry_run(workdir, *args):
+    """Planned job counts and the inputs of the book job, from a dry run on the test config."""
+    result = run_snakemake(workdir, "-n", *args)
+    assert result.returncode == 0, result.stderr[-3000:]
+    counts = {}
+    for line in result.stdout.split("Job stats:")[-1].splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[1].isdigit() and parts[0] != "total":
+            counts[parts[0]] = int(parts[1])
+    block = result.stdout.split("rule book:")[1]
+    book_inputs = block.split("input:")[1].split("\n")[0].split(", ")
+    return counts, [name.strip() for name in book_inputs]
+
+
+def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
+    import yaml
+
+    from icub_affordance.report import sweep_size
+
+    workdir = scratch_workflow(tmp_path)
+    config = yaml.safe_load(TEST_CONFIG.read_text())
+    points, networks = sweep_size(config)
+    counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
+    assert counts["sweep_train"] == networks == points * config["network"]["networks"]
+    assert counts["sweep_evaluate"] == counts["sweep_stats"] == points
+    assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
+    assert counts["book"] == 1
+    for output in (
+        "data/sweep/points.csv",
+        "data/sweep/summary.csv",
+        "data/sweep/effects.png",
+        "data/benchmarks/sweep_cost.csv",
+    ):
+        assert output in book_inputs, output
+
+
+def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
+    counts, book_inputs = dry_run(scratch_workflow(tmp_path))
+    assert counts["book"] == 1
+    assert not [rule for rule in counts if rule.startswith("sweep")], counts
+    assert not [n for n in book_inputs if n.startswith("data/") and "sweep" in n], book_inputs
+
+
+def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_path):
+    result = run_snakemake(scratch_workflow(tmp_path), "-n", "--config", "robustness=true")
+    assert result.returncode != 0
+    assert "--config robustness=True" in result.stdout + result.stderr
+    assert not (tmp_path / "data").exists()
+
+
+def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
+    import yaml
+
+    from icub_affordance.sweep_cost import SWEEP_INPUTS, measure
+
+    config = yaml.safe_load(TEST_CONFIG.read_text())
+    table = measure(built, config, [1], cores=2, log=lambda _: None)
+    assert table["replications"].tolist() == [1] and table["cores"].tolist() == [2]
+    assert 0 < table["seconds"].iloc[0] < 300
+    assert table["seconds_per_replication"].iloc[0] == table["seconds"].iloc[0]
+    assert not (built / "data" / "sweep").exists()  # the copy ran it, not the checkout
+    with pytest.raises(RuntimeError, match="soms"):  # a missing input would be timed too
+        measure(built, config, [1], cores=2, inputs=SWEEP_INPUTS[:2])
+
+
+def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
+    from icub_affordance.sweep_cost import cost_table, read_cost_table, write_cost_table
+
+    table = cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2)
+    assert table["seconds_per_replication"].tolist() == [20.0, 12.5, 11.0]
+    path = tmp_path / "benchmarks" / "sweep_cost.csv"
+    write_cost_table(table, path)
+    back = read_cost_table(path)
+    assert back.columns.tolist() == table.columns.tolist()
+    assert back["seconds"].tolist() == [20.0, 50.0, 110.0]
+    assert [p.name for p in path.parent.iterdir()] == ["sweep_cost.csv"]  # no temporary left
+    path.write_text("replications,seconds\n1,2\n")
+    with pytest.raises(ValueError, match="seconds_per_replication"):
+        read_cost_table(path)
+    with pytest.raises(FileNotFoundError, match="robustness=True"):
+        read_cost_table(tmp_path / "missing.csv")
+
+
+@pytest.mark.parametrize("counts", [[], [0, 4], [1, 1], [1.5], ["4"]])
+def test_bad_replication_counts_are_refused(counts):
+    from icub_affordance.sweep_cost import check_counts
+
+    with pytest.raises(ValueError, match="sweep_cost"):
+        check_counts(counts)
+
+
+def test_the_cost_config_times_replications_of_the_main_runs_networks():
+    import yaml
+
+    from icub_affordance.sweep_cost import cost_config
+
+    config = yaml.safe_load(TEST_CONFIG.read_text()) | {"robustness": True}
+    scratch = cost_config(config, 3)
+    assert scratch["sweep"] == {
+        "seeds": [1, 2, 3],
+        "learning_rate": [config["network"]["learning_rate"]],
+        "hidden": [config["network"]["hidden"]],
+        "categorisation_cue": [config["network"]["categorisation_cue"]],
+    }
+    assert scratch["robustness"] is False and config["robustness"] is True
+
+
+def test_the_cost_words_follow_the_numbers():
+    from icub_affordance.report import cost_findings
+    from icub_affordance.sweep_cost import cost_table
+
+    linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
+    assert "10.0 s per replication plus 10.0 s fixed" in linear
+    assert "grows linearly" in linear
+    bent = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 400.0], cores=2))
+    assert "not well described by a straight line" in bent
+    two = cost_findings(cost_table([1, 2], [20.0, 30.0], cores=2))
+    assert "it takes three to test linearity" in two and "grows linearly" not in two
+
+
+def test_the_sweep_words_follow_the_numbers():
+    import pandas as pd
+
+    from icub_affordance.report import sweep_findings, sweep_summary_display
+
+    row = {
+        "learning_rate": 0.075,
+        "hidden": 10,
+        "categorisation_cue": "first_step",
+        "replications": 10,
+        "congruency_effect": 0.03,
+        "congruency_ci_low": 0.02,
+        "congruency_ci_high": 0.04,
+        "congruency_eta_p2": 0.7,
+        "congruency_n_significant": 9,
+        "congruency_n_reversed": 0,
+        "size_effect": -0.02,
+        "size_ci_low": -0.03,
+        "size_ci_high": -0.01,
+        "size_eta_p2": 0.4,
+        "size_n_significant": 0,
+        "size_n_reversed": 6,
+    }
+    summary = pd.DataFrame([row, row | {"categorisation_cue": "all_steps", "size_ci_high": 0.01}])
+    text = sweep_findings(summary)
+    assert "congruent faster than incongruent, the paper's direction, by 0.0300" in text
+    assert "in 9 of 10 replications, significantly reversed in 0" in text
+    assert "large objects slower than small objects, against the paper" in text
+    assert "no consistent difference between large objects and small objects" in text
+    table = sweep_summary_display(summary)
+    assert len(table) == 4  # two settings x two effects
+    assert table.loc[0, "mean difference [95% CI]"] == "0.0300 [0.0200, 0.0400]"
+    assert table.loc[1, "reversed"] == "6 of 10"
+
+
+def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers():
+    import yaml
+
+    from icub_affordance.report import ROBUSTNESS_COMMAND, robustness_not_run
+
+    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    text = robustness_not_run(config)
+    assert "did not run the sweep" in text and ROBUSTNESS_COMMAND in text
+    assert ROBUSTNESS_COMMAND == "snakemake -c2 --config robustness=True"

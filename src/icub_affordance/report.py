@@ -8,6 +8,7 @@ the pipeline's own output on that run.
 from __future__ import annotations
 
 import json
+import math
 import shutil
 import subprocess
 from datetime import UTC, datetime
@@ -117,3 +118,162 @@ def read_benchmarks(directory: Path) -> dict[str, str]:
         str(path.relative_to(directory).with_suffix("")): path.read_text()
         for path in sorted(Path(directory).rglob("*.tsv"))
     }
+
+
+# The robustness page (book/robustness.md): the sweep and its cost, or a plain note that this
+# build did not run them.
+
+ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
+CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
+EFFECTS = {
+    "congruency": ("congruent", "incongruent"),
+    "size": ("large objects", "small objects"),
+}
+
+
+def sweep_size(config: dict) -> tuple[int, int]:
+    """Points of the config's sweep and networks trained in all."""
+    sweep = config["sweep"]
+    points = 1
+    for key in ("seeds", "learning_rate", "hidden", "categorisation_cue"):
+        points *= len(sweep[key])
+    return points, points * config["network"]["networks"]
+
+
+def robustness_not_run(config: dict) -> str:
+    """What the page says when this build did not run the sweep (MyST)."""
+    points, networks = sweep_size(config)
+    return (
+        "```{important}\n"
+        "**This build did not run the sweep.** It was made with `robustness: false` (the "
+        "default), which keeps the run to the paper's single replication, so this page has no "
+        "results and no cost table. To add them, run the pipeline with\n\n"
+        f"    {ROBUSTNESS_COMMAND}\n\n"
+        f"which trains the {points} points of the config's `sweep` section ({networks} networks "
+        "in all), times the sweep for the numbers of replications in `sweep_cost`, and rebuilds "
+        "this book with both.\n"
+        "```"
+    )
+
+
+def fmt_interval(mean: float, low: float, high: float, digits: int = 4) -> str:
+    """A mean with its interval, or the mean alone when there is none (one replication)."""
+    if math.isnan(low) or math.isnan(high):
+        return f"{mean:.{digits}f}"
+    return f"{mean:.{digits}f} [{low:.{digits}f}, {high:.{digits}f}]"
+
+
+def setting_label(row) -> str:
+    return (
+        f"{CUES.get(row['categorisation_cue'], row['categorisation_cue'])}, learning rate "
+        f"{row['learning_rate']:g}, {row['hidden']:.0f} hidden units"
+    )
+
+
+def sweep_summary_display(summary):
+    """The per-setting summary as the book shows it: one row per setting and effect, with the
+    mean difference and its 95% interval over replications, the mean partial eta squared, and
+    how many replications were significant in the paper's direction and how many reversed."""
+    import pandas as pd
+
+    rows = []
+    for _, r in summary.iterrows():
+        n = int(r["replications"])
+        for effect in EFFECTS:
+            rows.append(
+                {
+                    "cue": r["categorisation_cue"],
+                    "learning rate": f"{r['learning_rate']:g}",
+                    "hidden": f"{r['hidden']:.0f}",
+                    "effect": effect,
+                    "mean difference [95% CI]": fmt_interval(
+                        r[f"{effect}_effect"], r[f"{effect}_ci_low"], r[f"{effect}_ci_high"]
+                    ),
+                    "partial η² (mean)": f"{r[f'{effect}_eta_p2']:.2f}",
+                    "significant": f"{r[f'{effect}_n_significant']:.0f} of {n}",
+                    "reversed": f"{r[f'{effect}_n_reversed']:.0f} of {n}",
+                }
+            )
+    return pd.DataFrame(rows)
+
+
+def effect_sentence(row, effect: str) -> str:
+    """One effect of one setting over its replications, in words, from the summary row."""
+    first, second = EFFECTS[effect]
+    n = int(row["replications"])
+    mean, low, high = row[f"{effect}_effect"], row[f"{effect}_ci_low"], row[f"{effect}_ci_high"]
+    interval = fmt_interval(mean, low, high)
+    if n < 2:
+        direction = (
+            f"{first} {'faster' if mean > 0 else 'slower'} than {second} by {interval} "
+            "(one replication, so no interval)"
+        )
+    elif low > 0:
+        direction = f"{first} faster than {second}, the paper's direction, by {interval}"
+    elif high < 0:
+        direction = f"{first} slower than {second}, against the paper, by {interval}"
+    else:
+        direction = (
+            f"no consistent difference between {first} and {second} ({interval}: the interval "
+            "includes zero)"
+        )
+    sig, rev = int(row[f"{effect}_n_significant"]), int(row[f"{effect}_n_reversed"])
+    return (
+        f"**{effect.capitalize()}:** {direction}. Significant (p < .05) in the paper's direction "
+        f"in {sig} of {n} replication{'s' if n != 1 else ''}, significantly reversed in {rev}; "
+        f"mean partial η² {row[f'{effect}_eta_p2']:.2f}."
+    )
+
+
+def sweep_findings(summary) -> str:
+    """What the sweep shows, per setting, in words generated from the summary (MyST)."""
+    paragraphs = []
+    for _, row in summary.iterrows():
+        paragraphs.append(
+            f"*With {setting_label(row)}* ({row['replications']:.0f} replications): "
+            + " ".join(effect_sentence(row, effect) for effect in EFFECTS)
+        )
+    return "\n\n".join(paragraphs)
+
+
+def cost_findings(cost) -> str:
+    """How the sweep's wall time grows with the number of replications, in words (MyST)."""
+    import numpy as np
+
+    cost = cost.sort_values("replications")
+    n = cost["replications"].to_numpy(dtype=float)
+    s = cost["seconds"].to_numpy(dtype=float)
+    cores = int(cost["cores"].iloc[0])
+    machine = int(cost["machine_cores"].iloc[0])
+    text = (
+        f"Each run is `snakemake -c{cores} sweep` in a scratch copy of the workflow on this "
+        f"run's machine ({machine} cores), timed from start to end, for replications of the "
+        "main run's network settings (seeds 1 to n)."
+    )
+    if len(n) < 2:
+        return text + " With a single measurement there is no growth to describe."
+    text += (
+        f" From {n[0]:.0f} to {n[-1]:.0f} replications the wall time grew "
+        f"{s[-1] / s[0]:.1f}-fold for {n[-1] / n[0]:g} times the work, and the time per "
+        f"replication went from {s[0] / n[0]:.1f} s to {s[-1] / n[-1]:.1f} s."
+    )
+    if len(n) < 3:
+        return text + " Two measurements always lie on a line: it takes three to test linearity."
+    slope, intercept = np.polyfit(n, s, 1)
+    fitted = intercept + slope * n
+    departure = float(np.max(np.abs(s - fitted) / s))
+    fixed = (
+        f"plus {intercept:.1f} s fixed (Snakemake's start-up and DAG, the sweep's summary and "
+        "figure)"
+        if intercept >= 0
+        else f"minus {-intercept:.1f} s"
+    )
+    text += (
+        f" A straight line through the {len(n)} measurements gives {slope:.1f} s per replication "
+        f"{fixed}; no measurement is further than {100 * departure:.0f}% from it"
+    )
+    if departure <= 0.1 and slope > 0:
+        text += ", so the cost grows linearly with the number of replications."
+    else:
+        text += ", so the growth is not well described by a straight line."
+    return text

@@ -147,20 +147,24 @@ def mean_ci(values: np.ndarray, level: float = 0.95) -> tuple[float, float, floa
 def sweep_tables(
     points: dict[str, dict], trials: dict[str, pd.DataFrame], anovas: dict[str, dict]
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """One row per point (effects with 95% intervals over its networks, RM-ANOVA p), and one row
-    per setting (over its replications: mean effect with 95% interval, how many significant)."""
+    """One row per point (effects with 95% intervals over its networks, RM-ANOVA p and partial
+    eta squared), and one row per setting (over its replications: mean effect with 95% interval,
+    mean partial eta squared, how many significant in the paper's direction, how many reversed).
+    Closed-loop categorisation trials, as the book's main analysis."""
     rows = []
     for name, point in points.items():
         effects = network_effects(trials[name])
         row = {"point": name, **point}
         for effect, key in (("congruency", "congruency_effect"), ("size", "size_effect")):
             mean, lo, hi = mean_ci(effects[key].to_numpy())
-            p = anovas[name]["closed_loop"]["repeated_measures"][effect]["p"]
+            anova = anovas[name]["closed_loop"]["repeated_measures"][effect]
+            p = anova["p"]
             row |= {
                 f"{effect}_effect": mean,
                 f"{effect}_ci_low": lo,
                 f"{effect}_ci_high": hi,
                 f"{effect}_p": p,
+                f"{effect}_eta_p2": anova["eta_p2"],
                 f"{effect}_significant": bool(p < 0.05 and mean > 0),
                 f"{effect}_reversed": bool(p < 0.05 and mean < 0),
             }
@@ -176,6 +180,7 @@ def sweep_tables(
                 f"{effect}_effect": mean,
                 f"{effect}_ci_low": lo,
                 f"{effect}_ci_high": hi,
+                f"{effect}_eta_p2": float(group[f"{effect}_eta_p2"].mean()),
                 f"{effect}_n_significant": int(group[f"{effect}_significant"].sum()),
                 f"{effect}_n_reversed": int(group[f"{effect}_reversed"].sum()),
             }

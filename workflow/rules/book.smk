@@ -31,6 +31,16 @@ BOOK_DATA = {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
 
+# With `--config robustness=True` the book also shows the sweep and its cost (robustness.md);
+# without, that page says that this build did not run them.
+if config["robustness"]:
+    BOOK_DATA |= {
+        "sweep_points.csv": "data/sweep/points.csv",
+        "sweep_summary.csv": "data/sweep/summary.csv",
+        "sweep_effects.png": "data/sweep/effects.png",
+        "sweep_cost.csv": "data/benchmarks/sweep_cost.csv",
+    }
+
 
 rule rulegraph:
     """The DAG's rules and their dependencies, for the book's reproduction page."""
@@ -57,7 +67,7 @@ rule book:
         data=list(BOOK_DATA.values()),
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
-        code=package_code("report", "figures", "som"),
+        code=package_code("report", "figures", "som", "sweep_cost"),
     output:
         "book/_build/html/index.html",
     params:

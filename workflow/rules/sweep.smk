@@ -150,3 +150,38 @@ rule sweep:
     input:
         rules.sweep_summary.output,
         rules.sweep_figure.output,
+
+
+rule sweep_cost:
+    """Does the sweep's cost grow linearly? Wall time of `snakemake sweep` for each number of
+    replications in config `sweep_cost`, in scratch copies (in the book with robustness=True)."""
+    input:
+        data=[
+            *rules.visual_maps.output,
+            rules.soms.output[0],
+            *rules.demos.output,
+            *rules.demos.input.parts,
+        ],
+        rules="workflow/rules/sweep.smk",
+        code=package_code("body", "jordan", "som", "train", "evaluate", "stats", "figures", "io")
+        + ["src/icub_affordance/sweep_cost.py"],
+    output:
+        "data/benchmarks/sweep_cost.csv",
+    params:
+        # what the timed sweeps depend on: the scratch config is this run's (snakemake.config)
+        # with the sweep replaced by seeds 1..n at these network settings
+        network=settings(config["network"]),
+        replications=config["sweep_cost"],
+    # all the run's cores: the timed runs are nested `snakemake -c{threads}`, and nothing else
+    # should run beside them and slow them down (a function, so that commands that give no
+    # cores, such as --rulegraph, can still read this file)
+    threads: lambda wildcards: workflow.cores
+    resources:
+        mem_mb=2000,
+        runtime=120,
+    log:
+        "data/logs/sweep/cost.log",
+    benchmark:
+        "data/benchmarks/sweep/cost.tsv"
+    script:
+        "../scripts/sweep_cost.py"

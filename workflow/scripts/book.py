@@ -21,6 +21,8 @@ with redirect_log(snakemake.log[0]):
     }
     write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
+    # --all: every page, every time. Sphinx rebuilds only pages whose source changed, and the
+    # pages' sources rarely do: what changes is the data in book/_data they read when executed.
     result = subprocess.run(
         [jupyter_book, "build", "--all", "-W", "-n", "--keep-going", str(book)],
         capture_output=True,
