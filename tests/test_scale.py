@@ -131,8 +131,8 @@ def test_sweep_tables_count_significant_replications():
     assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(0.5)
 
 
-def dry_run(workdir, *args):
-    """Planned job counts and the inputs of the book job, from a dry run on the test config."""
+def dry_run(workdir, *args, rule="book"):
+    """Planned job counts and the inputs of one rule's job, from a dry run on the test config."""
     result = run_snakemake(workdir, "-n", *args)
     assert result.returncode == 0, result.stderr[-3000:]
     counts = {}
@@ -140,9 +140,9 @@ def dry_run(workdir, *args):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit() and parts[0] != "total":
             counts[parts[0]] = int(parts[1])
-    block = result.stdout.split("rule book:")[1]
-    book_inputs = block.split("input:")[1].split("\n")[0].split(", ")
-    return counts, [name.strip() for name in book_inputs]
+    block = result.stdout.split(f"rule {rule}:")[1]
+    inputs = block.split("input:")[1].split("\n")[0].split(", ")
+    return counts, [name.strip() for name in inputs]
 
 
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
@@ -165,6 +165,11 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         "data/benchmarks/sweep_cost.csv",
     ):
         assert output in book_inputs, output
+    # timed last, with nothing beside it: after the sweep and everything else the book shows
+    _, cost_inputs = dry_run(workdir, "--config", "robustness=True", rule="sweep_cost")
+    for name in book_inputs:
+        if name.startswith("data/") and name != "data/benchmarks/sweep_cost.csv":
+            assert name in cost_inputs, name
 
 
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
@@ -191,6 +196,7 @@ def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
     assert table["replications"].tolist() == [1] and table["cores"].tolist() == [2]
     assert 0 < table["seconds"].iloc[0] < 300
     assert table["seconds_per_replication"].iloc[0] == table["seconds"].iloc[0]
+    assert 0 <= table["other_load"].iloc[0] <= table["machine_cores"].iloc[0]
     assert not (built / "data" / "sweep").exists()  # the copy ran it, not the checkout
     with pytest.raises(RuntimeError, match="soms"):  # a missing input would be timed too
         measure(built, config, [1], cores=2, inputs=SWEEP_INPUTS[:2])
@@ -199,13 +205,14 @@ def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
 def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
     from icub_affordance.sweep_cost import cost_table, read_cost_table, write_cost_table
 
-    table = cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2)
+    table = cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2, other_load=[0.0, 0.01, 0.5])
     assert table["seconds_per_replication"].tolist() == [20.0, 12.5, 11.0]
     path = tmp_path / "benchmarks" / "sweep_cost.csv"
     write_cost_table(table, path)
     back = read_cost_table(path)
     assert back.columns.tolist() == table.columns.tolist()
     assert back["seconds"].tolist() == [20.0, 50.0, 110.0]
+    assert back["other_load"].tolist() == [0.0, 0.01, 0.5]
     assert [p.name for p in path.parent.iterdir()] == ["sweep_cost.csv"]  # no temporary left
     path.write_text("replications,seconds\n1,2\n")
     with pytest.raises(ValueError, match="seconds_per_replication"):
@@ -243,12 +250,19 @@ def test_the_cost_words_follow_the_numbers():
     from icub_affordance.sweep_cost import cost_table
 
     linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
-    assert "10.0 s per replication plus 10.0 s fixed" in linear
-    assert "grows linearly" in linear
-    bent = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 400.0], cores=2))
-    assert "not well described by a straight line" in bent
+    assert "10.0 s per replication plus 10.0 s" in linear
+    assert "10.0 s between 1 and 4, 10.0 s between 4 and 10 replications" in linear
+    assert "So the cost grows linearly" in linear
+    faster = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 400.0], cores=2))
+    assert "grows faster than linearly" in faster
+    slower = cost_findings(cost_table([1, 4, 10], [20.0, 80.0, 140.0], cores=2))
+    assert "grows no faster than linearly" in slower and "50% less" in slower
+    quiet = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 0.0]))
+    assert "Nothing else loaded the machine" in quiet and "shared" not in quiet
+    shared = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 1.2]))
+    assert "while 10 replications were timed, other work kept 1.2 of its cores busy" in shared
     two = cost_findings(cost_table([1, 2], [20.0, 30.0], cores=2))
-    assert "it takes three to test linearity" in two and "grows linearly" not in two
+    assert "it takes three to tell" in two and "So the cost" not in two
 
 
 def test_the_sweep_words_follow_the_numbers():
@@ -276,7 +290,9 @@ def test_the_sweep_words_follow_the_numbers():
     }
     summary = pd.DataFrame([row, row | {"categorisation_cue": "all_steps", "size_ci_high": 0.01}])
     text = sweep_findings(summary)
-    assert "congruent faster than incongruent, the paper's direction, by 0.0300" in text
+    assert (
+        "congruent faster than incongruent, the paper's direction (mean difference 0.0300" in text
+    )
     assert "in 9 of 10 replications, significantly reversed in 0" in text
     assert "large objects slower than small objects, against the paper" in text
     assert "no consistent difference between large objects and small objects" in text

@@ -204,24 +204,18 @@ def effect_sentence(row, effect: str) -> str:
     mean, low, high = row[f"{effect}_effect"], row[f"{effect}_ci_low"], row[f"{effect}_ci_high"]
     interval = fmt_interval(mean, low, high)
     if n < 2:
-        direction = (
-            f"{first} {'faster' if mean > 0 else 'slower'} than {second} by {interval} "
-            "(one replication, so no interval)"
-        )
+        direction = f"{first} {'faster' if mean > 0 else 'slower'} than {second} (one replication)"
     elif low > 0:
-        direction = f"{first} faster than {second}, the paper's direction, by {interval}"
+        direction = f"{first} faster than {second}, the paper's direction"
     elif high < 0:
-        direction = f"{first} slower than {second}, against the paper, by {interval}"
+        direction = f"{first} slower than {second}, against the paper"
     else:
-        direction = (
-            f"no consistent difference between {first} and {second} ({interval}: the interval "
-            "includes zero)"
-        )
+        direction = f"no consistent difference between {first} and {second}"
     sig, rev = int(row[f"{effect}_n_significant"]), int(row[f"{effect}_n_reversed"])
     return (
-        f"**{effect.capitalize()}:** {direction}. Significant (p < .05) in the paper's direction "
-        f"in {sig} of {n} replication{'s' if n != 1 else ''}, significantly reversed in {rev}; "
-        f"mean partial η² {row[f'{effect}_eta_p2']:.2f}."
+        f"**{effect.capitalize()}:** {direction} (mean difference {interval}); significant "
+        f"(p < .05) in the paper's direction in {sig} of {n} replication{'s' if n != 1 else ''}, "
+        f"significantly reversed in {rev}; mean partial η² {row[f'{effect}_eta_p2']:.2f}."
     )
 
 
@@ -230,8 +224,8 @@ def sweep_findings(summary) -> str:
     paragraphs = []
     for _, row in summary.iterrows():
         paragraphs.append(
-            f"*With {setting_label(row)}* ({row['replications']:.0f} replications): "
-            + " ".join(effect_sentence(row, effect) for effect in EFFECTS)
+            f"*With {setting_label(row)}* ({row['replications']:.0f} replications):\n\n"
+            + "\n".join(f"- {effect_sentence(row, effect)}" for effect in EFFECTS)
         )
     return "\n\n".join(paragraphs)
 
@@ -247,33 +241,62 @@ def cost_findings(cost) -> str:
     machine = int(cost["machine_cores"].iloc[0])
     text = (
         f"Each run is `snakemake -c{cores} sweep` in a scratch copy of the workflow on this "
-        f"run's machine ({machine} cores), timed from start to end, for replications of the "
-        "main run's network settings (seeds 1 to n)."
+        f"run's machine ({machine} cores), timed from start to end with nothing else of the "
+        "pipeline running, for replications of the main run's network settings (seeds 1 to n)."
     )
+    other = cost["other_load"].to_numpy(dtype=float)
+    if not np.isnan(other).all():
+        worst = int(np.nanargmax(other))
+        if other[worst] > 0.25:
+            text += (
+                f" The machine was shared: while {n[worst]:.0f} replications were timed, other "
+                f"work kept {other[worst]:.1f} of its cores busy on average (column *other "
+                "load*), which lengthens that time; the growth below must be read with that in "
+                "mind."
+            )
+        else:
+            text += (
+                f" Nothing else loaded the machine meanwhile (other load at most "
+                f"{np.nanmax(other):.2f} cores)."
+            )
     if len(n) < 2:
         return text + " With a single measurement there is no growth to describe."
+    marginal = np.diff(s) / np.diff(n)
+    steps = ", ".join(
+        f"{m:.1f} s between {a:.0f} and {b:.0f}"
+        for m, a, b in zip(marginal, n[:-1], n[1:], strict=True)
+    )
     text += (
         f" From {n[0]:.0f} to {n[-1]:.0f} replications the wall time grew "
-        f"{s[-1] / s[0]:.1f}-fold for {n[-1] / n[0]:g} times the work, and the time per "
-        f"replication went from {s[0] / n[0]:.1f} s to {s[-1] / n[-1]:.1f} s."
+        f"{s[-1] / s[0]:.1f}-fold for {n[-1] / n[0]:g} times the work; the time per replication "
+        f"went from {s[0] / n[0]:.1f} s to {s[-1] / n[-1]:.1f} s, and each added replication "
+        f"cost {steps} replications."
     )
-    if len(n) < 3:
-        return text + " Two measurements always lie on a line: it takes three to test linearity."
-    slope, intercept = np.polyfit(n, s, 1)
-    fitted = intercept + slope * n
-    departure = float(np.max(np.abs(s - fitted) / s))
-    fixed = (
-        f"plus {intercept:.1f} s fixed (Snakemake's start-up and DAG, the sweep's summary and "
-        "figure)"
-        if intercept >= 0
-        else f"minus {-intercept:.1f} s"
-    )
-    text += (
-        f" A straight line through the {len(n)} measurements gives {slope:.1f} s per replication "
-        f"{fixed}; no measurement is further than {100 * departure:.0f}% from it"
-    )
-    if departure <= 0.1 and slope > 0:
-        text += ", so the cost grows linearly with the number of replications."
+    if len(n) >= 3:
+        slope, intercept = np.polyfit(n, s, 1)
+        off = np.abs(s - (intercept + slope * n)) / s
+        sign = "plus" if intercept >= 0 else "minus"
+        text += (
+            f" A straight line through the {len(n)} measurements gives {slope:.1f} s per "
+            f"replication {sign} {abs(intercept):.1f} s; the measurement furthest from it is "
+            f"{100 * off.max():.0f}% off (at {n[off.argmax()]:.0f} replications)."
+        )
+    change = marginal[-1] / marginal[0] - 1
+    if len(marginal) < 2:
+        text += (
+            " Two measurements always lie on a line: it takes three to tell whether the cost "
+            "grows linearly."
+        )
+    elif abs(change) <= 0.1:
+        text += " So the cost grows linearly: every added replication costs about the same."
+    elif change < 0:
+        text += (
+            f" So the cost grows no faster than linearly: an added replication cost "
+            f"{100 * -change:.0f}% less in the larger sweeps."
+        )
     else:
-        text += ", so the growth is not well described by a straight line."
+        text += (
+            f" So the cost grows faster than linearly: an added replication cost "
+            f"{100 * change:.0f}% more in the larger sweeps."
+        )
     return text

@@ -24,7 +24,32 @@ from .io import atomic_path
 
 LINKED = ("Snakefile", "workflow", "assets", "src")
 SWEEP_INPUTS = ("data/vision", "data/demos", "data/soms")
-COLUMNS = ["replications", "seconds", "seconds_per_replication", "cores", "machine_cores"]
+COLUMNS = [
+    "replications",
+    "seconds",
+    "seconds_per_replication",
+    "cores",
+    "machine_cores",
+    "other_load",
+]
+
+
+def busy_cpu_seconds() -> float:
+    """CPU seconds the whole machine has been busy since boot (Linux /proc/stat), or NaN."""
+    try:
+        ticks = [int(x) for x in Path("/proc/stat").read_text().split("\n", 1)[0].split()[1:9]]
+    except (OSError, ValueError):
+        return float("nan")
+    idle = ticks[3] + ticks[4]  # idle and waiting for I/O
+    return (sum(ticks) - idle) / os.sysconf("SC_CLK_TCK")
+
+
+def children_cpu_seconds() -> float:
+    """CPU seconds used by this process's finished children and their descendants."""
+    import resource
+
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def check_counts(counts: Iterable[object]) -> list[int]:
@@ -80,8 +105,11 @@ def time_sweep(
     replications: int,
     cores: int,
     inputs: Sequence[str | os.PathLike[str]] = SWEEP_INPUTS,
-) -> float:
-    """Wall time (s) of `snakemake -c{cores} sweep` for n replications in a scratch copy.
+) -> tuple[float, float]:
+    """Wall time (s) of `snakemake -c{cores} sweep` for n replications in a scratch copy, and
+    the other load meanwhile: how many cores, on average, were busy with anything else (the
+    machine's busy CPU time less the timed run's own, per second). On a shared machine that
+    tells a clean measurement from a disturbed one.
 
     ``inputs`` are the files or folders, relative to ``repo``, of the sweep's inputs.
     """
@@ -122,13 +150,22 @@ def time_sweep(
                 f"{what}: the scratch run would run {plan}, not only the sweep's rules "
                 f"(also {others}); the sweep's inputs in {repo} may be incomplete."
             )
+        busy, own = busy_cpu_seconds(), children_cpu_seconds()
         start = time.perf_counter()
         _snakemake(cmd, work, what)
-        return time.perf_counter() - start
+        seconds = time.perf_counter() - start
+        other = (busy_cpu_seconds() - busy) - (children_cpu_seconds() - own)
+        return seconds, max(other, 0.0) / seconds
 
 
-def cost_table(counts: Sequence[int], seconds: Sequence[float], cores: int) -> pd.DataFrame:
-    """One row per measurement: replications, wall time, wall time per replication, cores."""
+def cost_table(
+    counts: Sequence[int],
+    seconds: Sequence[float],
+    cores: int,
+    other_load: Sequence[float] | None = None,
+) -> pd.DataFrame:
+    """One row per measurement: replications, wall time, wall time per replication, the cores
+    given and the machine's, and the other load meanwhile (cores busy with other work)."""
     counts = check_counts(counts)
     if len(seconds) != len(counts):
         raise ValueError(f"{len(counts)} replication counts but {len(seconds)} wall times")
@@ -139,6 +176,7 @@ def cost_table(counts: Sequence[int], seconds: Sequence[float], cores: int) -> p
             "seconds_per_replication": [float(s) / n for s, n in zip(seconds, counts, strict=True)],
             "cores": int(cores),
             "machine_cores": os.cpu_count() or 0,
+            "other_load": [float("nan")] * len(counts) if other_load is None else other_load,
         },
         columns=COLUMNS,
     )
@@ -154,11 +192,13 @@ def measure(
 ) -> pd.DataFrame:
     """Time the sweep for each number of replications; the cost table."""
     counts = check_counts(counts)
-    seconds = []
+    seconds, other = [], []
     for n in counts:
-        seconds.append(time_sweep(repo, config, n, cores, inputs))
-        log(f"{n} replications: {seconds[-1]:.1f} s at -c{cores}")
-    return cost_table(counts, seconds, cores)
+        s, o = time_sweep(repo, config, n, cores, inputs)
+        seconds.append(s)
+        other.append(o)
+        log(f"{n} replication(s): {s:.1f} s at -c{cores}; other load meanwhile {o:.2f} cores")
+    return cost_table(counts, seconds, cores, other)
 
 
 def write_cost_table(table: pd.DataFrame, path: str | os.PathLike[str]) -> None:
