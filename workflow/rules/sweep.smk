@@ -4,6 +4,7 @@
 # A point is one seed and one value of each swept setting; it trains its own networks (the
 # demonstrations, visual maps and SOMs are the main run's), tests them and runs the ANOVAs.
 import itertools
+import re
 
 
 def _sweep_points():
@@ -28,7 +29,7 @@ def point_network(wildcards):
 
 
 wildcard_constraints:
-    point="|".join(POINTS) or "none",
+    point="|".join(map(re.escape, POINTS)) or "none",  # names hold dots (lr0.075)
 
 
 rule sweep_train:
