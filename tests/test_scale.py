@@ -250,13 +250,13 @@ def test_the_cost_words_follow_the_numbers():
     from icub_affordance.sweep_cost import cost_table
 
     linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
-    assert "10.0 s per replication plus 10.0 s" in linear
+    assert "10.0 s per replication and an intercept of 10.0 s" in linear
     assert "10.0 s between 1 and 4, 10.0 s between 4 and 10 replications" in linear
-    assert "So the cost grows linearly" in linear
+    assert "So the cost grew linearly" in linear
     faster = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 400.0], cores=2))
-    assert "grows faster than linearly" in faster
+    assert "grew faster than linearly" in faster
     slower = cost_findings(cost_table([1, 4, 10], [20.0, 80.0, 140.0], cores=2))
-    assert "grows no faster than linearly" in slower and "50% less" in slower
+    assert "grew no faster than linearly" in slower and "50% less" in slower
     quiet = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 0.0]))
     assert "Nothing else loaded the machine" in quiet and "shared" not in quiet
     shared = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 1.2]))

@@ -275,11 +275,11 @@ def cost_findings(cost) -> str:
     if len(n) >= 3:
         slope, intercept = np.polyfit(n, s, 1)
         off = np.abs(s - (intercept + slope * n)) / s
-        sign = "plus" if intercept >= 0 else "minus"
+        far = n[off.argmax()]
         text += (
-            f" A straight line through the {len(n)} measurements gives {slope:.1f} s per "
-            f"replication {sign} {abs(intercept):.1f} s; the measurement furthest from it is "
-            f"{100 * off.max():.0f}% off (at {n[off.argmax()]:.0f} replications)."
+            f" A straight line through the {len(n)} measurements has {slope:.1f} s per "
+            f"replication and an intercept of {intercept:.1f} s; the measurement furthest from "
+            f"it is {100 * off.max():.0f}% off (at {far:.0f} replication{'s' if far != 1 else ''})."
         )
     change = marginal[-1] / marginal[0] - 1
     if len(marginal) < 2:
@@ -288,15 +288,20 @@ def cost_findings(cost) -> str:
             "grows linearly."
         )
     elif abs(change) <= 0.1:
-        text += " So the cost grows linearly: every added replication costs about the same."
+        text += " So the cost grew linearly: every added replication cost about the same."
     elif change < 0:
         text += (
-            f" So the cost grows no faster than linearly: an added replication cost "
+            f" So the cost grew no faster than linearly: an added replication cost "
             f"{100 * -change:.0f}% less in the larger sweeps."
         )
     else:
         text += (
-            f" So the cost grows faster than linearly: an added replication cost "
+            f" So the cost grew faster than linearly: an added replication cost "
             f"{100 * change:.0f}% more in the larger sweeps."
+        )
+    if len(marginal) >= 2:
+        text += (
+            " Each number is a single timing, and timings of the same sweep vary from run to "
+            "run, so modest differences between the marginal costs mean little."
         )
     return text
