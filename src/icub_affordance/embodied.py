@@ -16,15 +16,18 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from .body import DOF_MAX_DEG, DOF_MIN_DEG, TOUCH_NAMES, Robot, to_degrees, to_normalised
 from .demos import DEMO_S, DemoConfig, grip_in_contact, grip_used, lift_arm, move
 from .evaluate import TrialSet, trial_row
 from .jordan import Weights, network_step
 from .train import Materials
+
+if TYPE_CHECKING:  # pandas only for the summary: the robot jobs start faster without it
+    import pandas as pd
 
 #: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.
 Policy = Callable[[int, np.ndarray], np.ndarray]

@@ -101,3 +101,22 @@ def load_npz(path: str | os.PathLike[str], required: tuple[str, ...] = ()) -> di
     if missing:
         raise ValueError(f"{path} lacks {missing}; delete it and rerun `snakemake -c2`.")
     return arrays
+
+
+def write_csv(path: str | os.PathLike[str], rows: list[dict[str, object]], digits: int = 6) -> None:
+    """Rows of a table as CSV, atomically, as pandas would write them with
+    ``float_format=f"%.{digits}f"`` (NaN empty): for jobs too short to pay for importing pandas."""
+    import csv
+    import io
+    import math
+
+    def cell(value: object) -> object:
+        if isinstance(value, float):
+            return "" if math.isnan(value) else f"{value:.{digits}f}"
+        return value
+
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+    writer.writeheader()
+    writer.writerows({k: cell(v) for k, v in row.items()} for row in rows)
+    write_text(path, buffer.getvalue())

@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
-import statsmodels.formula.api as smf
-from statsmodels.stats.anova import AnovaRM, anova_lm
 
 EFFECTS = {"congruency": "congruency", "size": "size", "interaction": "congruency:size"}
 
@@ -38,6 +36,9 @@ def effect_row(f, df1, df2, p) -> dict[str, float]:
 
 
 def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
+    import statsmodels.formula.api as smf  # here, not above: plot jobs import this module
+    from statsmodels.stats.anova import anova_lm
+
     model = smf.ols("rmse ~ C(congruency) * C(size)", data=df).fit()
     table = anova_lm(model, typ=2)
     names = {
@@ -53,6 +54,8 @@ def two_way_anova(df: pd.DataFrame) -> dict[str, dict[str, float]]:
 
 
 def repeated_measures_anova(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+    from statsmodels.stats.anova import AnovaRM
+
     fit = AnovaRM(
         df, depvar=depvar, subject="network", within=["congruency", "size"], aggregate_func="mean"
     ).fit()

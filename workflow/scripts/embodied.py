@@ -1,11 +1,9 @@
 """One network (the wildcard `net`) drives the simulated arm through every test trial."""
 
-import pandas as pd
-
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
 from icub_affordance.embodied import embodied_network
-from icub_affordance.io import atomic_path, load_npz, redirect_log, save_npz
+from icub_affordance.io import load_npz, redirect_log, save_npz, write_csv
 from icub_affordance.jordan import Weights
 from icub_affordance.train import load_materials, mapping_of
 
@@ -25,8 +23,7 @@ with redirect_log(snakemake.log[0]):
         settings["categorisation_cue"],
         DemoConfig(**snakemake.params.demos),
     )
-    table = pd.DataFrame(rows)
-    with atomic_path(snakemake.output.trials) as tmp:
-        table.to_csv(tmp, index=False, float_format="%.6f")
+    write_csv(snakemake.output.trials, rows)
     save_npz(snakemake.output.states, qpos=states)
-    print(f"network {net}: {table['success'].mean():.0%} of {len(table)} trials succeed")
+    rate = sum(row["success"] for row in rows) / len(rows)
+    print(f"network {net}: {rate:.0%} of {len(rows)} trials succeed")
