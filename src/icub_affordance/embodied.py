@@ -169,18 +169,11 @@ def replay_demos(
 # -- the summary -------------------------------------------------------------------------------
 
 
-def _condition(trials: pd.DataFrame) -> pd.Series:
-    congruent = trials["congruent"].astype(str)
-    return np.where(
-        trials["task"] == "grasping",
-        "grasping",
-        np.where(congruent == "True", "congruent", "incongruent"),
-    )
-
-
 def success_table(trials: pd.DataFrame) -> pd.DataFrame:
     """Success, grip used and final error by task, congruency and size (over all trials)."""
-    df = trials.assign(condition=_condition(trials))
+    from .stats import trial_conditions
+
+    df = trials.assign(condition=trial_conditions(trials))
     groups = df.groupby(["condition", "size"], sort=True)
     table = groups.agg(
         trials=("success", "size"),

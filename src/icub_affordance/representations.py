@@ -12,16 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-CONDITIONS = ("grasping", "congruent", "incongruent")
-
-
-def trial_conditions(trials: pd.DataFrame) -> np.ndarray:
-    congruent = trials["congruent"].astype(str)
-    return np.where(
-        trials["task"] == "grasping",
-        "grasping",
-        np.where(congruent == "True", "congruent", "incongruent"),
-    )
+from .stats import mean_ci, trial_conditions
 
 
 def pca(states: np.ndarray, components: int = 2) -> tuple[np.ndarray, np.ndarray]:
@@ -64,8 +55,6 @@ def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = 
     """Every network's distances to grasping (long table), and per step the incongruent minus
     congruent difference over networks: mean, 95% interval and paired t-test p."""
     from scipy import stats as sps
-
-    from .stats import mean_ci
 
     tables = []
     for net in sorted(trials["network"].unique()):

@@ -14,9 +14,20 @@ import pandas as pd
 EFFECTS = {"congruency": "congruency", "size": "size", "interaction": "congruency:size"}
 
 
+def trial_conditions(trials: pd.DataFrame) -> np.ndarray:
+    """Each trial's condition, grasping, congruent or incongruent, from its ``task`` and
+    ``congruent`` columns (as the trial tables are written)."""
+    congruent = trials["congruent"].astype(str)
+    return np.where(
+        trials["task"] == "grasping",
+        "grasping",
+        np.where(congruent == "True", "congruent", "incongruent"),
+    )
+
+
 def categorisation_trials(trials: pd.DataFrame, mode: str) -> pd.DataFrame:
     df = trials[(trials["task"] == "categorisation") & (trials["mode"] == mode)].copy()
-    df["congruency"] = np.where(df["congruent"].astype(str) == "True", "congruent", "incongruent")
+    df["congruency"] = trial_conditions(df)
     return df
 
 
