@@ -18,6 +18,7 @@ from conftest import REPO, TEST_CONFIG, run_snakemake, scratch_workflow
 
 from icub_affordance.body import Robot
 from icub_affordance.io import load_npz
+from icub_affordance.sweep_cost import planned_jobs
 
 COMPARED = [
     "data/vision/visual_maps.npz",
@@ -26,17 +27,6 @@ COMPARED = [
     "data/eval/trials.csv",
     "data/eval/anova.json",
 ]
-
-
-def planned_jobs(output: str) -> dict[str, int]:
-    """The job counts of a dry run's summary table."""
-    counts = {}
-    table = output.split("Job stats:")[-1]
-    for line in table.splitlines():
-        parts = line.split()
-        if len(parts) == 2 and parts[1].isdigit() and parts[0] != "total":
-            counts[parts[0]] = int(parts[1])
-    return counts
 
 
 def test_killed_and_resumed_single_core_run_equals_the_two_core_run(built, tmp_path):

@@ -164,8 +164,10 @@ rule sweep_cost:
             *rules.demos.input.parts,
         ],
         rules="workflow/rules/sweep.smk",
-        code=package_code("body", "jordan", "som", "train", "evaluate", "stats", "figures", "io")
-        + ["src/icub_affordance/sweep_cost.py"],
+        code=package_code(
+            "body", "spec", "jordan", "som", "train", "evaluate", "stats", "figures",
+            "sweep_cost", "io",
+        ),
         # For the order only (ancient: remaking these does not rerun the measurement): the sweep
         # and everything else the book shows are made first, so nothing runs or waits beside the
         # timed runs. A job waiting for cores makes Snakemake 9's scheduler poll, at a rate that
