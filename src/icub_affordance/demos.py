@@ -127,16 +127,31 @@ DEMO_S = APPROACH_S + DESCEND_S + CLOSE_S
 
 
 def move(robot: Robot, target_deg: np.ndarray, seconds: float, record=None) -> None:
-    """Ramp the servo targets linearly over 80% of the time, then hold them."""
+    """Ramp the servo targets linearly over 80% of the time, then hold them.
+
+    The targets of every physics step are computed up front, and an unrecorded hold is stepped
+    in one call: the arithmetic is the same as step by step (the same results to the bit), but
+    the robot test runs about half a million physics steps, so the loop's own cost counts.
+    """
     start = robot.data.ctrl.copy()
     goal = np.radians(target_deg)
     steps = int(round(seconds / robot.model.opt.timestep))
     ramp = max(1, int(0.8 * steps))
-    for i in range(steps):
-        robot.data.ctrl[:] = start + (goal - start) * min(1.0, (i + 1) / ramp)
+    fractions = np.minimum(1.0, np.arange(1, steps + 1) / ramp)
+    targets = start + (goal - start) * fractions[:, None]
+    ctrl = robot.data.ctrl
+    if record is None:
+        for target in targets[:ramp]:
+            ctrl[:] = target
+            robot.step()
+        if steps > ramp:
+            ctrl[:] = targets[-1]
+            robot.step(steps - ramp)
+        return
+    for target in targets:
+        ctrl[:] = target
         robot.step()
-        if record is not None:
-            record(robot)
+        record(robot)
 
 
 def execute_grasp(

@@ -67,13 +67,13 @@ rule book:
         data=list(BOOK_DATA.values()),
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
-        code=package_code("report", "figures", "som", "sweep_cost"),
+        code=package_code("report", "figures", "som", "sweep_cost", "notebooks"),
     output:
         "book/_build/html/index.html",
     params:
         config=settings(config),
         names=list(BOOK_DATA),
-    threads: 1
+    threads: 2  # pages execute side by side (icub_affordance.notebooks)
     resources:
         mem_mb=2000,
         runtime=15,

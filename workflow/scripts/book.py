@@ -6,6 +6,7 @@ import sys
 from pathlib import Path
 
 from icub_affordance.io import redirect_log, write_text
+from icub_affordance.notebooks import execute_pages, is_notebook
 from icub_affordance.report import provenance, read_benchmarks, stage
 
 with redirect_log(snakemake.log[0]):
@@ -20,6 +21,12 @@ with redirect_log(snakemake.log[0]):
         if not job.startswith("sweep/")
     }
     write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
+    # the pages' code runs here, `threads` pages at a time; Sphinx then reads their outputs
+    # from the Jupyter cache (execute_notebooks: cache) instead of running them one by one
+    seconds = execute_pages(
+        book, [page for page in sorted(book.glob("*.md")) if is_notebook(page)], snakemake.threads
+    )
+    print(f"executed {len(seconds)} pages, {sum(seconds.values()):.1f} s of kernel time")
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
     # --all: every page, every time. Sphinx rebuilds only pages whose source changed, and the
     # pages' sources rarely do: what changes is the data in book/_data they read when executed.
