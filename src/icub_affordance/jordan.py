@@ -16,7 +16,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg.blas import dger
 from scipy.special import expit
 
 N_VISUAL = 100
@@ -89,30 +88,34 @@ class OnlineTrainer:
         self, context: np.ndarray, postures: np.ndarray, runs: list[tuple[int, int]] | None = None
     ) -> float:
         """One sequence, one update per step; ``runs`` (from :func:`equal_runs`) may be cached."""
+        from scipy.linalg.blas import dger  # here, not at the top: only training needs it
+
         lr, h1 = self.lr, self._h1
         n_hidden = len(h1) - 1
+        W1c, W1pb, W2b = self.W1c, self.W1pb, self.W2b  # updated in place by dger below
+        W2h_T = W2b[:, :n_hidden].T  # a view: it follows W2b's updates
         proprio = np.column_stack([postures, np.ones(len(postures))])  # [p, 1] per step
         sq_error = 0.0
         steps = len(postures) - 1
         for t, end in runs if runs is not None else equal_runs(context):
             c = context[t]
-            u = self.W1c @ c
+            u = W1c @ c
             lr_cc = lr * (c @ c)
             acc = np.zeros(n_hidden)
             for k in range(t, end):
                 p1 = proprio[k]
-                h = expit(u + self.W1pb @ p1)
+                h = expit(u + W1pb @ p1)
                 h1[:n_hidden] = h
-                y = expit(self.W2b @ h1)
+                y = expit(W2b @ h1)
                 err = y - postures[k + 1]
                 sq_error += err @ err
                 d_out = err * y * (1.0 - y)
-                d_hid = (self.W2b[:, :n_hidden].T @ d_out) * h * (1.0 - h)
-                self.W2b = dger(-lr, d_out, h1, a=self.W2b, overwrite_a=1)
-                self.W1pb = dger(-lr, d_hid, p1, a=self.W1pb, overwrite_a=1)
+                d_hid = (W2h_T @ d_out) * h * (1.0 - h)
+                dger(-lr, d_out, h1, a=W2b, overwrite_a=1)
+                dger(-lr, d_hid, p1, a=W1pb, overwrite_a=1)
                 u -= lr_cc * d_hid
                 acc += d_hid
-            self.W1c = dger(-lr, acc, c, a=self.W1c, overwrite_a=1)
+            dger(-lr, acc, c, a=W1c, overwrite_a=1)
         return float(np.sqrt(sq_error / (steps * N_OUTPUT)))
 
 
