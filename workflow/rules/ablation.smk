@@ -18,6 +18,7 @@ use rule train as ablation_train with:
     params:
         network=ablation_network(),
         seed=settings(config["seed"]),
+    priority: 0  # after the main networks: less waits on these
     log:
         "data/logs/ablation/train/net{net}.log",
     benchmark:

@@ -27,6 +27,7 @@ rule embodied:
     wildcard_constraints:
         net=r"\d\d",
     threads: 1
+    priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
         mem_mb=500,
         runtime=10,
@@ -53,6 +54,7 @@ rule embodied_replay:
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
     threads: 1
+    priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
         mem_mb=500,
         runtime=10,
@@ -93,7 +95,11 @@ rule embodied_filmstrip:
         states=lambda w: [
             f"data/embodied/net{net}/states.npz" for net in EMBODIED_FILM_NETWORKS
         ],
-        trials=rules.embodied_summary.output.trials,
+        # each film network's own trials, not the joined table: the picture need not wait
+        # for the other networks
+        trials=lambda w: [
+            f"data/embodied/net{net}/trials.csv" for net in EMBODIED_FILM_NETWORKS
+        ],
         scene=config["scene"],
         code=package_code("body", "spec", "figures", "io"),
     output:

@@ -61,6 +61,9 @@ rule train:
     wildcard_constraints:
         net=r"\d\d",
     threads: 1
+    # before the cue ablation's training when both are ready: the robot test waits on these
+    # networks, and its jobs are the longest that follow (see workflow/rules/embodied.smk)
+    priority: 1
     resources:
         mem_mb=500,
         runtime=10,

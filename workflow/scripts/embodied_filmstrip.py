@@ -8,11 +8,12 @@ from icub_affordance.io import load_npz, redirect_log
 
 with redirect_log(snakemake.log[0]):
     obj, seq = snakemake.params.pick["object"], int(snakemake.params.pick["sequence"])
-    trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)
     robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     strips = {}
-    for net, path in zip(snakemake.params.networks, snakemake.input.states, strict=True):
-        mine = trials[trials["network"] == int(net)].reset_index(drop=True)
+    for net, path, trials in zip(
+        snakemake.params.networks, snakemake.input.states, snakemake.input.trials, strict=True
+    ):
+        mine = pd.read_csv(trials, keep_default_na=False)  # this network's, in states' order
         hit = mine[
             (mine["task"] == "categorisation") & (mine["object"] == obj) & (mine["sequence"] == seq)
         ]
