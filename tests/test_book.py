@@ -103,3 +103,16 @@ def test_without_robustness_the_robustness_page_says_so_and_gives_the_command(bu
     assert "This build did not run the sweep." in page
     assert "snakemake -c2 --config robustness=True" in page
     assert "sweep_effects.png" not in page and "<table" not in page  # no numbers invented
+
+
+def test_a_rebuild_from_the_same_outputs_gives_the_same_pages(built, tmp_path):
+    """No random table ids or layouts: only the benchmark table (the book's own timing) moves."""
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    result = run_snakemake(copy, "-c2", "book/_build/html/index.html", "--forcerun", "book")
+    assert result.returncode == 0, result.stderr[-3000:]
+    for page in sorted((built / HTML).glob("*.html")):
+        if page.name not in ("reproduce.html", "search.html"):
+            assert (copy / HTML / page.name).read_bytes() == page.read_bytes(), page.name
+    images = {p.name for p in (built / HTML / "_images").iterdir()}
+    assert {p.name for p in (copy / HTML / "_images").iterdir()} >= images  # DAG drawing too

@@ -48,6 +48,18 @@ def test_a_new_build_never_shows_the_last_builds_outputs(tmp_path):
     assert cached_outputs(tmp_path, a)[0][0]["text"] == "second run\n"
 
 
+def test_a_page_never_sees_what_an_earlier_page_in_its_kernel_defined(tmp_path):
+    """One kernel runs several pages: each must start from an empty namespace, as in its own."""
+    first = page(tmp_path, "a_first.md", "import json\nsecret = 42")
+    second = page(tmp_path, "b_second.md", "print(secret)")
+    third = page(tmp_path, "c_third.md", "json.dumps(1)")
+    with pytest.raises(RuntimeError, match=r"2 book page\(s\) failed") as error:
+        execute_pages(tmp_path, [first, second, third], workers=1)
+    assert "name 'secret' is not defined" in str(error.value)
+    assert "name 'json' is not defined" in str(error.value)
+    assert "a_first.md" not in str(error.value)
+
+
 def test_a_failing_page_is_named_with_its_error(tmp_path):
     good = page(tmp_path, "good.md", "1")
     bad = page(tmp_path, "bad.md", "raise ValueError('anova.json lacks closed_loop')")
