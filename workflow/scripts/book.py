@@ -1,6 +1,7 @@
 """Stage the outputs, record provenance, and build the Jupyter Book strictly (warnings fail)."""
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -21,6 +22,9 @@ with redirect_log(snakemake.log[0]):
         if not job.startswith("sweep/")
     }
     write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
+    # a clean build every time: no pages left from an earlier table of contents, and the same
+    # HTML as a first build (Sphinx links its CSS differently when the last build's is there)
+    shutil.rmtree(book / "_build", ignore_errors=True)
     # the pages' code runs here, `threads` pages at a time; Sphinx then reads their outputs
     # from the Jupyter cache (execute_notebooks: cache) instead of running them one by one
     seconds = execute_pages(
@@ -28,8 +32,8 @@ with redirect_log(snakemake.log[0]):
     )
     print(f"executed {len(seconds)} pages, {sum(seconds.values()):.1f} s of kernel time")
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
-    # --all: every page, every time. Sphinx rebuilds only pages whose source changed, and the
-    # pages' sources rarely do: what changes is the data in book/_data they read when executed.
+    # --all: every page, every time (the build above is clean anyway). Sphinx would rebuild
+    # only the pages whose source changed, but what changes is the data in book/_data.
     result = subprocess.run(
         [jupyter_book, "build", "--all", "-W", "-n", "--keep-going", str(book)],
         capture_output=True,
