@@ -14,8 +14,12 @@ from pathlib import Path
 
 from icub_affordance.report import benchmark_table, read_benchmarks
 
+if any(arg in ("-h", "--help") for arg in sys.argv[1:]) or len(sys.argv) > 2:
+    sys.exit(__doc__)
 directory = Path(sys.argv[1] if len(sys.argv) > 1 else "data/benchmarks")
 tables = {k: v for k, v in read_benchmarks(directory).items() if not k.startswith("sweep/")}
+if not tables:
+    sys.exit(f"no benchmark files under {directory}: run `snakemake -c2` first, or name the folder")
 table = benchmark_table(tables)
 print(table.round(2).to_string())
 print(
