@@ -1,6 +1,6 @@
 """Train one Jordan network (the wildcard `net`) and save its learning curve and weights."""
 
-from icub_affordance.io import redirect_log, save_npz, write_text
+from icub_affordance.io import redirect_log, save_npz, write_csv
 from icub_affordance.som import TASKS
 from icub_affordance.train import (
     TrainConfig,
@@ -22,17 +22,15 @@ with redirect_log(snakemake.log[0]):
     weights, curve = train_network(
         materials, config, mapping, network_seed(snakemake.params.seed, net)
     )
-    # written by hand rather than through pandas: a training job is short, and importing
-    # pandas would be a fifth of it
-    lines = ["iteration,phase,task,object,sequence,rmse"]
-    lines += [
-        f"{i},{phase},{TASKS[task]},{materials.objects[obj]},{seq},{rmse:.6f}"
+    columns = ("iteration", "phase", "task", "object", "sequence", "rmse")
+    rows = [
+        dict(zip(columns, (i, phase, TASKS[task], materials.objects[obj], seq, rmse), strict=True))
         for i, phase, task, obj, seq, rmse in zip(
             curve["iteration"], curve["phase"], curve["task"], curve["object"],
-            curve["sequence"], curve["rmse"], strict=True,
+            curve["sequence"], curve["rmse"].tolist(), strict=True,
         )
     ]  # fmt: skip
-    write_text(snakemake.output.curve, "\n".join(lines) + "\n")
+    write_csv(snakemake.output.curve, rows)  # not pandas: a training job is short
     save_npz(snakemake.output.weights, **weights.as_dict())
     final = curve["rmse"][-500:].mean()
     print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
