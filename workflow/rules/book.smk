@@ -72,6 +72,7 @@ rule book:
         "book/_build/html/index.html",
     params:
         config=settings(config),
+        ablation_cue=ABLATION_CUE,  # the cue timing the ablation trained with (ablation.smk)
         names=list(BOOK_DATA),
     threads: 2  # pages execute side by side (icub_affordance.notebooks)
     resources:

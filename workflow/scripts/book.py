@@ -15,6 +15,7 @@ with redirect_log(snakemake.log[0]):
     data_dir = book / "_data"
     stage(dict(zip(snakemake.params.names, snakemake.input.data, strict=True)), data_dir)
     run = provenance(dict(snakemake.params.config), Path.cwd())
+    run["ablation_cue"] = snakemake.params.ablation_cue
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
     benchmarks = {
         job: text
