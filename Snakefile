@@ -32,7 +32,7 @@ include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
-include: "workflow/rules/ablation.smk"
+include: "workflow/rules/runs.smk"
 include: "workflow/rules/embodied.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
@@ -53,7 +53,6 @@ rule all:
         rules.figure4.output,
         rules.figure5.output,
         rules.figure_hidden.output,
-        rules.ablation_stats.output,
-        rules.ablation_figure5.output,
+        run_outputs(CONFIGURED_RUNS),
         rules.embodied_summary.output,
         rules.embodied_filmstrip.output,

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
+import yaml
 
 from icub_affordance.body import Robot
 
@@ -18,7 +20,21 @@ def robot() -> Robot:
     r.close()
 
 
+CONFIG = REPO / "config" / "config.yaml"
 TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
+
+sys.path.insert(0, str(REPO / "workflow" / "lib"))
+from configs import merged  # noqa: E402
+
+
+def load_config() -> dict:
+    """The default config, as the pipeline reads it."""
+    return yaml.safe_load(CONFIG.read_text())
+
+
+def load_test_config() -> dict:
+    """The test config as Snakemake sees it: its keys laid over the default config."""
+    return merged(load_config(), yaml.safe_load(TEST_CONFIG.read_text()))
 
 
 def scratch_workflow(path: Path) -> Path:
@@ -52,3 +68,10 @@ def built(tmp_path_factory) -> Path:
     result = run_snakemake(workdir, "-c2")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
     return workdir
+
+
+def pytest_collection_modifyitems(items) -> None:
+    """Every test that reads the finished test run is slow: it waits for the pipeline."""
+    for item in items:
+        if "built" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.slow)

@@ -149,15 +149,18 @@ def test_the_success_table_covers_every_condition(built):
 def test_the_cue_ablation_runs_beside_the_main_run(built):
     data = built / "data"
     main = json.loads((data / "eval" / "anova.json").read_text())
-    ablation = json.loads((data / "ablation" / "eval" / "anova.json").read_text())
+    run = data / "runs" / "cue_all_steps"  # the test config's cue is first_step
+    ablation = json.loads((run / "eval" / "anova.json").read_text())
     assert set(ablation) == set(main)
     assert ablation["closed_loop"]["n_trials"] == main["closed_loop"]["n_trials"]
     # same seeds, other cue: different networks, tested on the same trials
-    a = pd.read_csv(data / "ablation" / "eval" / "trials.csv")
+    a = pd.read_csv(run / "eval" / "trials.csv")
     m = pd.read_csv(data / "eval" / "trials.csv")
     assert len(a) == len(m)
     assert not np.allclose(a["rmse"], m["rmse"])
-    assert (data / "figures" / "ablation_figure5.png").stat().st_size > 10_000
+    assert (run / "figures" / "figure5.png").stat().st_size > 10_000
+    # the run reads the main run's demonstrations and maps: it makes none of its own
+    assert not (run / "demos").exists() and not (run / "soms").exists()
 
 
 def test_hidden_representation_outputs_have_the_expected_shapes(built):

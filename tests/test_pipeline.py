@@ -12,16 +12,11 @@ import cv2
 import numpy as np
 import pytest
 import yaml
-from conftest import run_snakemake, scratch_workflow
+from conftest import load_config, load_test_config, run_snakemake, scratch_workflow
 from snakemake.utils import validate
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
-TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
-
-
-def load_config(path: Path = REPO / "config" / "config.yaml") -> dict:
-    return yaml.safe_load(path.read_text())
 
 
 @pytest.fixture
@@ -33,9 +28,9 @@ def snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
     return run_snakemake(workdir, *args)
 
 
-@pytest.mark.parametrize("config_path", [REPO / "config" / "config.yaml", TEST_CONFIG])
-def test_shipped_configs_are_valid(config_path):
-    validate(load_config(config_path), str(SCHEMA))
+@pytest.mark.parametrize("config", [load_config, load_test_config])
+def test_shipped_configs_are_valid(config):
+    validate(config(), str(SCHEMA))
 
 
 @pytest.mark.parametrize(
@@ -63,7 +58,7 @@ def test_missing_key_is_refused():
 
 
 def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
-    bad = load_config(TEST_CONFIG)
+    bad = load_test_config()
     bad["seed"] = -5
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(bad))
@@ -79,7 +74,7 @@ def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
 
 
 def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_path):
-    bad = load_config(TEST_CONFIG)
+    bad = load_test_config()
     bad["initial_posture_deg"][3] = 150  # the elbow stops at 106
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(bad))
@@ -100,7 +95,7 @@ def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_
 def test_test_config_runs_end_to_end(built):
     workdir = built
     body = workdir / "data" / "body"
-    config = load_config(TEST_CONFIG)["body_figure"]
+    config = load_test_config()["body_figure"]
     for name in ("figure1_scene.png", "figure1_eye.png"):
         image = cv2.imread(str(body / name))
         assert image.shape == (config["height"], config["width"], 3)
@@ -118,7 +113,7 @@ def test_test_config_runs_end_to_end(built):
     assert len(rows[15]["driven_joints"].split()) == 6
     # the visual maps, keyed by object, binary 10x10, and Figure 3
     with np.load(workdir / "data" / "vision" / "visual_maps.npz", allow_pickle=False) as maps:
-        assert sorted(maps.files) == sorted(load_config(TEST_CONFIG)["objects"])
+        assert sorted(maps.files) == sorted(load_test_config()["objects"])
         assert all(maps[k].shape == (10, 10) and maps[k].max() == 1 for k in maps.files)
     assert cv2.imread(str(workdir / "data" / "vision" / "figure3.png")).std() > 10
     # nothing left half-written beside the outputs

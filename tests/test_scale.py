@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import pytest
-from conftest import REPO, TEST_CONFIG, run_snakemake, scratch_workflow
+from conftest import REPO, load_test_config, run_snakemake, scratch_workflow
+
+from icub_affordance.sweep_cost import planned_jobs
 
 COMPARED = [
     "data/demos/demos.npz",
@@ -28,14 +30,12 @@ def test_profiles_parse(tmp_path, profile):
     assert result.returncode == 0, result.stderr[-3000:]
 
 
-def test_every_rule_declares_threads_resources_and_a_benchmark():
-    for path in (REPO / "workflow" / "rules").glob("*.smk"):
-        for block in path.read_text().split("\nrule ")[1:]:
-            name = block.split(":")[0]
-            if "script:" not in block and "shell:" not in block:
-                continue  # a target rule (all, sweep): it runs nothing
-            assert "threads:" in block and "mem_mb=" in block and "runtime=" in block, name
-            assert "benchmark:" in block, name
+def test_every_job_of_the_run_left_a_benchmark(built):
+    """Each job's wall time and memory are on record (benchmarks/collect.py reads them)."""
+    result = run_snakemake(built, "-n", "--forceall")
+    assert result.returncode == 0, result.stderr[-3000:]
+    jobs = sum(n for rule, n in planned_jobs(result.stdout).items() if rule != "all")
+    assert len(list((built / "data" / "benchmarks").rglob("*.tsv"))) == jobs
 
 
 def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
@@ -68,8 +68,10 @@ def test_the_sweep_dag_trains_twelve_networks_per_point(tmp_path):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
-    assert counts["sweep_train"] == 12 * points
-    assert counts["sweep_evaluate"] == points and counts["sweep_summary"] == 1
+    assert counts["run_train"] == 12 * points
+    assert counts["run_evaluate"] == points and counts["sweep_summary"] == 1
+    # whole replications: each seed makes its own demonstrations and SOMs, once
+    assert counts["run_demos"] == counts["run_soms"] == len(sweep["seeds"])
 
 
 def test_sweep_tables_count_significant_replications():
@@ -146,16 +148,16 @@ def dry_run(workdir, *args, rule="book"):
 
 
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
-    import yaml
 
     from icub_affordance.report import sweep_size
 
     workdir = scratch_workflow(tmp_path)
-    config = yaml.safe_load(TEST_CONFIG.read_text())
+    config = load_test_config()
     points, networks = sweep_size(config)
     counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
-    assert counts["sweep_train"] == networks == points * config["network"]["networks"]
-    assert counts["sweep_evaluate"] == counts["sweep_stats"] == points
+    ablation = config["network"]["networks"]  # the cue ablation's networks, in every run
+    assert counts["run_train"] - ablation == networks == points * config["network"]["networks"]
+    assert counts["run_evaluate"] - 1 == counts["run_stats"] - 1 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
     assert counts["book"] == 1
     for output in (
@@ -187,19 +189,20 @@ def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_pat
 
 
 def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
-    import yaml
 
     from icub_affordance.sweep_cost import SWEEP_INPUTS, measure
 
-    config = yaml.safe_load(TEST_CONFIG.read_text())
+    config = load_test_config()
     table = measure(built, config, [1], cores=2, log=lambda _: None)
     assert table["replications"].tolist() == [1] and table["cores"].tolist() == [2]
     assert 0 < table["seconds"].iloc[0] < 300
     assert table["seconds_per_replication"].iloc[0] == table["seconds"].iloc[0]
     assert 0 <= table["other_load"].iloc[0] <= table["machine_cores"].iloc[0]
-    assert not (built / "data" / "sweep").exists()  # the copy ran it, not the checkout
-    with pytest.raises(RuntimeError, match="soms"):  # a missing input would be timed too
-        measure(built, config, [1], cores=2, inputs=SWEEP_INPUTS[:2])
+    # the copy ran it, not the checkout
+    assert not (built / "data" / "sweep").exists()
+    assert not list((built / "data" / "runs").glob("sweep_*"))
+    with pytest.raises(RuntimeError, match="visual_maps"):  # a missing input would be timed too
+        measure(built, config, [1], cores=2, inputs=SWEEP_INPUTS[:0])
 
 
 def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
@@ -230,11 +233,10 @@ def test_bad_replication_counts_are_refused(counts):
 
 
 def test_the_cost_config_times_replications_of_the_main_runs_networks():
-    import yaml
 
     from icub_affordance.sweep_cost import cost_config
 
-    config = yaml.safe_load(TEST_CONFIG.read_text()) | {"robustness": True}
+    config = load_test_config() | {"robustness": True}
     scratch = cost_config(config, 3)
     assert scratch["sweep"] == {
         "seeds": [1, 2, 3],

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from conftest import REPO, TEST_CONFIG, run_snakemake, scratch_workflow
+from conftest import REPO, TEST_CONFIG, load_test_config, run_snakemake, scratch_workflow
 
 from icub_affordance.body import Robot
 from icub_affordance.io import load_npz
@@ -62,7 +62,7 @@ def test_killed_and_resumed_single_core_run_equals_the_two_core_run(built, tmp_p
 
 
 def changed_config(tmp_path: Path, change) -> Path:
-    config = yaml.safe_load(TEST_CONFIG.read_text())
+    config = load_test_config()
     change(config)
     path = tmp_path / "changed.yaml"
     path.write_text(yaml.safe_dump(config))
@@ -73,7 +73,7 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
     path = changed_config(tmp_path, lambda c: c["network"].update(learning_rate=0.05))
     plan = run_snakemake(built, "-n", config=path)
     jobs = planned_jobs(plan.stdout)
-    n_nets = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
+    n_nets = load_test_config()["network"]["networks"]
     assert jobs.get("train") == n_nets
     for rule in ("evaluate", "stats", "figure4", "figure5", "book"):
         assert jobs.get(rule) == 1, (rule, jobs)

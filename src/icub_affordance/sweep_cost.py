@@ -2,7 +2,7 @@
 
 Each measurement runs in a fresh scratch copy of the workflow: the code is linked, the config is
 the given one with the sweep replaced by n replications (seeds 1..n) at its network settings,
-and the sweep's inputs (the demonstrations, visual maps and SOMs) are copied in and marked up to
+and the sweep's input (the visual maps) is copied in and marked up to
 date first, so that only the sweep itself is timed.
 """
 
@@ -23,7 +23,7 @@ import pandas as pd
 from .io import atomic_path
 
 LINKED = ("Snakefile", "workflow", "assets", "src")
-SWEEP_INPUTS = ("data/vision", "data/demos", "data/soms")
+SWEEP_INPUTS = ("data/vision",)  # a replication makes its own demonstrations and SOMs
 COLUMNS = [
     "replications",
     "seconds",
@@ -129,7 +129,7 @@ def time_sweep(
             if not source.exists():
                 raise FileNotFoundError(
                     f"{source} is missing: the sweep's cost is measured on the main run's "
-                    "demonstrations, visual maps and SOMs; run `snakemake -c2` first."
+                    "visual maps; run `snakemake -c2` first."
                 )
             target.parent.mkdir(parents=True, exist_ok=True)
             if source.is_dir():
@@ -139,13 +139,14 @@ def time_sweep(
         what = f"timing the sweep with {replications} replication(s)"
         cmd = [sys.executable, "-m", "snakemake", "sweep", f"-c{cores}", "--quiet"]
         # the copied inputs are older than the linked code: mark them up to date, then clear
-        # the sweep's own outputs, which --touch marked too
+        # the sweep's own outputs (its runs' and its summary), which --touch marked too
         _snakemake(cmd + ["--touch"], work, what)
-        shutil.rmtree(work / "data" / "sweep", ignore_errors=True)
+        for made in ("runs", "sweep"):
+            shutil.rmtree(work / "data" / made, ignore_errors=True)
         # what is timed must be the sweep and nothing else
         plan = planned_jobs(_snakemake(cmd[:-1] + ["-n"], work, what))
-        others = sorted(rule for rule in plan if not rule.startswith("sweep"))
-        if others or not plan.get("sweep_train"):
+        others = sorted(rule for rule in plan if not rule.startswith(("sweep", "run_")))
+        if others or not plan.get("run_train"):
             raise RuntimeError(
                 f"{what}: the scratch run would run {plan}, not only the sweep's rules "
                 f"(also {others}); the sweep's inputs in {repo} may be incomplete."

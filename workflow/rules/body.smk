@@ -5,7 +5,7 @@ rule body_figure:
     """Figure 1: the robot at the table in its initial posture, the eye's view, the joint table."""
     input:
         scene=config["scene"],
-        code=package_code("body", "spec", "io"),
+        code=script_code("body_figure"),
     output:
         scene="data/body/figure1_scene.png",
         eye="data/body/figure1_eye.png",

@@ -21,8 +21,8 @@ BOOK_DATA = {
     "embodied_analysis.json": "data/embodied/analysis.json",
     "embodied_success.csv": "data/embodied/success.csv",
     "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
-    "ablation_anova.json": "data/ablation/eval/anova.json",
-    "ablation_figure5.png": "data/figures/ablation_figure5.png",
+    "ablation_anova.json": f"data/runs/{ABLATION}/eval/anova.json",
+    "ablation_figure5.png": f"data/runs/{ABLATION}/figures/figure5.png",
     "divergence.csv": "data/eval/divergence.csv",
     "divergence.json": "data/eval/divergence.json",
     "hidden_explained.csv": "data/eval/hidden_explained.csv",
@@ -67,12 +67,13 @@ rule book:
         data=list(BOOK_DATA.values()),
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
-        code=package_code("report", "figures", "som", "sweep_cost", "notebooks"),
+        code=script_code("book", pages=sorted(glob.glob("book/*.md"))),
     output:
         "book/_build/html/index.html",
     params:
         config=settings(config),
-        ablation_cue=ABLATION_CUE,  # the cue timing the ablation trained with (ablation.smk)
+        # the cue timing the ablation trained with (common.smk: ablation_run)
+        ablation_cue=RUN_CONFIG[ABLATION]["network"]["categorisation_cue"],
         names=list(BOOK_DATA),
     threads: 2  # pages execute side by side (icub_affordance.notebooks)
     resources:

@@ -1,17 +1,26 @@
-# Shared helpers of the rules.
+# Shared helpers of the rules: the runs of the model, their settings and paths, and the code
+# each rule runs.
+import itertools
+import re
 import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
+from code_deps import CodeGraph, page_code  # noqa: E402
+from configs import merged  # noqa: E402
 
 # The interpreter running Snakemake, for the rare shell command that calls Python tools.
 PYTHON = sys.executable
 
+_CODE = CodeGraph(Path(workflow.basedir) / "src")
 
 
-def package_code(*modules):
-    """The package modules that a job imports, declared as inputs so that editing them reruns it.
-
-    Snakemake does not track what a script imports, so each rule declares it here.
-    """
-    return [f"src/icub_affordance/{name}.py" for name in ("__init__", *modules)]
+def script_code(script, pages=()):
+    """The package modules that `workflow/scripts/{script}.py` imports (and the book `pages`, if
+    given), transitively: inputs, so that editing one reruns exactly the rules that run it."""
+    path = Path(workflow.basedir) / "workflow" / "scripts" / f"{script}.py"
+    sources = [path.read_text(), *(page_code(page) for page in pages)]
+    return [str(p.relative_to(workflow.basedir)) for p in _CODE.closure(sources)]
 
 
 def settings(value):
@@ -25,3 +34,131 @@ def settings(value):
     if isinstance(value, list):
         return [settings(item) for item in value]
     return value
+
+
+# ---- Runs --------------------------------------------------------------------------------------
+# A run is the model run once: the config itself (the main run, at the paths under data/), or
+# the config with some sections overridden (every other run, under data/runs/{name}/). Runs come
+# from config `runs:`, from the cue ablation (the other cue timing) and from the sweep.
+
+MAIN = "main"
+RUN_SECTIONS = ("seed", "network", "soms")  # what a run may override
+
+
+def ablation_run():
+    """The cue ablation: the main run with the other categorisation cue timing (MODEL.md 7)."""
+    other = {"first_step": "all_steps", "all_steps": "first_step"}[
+        config["network"]["categorisation_cue"]
+    ]
+    return f"cue_{other}", {"network": {"categorisation_cue": other}}
+
+
+def sweep_runs():
+    """Every combination of the `sweep` section's values, a run each (not in the default run)."""
+    sweep = config["sweep"]
+    runs = {}
+    for seed, lr, hidden, cue in itertools.product(
+        sweep["seeds"], sweep["learning_rate"], sweep["hidden"], sweep["categorisation_cue"]
+    ):
+        runs[f"sweep_seed{seed}_lr{lr}_h{hidden}_{cue}"] = {
+            "seed": seed,
+            "network": {"learning_rate": lr, "hidden": hidden, "categorisation_cue": cue},
+        }
+    return runs
+
+
+ABLATION, _ablation_overrides = ablation_run()
+SWEEP_RUNS = sweep_runs()
+# in this order, which decides whose demonstrations and SOMs a run shares (stage_run)
+RUNS = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
+CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
+RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
+
+
+def check_runs():
+    """Refuse a configured run whose settings, laid over the config, break the schema, before
+    any job runs, naming the run and the key."""
+    import jsonschema
+    import yaml
+
+    schema_path = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
+    validator = jsonschema.Draft202012Validator(yaml.safe_load(schema_path.read_text()))
+    for name in config["runs"]:
+        if name in (MAIN, ABLATION) or name in SWEEP_RUNS:
+            raise ValueError(
+                f"config runs: the name {name!r} is taken (the main run, the cue ablation or a "
+                "sweep point). Give the run another name."
+            )
+        error = jsonschema.exceptions.best_match(validator.iter_errors(RUN_CONFIG[name]))
+        if error is not None:
+            key = ".".join(str(part) for part in error.absolute_path)
+            raise ValueError(
+                f"config runs.{name}: {key or 'the run'}: {error.message}. Fix or remove this "
+                f"key in the run's entry under `runs:` ({schema_path.name} says what is allowed)."
+            )
+
+
+check_runs()
+
+
+def run_dir(run):
+    return "data" if run == MAIN else f"data/runs/{run}"
+
+
+def run_of(wildcards):
+    return wildcards.get("run", MAIN)
+
+
+wildcard_constraints:
+    run="|".join(map(re.escape, RUNS)),  # names may hold dots (lr0.075)
+    net=r"\d\d",
+
+
+# The settings each shared stage depends on: a run uses the stage of the first run (in the order
+# of RUN_CONFIG: main, config `runs`, the ablation, the sweep) whose settings for it are equal, so
+# a run that changes only the network reuses the main run's demonstrations and maps, and two
+# sweep points with one seed share theirs.
+STAGE_SETTINGS = {
+    "demos": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "demos"),
+    "soms": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "vision", "soms"),
+}
+
+
+def stage_run(run, stage):
+    """The run whose `stage` outputs this run reads."""
+    key = [RUN_CONFIG[run][k] for k in STAGE_SETTINGS[stage]]
+    return next(r for r in RUN_CONFIG if [RUN_CONFIG[r][k] for k in STAGE_SETTINGS[stage]] == key)
+
+
+def run_networks(run):
+    return [f"{i:02d}" for i in range(RUN_CONFIG[run]["network"]["networks"])]
+
+
+def run_section(section):
+    """A job parameter: this run's config section (keys sorted)."""
+    return lambda wildcards: settings(RUN_CONFIG[run_of(wildcards)][section])
+
+
+def model_inputs(wildcards):
+    """What the networks of a run learn from: the visual maps, its SOMs and its demonstrations."""
+    run = run_of(wildcards)
+    return {
+        "maps": "data/vision/visual_maps.npz",
+        "soms": f"{run_dir(stage_run(run, 'soms'))}/soms/soms.npz",
+        "demos": f"{run_dir(stage_run(run, 'demos'))}/demos/demos.npz",
+    }
+
+
+def run_file(path):
+    """An input: this run's file at `path` under its folder (`{net}` kept as a wildcard)."""
+    return lambda wildcards: f"{run_dir(run_of(wildcards))}/{path}"
+
+
+def run_network_files(path):
+    """An input: `path` (with `{net}`) for every network of this run."""
+
+    def files(wildcards):
+        run = run_of(wildcards)
+        return [f"{run_dir(run)}/{path}".format(net=net) for net in run_networks(run)]
+
+    return files

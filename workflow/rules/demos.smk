@@ -5,13 +5,13 @@ rule demos_object:
     """Every grip and sequence of one object, made and checked in physics (one job per object)."""
     input:
         scene=config["scene"],
-        code=package_code("body", "spec", "ik", "demos", "io"),
+        code=script_code("demos_object"),
     output:
         "data/demos/parts/{object}.npz",
     params:
         object_sizes=settings(config["object_sizes_m"]),
         demos=settings(config["demos"]),
-        seed=settings(config["seed"]),
+        seed=run_section("seed"),
         posture=settings(config["initial_posture_deg"]),
     wildcard_constraints:
         object="|".join(config["objects"]),
@@ -30,8 +30,10 @@ rule demos_object:
 rule demos:
     """The 4 x 2 x 5 demonstrations in one file, and a readable summary."""
     input:
-        parts=expand("data/demos/parts/{object}.npz", object=config["objects"]),
-        code=package_code("body", "spec", "demos", "io"),
+        parts=lambda w: [
+            f"{run_dir(run_of(w))}/demos/parts/{obj}.npz" for obj in config["objects"]
+        ],
+        code=script_code("demos_merge"),
     output:
         demos="data/demos/demos.npz",
         summary="data/demos/summary.csv",
@@ -55,7 +57,7 @@ rule demo_filmstrip:
     input:
         demos=rules.demos.output.demos,
         scene=config["scene"],
-        code=package_code("body", "spec", "figures", "io"),
+        code=script_code("demo_filmstrip"),
     output:
         "data/demos/filmstrip.png",
     params:

@@ -14,9 +14,7 @@ rule embodied:
         demos=rules.demos.output.demos,
         weights="data/train/net{net}/weights.npz",
         scene=config["scene"],
-        code=package_code(
-            "body", "spec", "demos", "ik", "jordan", "som", "train", "evaluate", "embodied", "io"
-        ),
+        code=script_code("embodied"),
     output:
         trials="data/embodied/net{net}/trials.csv",
         states="data/embodied/net{net}/states.npz",
@@ -45,9 +43,7 @@ rule embodied_replay:
     input:
         demos=rules.demos.output.demos,
         scene=config["scene"],
-        code=package_code(
-            "body", "spec", "demos", "ik", "jordan", "som", "train", "evaluate", "embodied", "io"
-        ),
+        code=script_code("embodied_replay"),
     output:
         "data/embodied/replay.csv",
     params:
@@ -71,7 +67,7 @@ rule embodied_summary:
     input:
         trials=expand("data/embodied/net{net}/trials.csv", net=NETWORKS),
         replay=rules.embodied_replay.output[0],
-        code=package_code("embodied", "stats", "io"),
+        code=script_code("embodied_summary"),
     output:
         trials="data/embodied/trials.csv",
         success="data/embodied/success.csv",
@@ -101,7 +97,7 @@ rule embodied_filmstrip:
             f"data/embodied/net{net}/trials.csv" for net in EMBODIED_FILM_NETWORKS
         ],
         scene=config["scene"],
-        code=package_code("body", "spec", "figures", "io"),
+        code=script_code("embodied_filmstrip"),
     output:
         "data/figures/embodied_filmstrip.png",
     params:

@@ -1,18 +1,20 @@
 # The learning model (paper sections 2.2, 2.3 and 3): SOMs, 12 Jordan networks, tests, ANOVA.
+# Every rule here serves every run (workflow/rules/runs.smk gives the other runs' paths): the
+# inputs and parameters are the run's own, found from the wildcard `run` (absent: the main run).
 
-NETWORKS = [f"{i:02d}" for i in range(config["network"]["networks"])]
+NETWORKS = run_networks(MAIN)
 
 
 rule soms:
     """Train the Object, Task and Goal maps offline and save what they send to the network."""
     input:
         maps=rules.visual_maps.output.maps,
-        code=package_code("som", "io"),
+        code=script_code("soms"),
     output:
         "data/soms/soms.npz",
     params:
-        soms=settings(config["soms"]),
-        seed=settings(config["seed"]),
+        soms=run_section("soms"),
+        seed=run_section("seed"),
         objects=settings(config["objects"]),
     threads: 1
     resources:
@@ -30,7 +32,7 @@ rule figure2_maps:
     """The three maps' activations for every object and task (plot only)."""
     input:
         soms=rules.soms.output[0],
-        code=package_code("figures", "io"),
+        code=script_code("figure2_maps"),
     output:
         "data/soms/figure2_maps.png",
     threads: 1
@@ -48,18 +50,14 @@ rule figure2_maps:
 rule train:
     """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B."""
     input:
-        maps=rules.visual_maps.output.maps,
-        soms=rules.soms.output[0],
-        demos=rules.demos.output.demos,
-        code=package_code("spec", "jordan", "som", "train", "io"),
+        unpack(model_inputs),
+        code=script_code("train"),
     output:
         curve="data/train/net{net}/curve.csv",
         weights="data/train/net{net}/weights.npz",
     params:
-        network=settings(config["network"]),
-        seed=settings(config["seed"]),
-    wildcard_constraints:
-        net=r"\d\d",
+        network=run_section("network"),
+        seed=run_section("seed"),
     threads: 1
     # before the cue ablation's training when both are ready: the robot test waits on these
     # networks, and its jobs are the longest that follow (see workflow/rules/embodied.smk)
@@ -78,16 +76,14 @@ rule train:
 rule evaluate:
     """Test every network on both tasks, all objects and sequences, closed loop and forced."""
     input:
-        maps=rules.visual_maps.output.maps,
-        soms=rules.soms.output[0],
-        demos=rules.demos.output.demos,
-        weights=expand("data/train/net{net}/weights.npz", net=NETWORKS),
-        code=package_code("spec", "jordan", "som", "train", "evaluate", "io"),
+        unpack(model_inputs),
+        weights=run_network_files("train/net{net}/weights.npz"),
+        code=script_code("evaluate"),
     output:
         trials="data/eval/trials.csv",
         hidden="data/eval/hidden.npz",
     params:
-        network=settings(config["network"]),
+        network=run_section("network"),
     threads: 1
     resources:
         mem_mb=1000,
@@ -103,8 +99,8 @@ rule evaluate:
 rule stats:
     """The two-way and repeated-measures ANOVAs of the categorisation trials."""
     input:
-        trials=rules.evaluate.output.trials,
-        code=package_code("stats", "io"),
+        trials=run_file("eval/trials.csv"),
+        code=script_code("stats"),
     output:
         json="data/eval/anova.json",
         table="data/eval/anova_table.md",
@@ -124,7 +120,7 @@ rule figure4:
     """Figure 4: training RMSE over iterations, mean and range over the networks (plot only)."""
     input:
         curves=expand("data/train/net{net}/curve.csv", net=NETWORKS),
-        code=package_code("figures", "io"),
+        code=script_code("figure4"),
     output:
         "data/figures/figure4.png",
     params:
@@ -144,8 +140,8 @@ rule figure4:
 rule figure5:
     """Figure 5 and the per-step conflict time-course, from the trials (plot only)."""
     input:
-        trials=rules.evaluate.output.trials,
-        code=package_code("figures", "stats", "io"),
+        trials=run_file("eval/trials.csv"),
+        code=script_code("figure5"),
     output:
         figure5="data/figures/figure5.png",
         timecourse="data/figures/conflict_timecourse.png",
@@ -167,7 +163,7 @@ rule representations:
     input:
         trials=rules.evaluate.output.trials,
         hidden=rules.evaluate.output.hidden,
-        code=package_code("representations", "stats", "io"),
+        code=script_code("representations"),
     output:
         divergence="data/eval/divergence.csv",
         trajectories="data/eval/hidden_trajectories.csv",
@@ -191,7 +187,7 @@ rule figure_hidden:
         trajectories=rules.representations.output.trajectories,
         explained=rules.representations.output.explained,
         divergence=rules.representations.output.divergence,
-        code=package_code("figures", "io"),
+        code=script_code("figure_hidden"),
     output:
         "data/figures/hidden_representations.png",
     params:

@@ -1,120 +1,30 @@
 # Sweeps (not part of the default target): replications and hyperparameter grids.
 #   snakemake -c2 sweep                                   the points of config `sweep`
 #   snakemake --profile workflow/profiles/slurm sweep     the same on a cluster
-# A point is one seed and one value of each swept setting; it trains its own networks (the
-# demonstrations, visual maps and SOMs are the main run's), tests them and runs the ANOVAs.
-import itertools
-import re
+# A point is a run (common.smk: sweep_runs) of one seed and one value of each swept setting: a
+# whole replication, whose seed reseeds the demonstrations, the SOMs and the networks. Its
+# networks are trained, tested and analysed by the rules of every run, under data/runs/{point}/.
 
 
-def _sweep_points():
-    sweep = config["sweep"]
-    points = {}
-    for seed, lr, hidden, cue in itertools.product(
-        sweep["seeds"], sweep["learning_rate"], sweep["hidden"], sweep["categorisation_cue"]
-    ):
-        name = f"seed{seed}_lr{lr}_h{hidden}_{cue}"
-        points[name] = {"seed": seed, "learning_rate": lr, "hidden": hidden, "categorisation_cue": cue}
-    return points
-
-
-POINTS = _sweep_points()
-
-
-def point_network(wildcards):
-    """The main run's network settings with this point's values swapped in."""
-    point = POINTS[wildcards.point]
-    overrides = {k: v for k, v in point.items() if k != "seed"}
-    return settings(config["network"] | overrides)
-
-
-wildcard_constraints:
-    point="|".join(map(re.escape, POINTS)) or "none",  # names hold dots (lr0.075)
-
-
-rule sweep_train:
-    """One network of one sweep point."""
-    input:
-        maps=rules.visual_maps.output.maps,
-        soms=rules.soms.output[0],
-        demos=rules.demos.output.demos,
-        code=package_code("spec", "jordan", "som", "train", "io"),
-    output:
-        curve="data/sweep/{point}/train/net{net}/curve.csv",
-        weights="data/sweep/{point}/train/net{net}/weights.npz",
-    params:
-        network=point_network,
-        seed=lambda w: POINTS[w.point]["seed"],
-    wildcard_constraints:
-        net=r"\d\d",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=10,
-    log:
-        "data/logs/sweep/{point}/train/net{net}.log",
-    benchmark:
-        "data/benchmarks/sweep/{point}/train/net{net}.tsv"
-    script:
-        "../scripts/train.py"
-
-
-rule sweep_evaluate:
-    """Test one point's networks."""
-    input:
-        maps=rules.visual_maps.output.maps,
-        soms=rules.soms.output[0],
-        demos=rules.demos.output.demos,
-        weights=expand("data/sweep/{{point}}/train/net{net}/weights.npz", net=NETWORKS),
-        code=package_code("spec", "jordan", "som", "train", "evaluate", "io"),
-    output:
-        trials="data/sweep/{point}/eval/trials.csv",
-        hidden="data/sweep/{point}/eval/hidden.npz",
-    params:
-        network=point_network,
-    threads: 1
-    resources:
-        mem_mb=1000,
-        runtime=10,
-    log:
-        "data/logs/sweep/{point}/evaluate.log",
-    benchmark:
-        "data/benchmarks/sweep/{point}/evaluate.tsv"
-    script:
-        "../scripts/evaluate.py"
-
-
-rule sweep_stats:
-    """One point's ANOVAs."""
-    input:
-        trials="data/sweep/{point}/eval/trials.csv",
-        code=package_code("stats", "io"),
-    output:
-        json="data/sweep/{point}/eval/anova.json",
-        table="data/sweep/{point}/eval/anova_table.md",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
-    log:
-        "data/logs/sweep/{point}/stats.log",
-    benchmark:
-        "data/benchmarks/sweep/{point}/stats.tsv"
-    script:
-        "../scripts/stats.py"
+def sweep_point(run):
+    """A sweep point's seed and network settings, the columns of the sweep's tables."""
+    network = RUN_CONFIG[run]["network"]
+    return {"seed": RUN_CONFIG[run]["seed"]} | {
+        key: network[key] for key in ("learning_rate", "hidden", "categorisation_cue")
+    }
 
 
 rule sweep_summary:
     """Each point's congruency and size effects, with 95% intervals, and how many are significant."""
     input:
-        trials=expand("data/sweep/{point}/eval/trials.csv", point=POINTS),
-        anova=expand("data/sweep/{point}/eval/anova.json", point=POINTS),
-        code=package_code("stats", "io"),
+        trials=expand("data/runs/{run}/eval/trials.csv", run=SWEEP_RUNS),
+        anova=expand("data/runs/{run}/eval/anova.json", run=SWEEP_RUNS),
+        code=script_code("sweep_summary"),
     output:
         points="data/sweep/points.csv",
         summary="data/sweep/summary.csv",
     params:
-        points=POINTS,
+        points={run: sweep_point(run) for run in SWEEP_RUNS},
     threads: 1
     resources:
         mem_mb=1000,
@@ -131,7 +41,7 @@ rule sweep_figure:
     """The sweep's effects per point (plot only)."""
     input:
         points=rules.sweep_summary.output.points,
-        code=package_code("figures", "io"),
+        code=script_code("sweep_figure"),
     output:
         "data/sweep/effects.png",
     threads: 1
@@ -161,13 +71,10 @@ rule sweep_cost:
             *rules.visual_maps.output,
             rules.soms.output[0],
             *rules.demos.output,
-            *rules.demos.input.parts,
+            *expand("data/demos/parts/{object}.npz", object=config["objects"]),
         ],
         rules="workflow/rules/sweep.smk",
-        code=package_code(
-            "body", "spec", "jordan", "som", "train", "evaluate", "stats", "figures",
-            "sweep_cost", "io",
-        ),
+        code=script_code("sweep_cost"),
         # For the order only (ancient: remaking these does not rerun the measurement): the sweep
         # and everything else the book shows are made first, so nothing runs or waits beside the
         # timed runs. A job waiting for cores makes Snakemake 9's scheduler poll, at a rate that

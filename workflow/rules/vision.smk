@@ -5,7 +5,7 @@ rule visual_maps:
     """Render each object on the spot, edge-filter, foveate and reduce to the 10x10 maps."""
     input:
         scene=config["scene"],
-        code=package_code("body", "spec", "vision", "io"),
+        code=script_code("visual_maps"),
     output:
         maps="data/vision/visual_maps.npz",
         stages="data/vision/vision_stages.npz",
@@ -30,7 +30,7 @@ rule figure3:
     """Figure 3: eye image, Sobel edges and visual input for every object (plot only)."""
     input:
         stages=rules.visual_maps.output.stages,
-        code=package_code("figures", "io"),
+        code=script_code("figure3"),
     output:
         "data/vision/figure3.png",
     params:
