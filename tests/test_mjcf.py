@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import mujoco
 import numpy as np
+import pytest
+import yaml
 from conftest import REPO
 
-from icub_affordance.body import OBJECT_NAMES
+from icub_affordance.body import OBJECT_NAMES, Robot
 
 SCENE = REPO / "assets" / "icub_scene.xml"
 ROBOT = REPO / "assets" / "icub_right_arm.xml"
@@ -38,3 +40,34 @@ def test_the_robot_file_compiles_alone():
     scene = mujoco.MjModel.from_xml_path(str(SCENE))
     assert body_names(robot) == [n for n in body_names(scene) if n not in ("table", *OBJECT_NAMES)]
     assert robot.nu == scene.nu and robot.nq == scene.nq - 7 * len(OBJECT_NAMES)
+
+
+def configured_initial_posture() -> np.ndarray:
+    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    return np.array(config["initial_posture_deg"], dtype=float)
+
+
+def test_the_initial_keyframe_is_the_configured_initial_posture(robot):
+    posture = configured_initial_posture()
+    key = robot.model.key("initial")
+    np.testing.assert_allclose(robot.keyframe_deg("initial"), posture, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(np.degrees(key.ctrl), posture, rtol=0, atol=1e-9)
+    # the whole state: followers equal to their leads, the objects where the scene puts them
+    data = mujoco.MjData(robot.model)
+    robot.write_posture(data, posture)
+    np.testing.assert_allclose(key.qpos, data.qpos, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(key.qvel, 0.0)
+
+
+def test_the_keyframe_leaves_resized_objects_where_the_scene_puts_them():
+    robot = Robot(object_sizes={"big_ball": 0.09})
+    key = robot.model.key("initial")
+    n_robot = robot.model.nq - 7 * len(OBJECT_NAMES)
+    np.testing.assert_array_equal(key.qpos[n_robot:], robot.model.qpos0[n_robot:])
+    assert key.qpos[robot.object_qpos["big_ball"] + 2] == 0.045  # resting on the floor
+    robot.close()
+
+
+def test_an_unknown_keyframe_is_named(robot):
+    with pytest.raises(ValueError, match="no keyframe 'home'.*initial"):
+        robot.keyframe_deg("home")

@@ -164,6 +164,19 @@ class Robot:
                 data.qpos[self.model.jnt_qposadr[j]] = q[k]
                 data.qvel[self.model.jnt_dofadr[j]] = 0.0
 
+    def keyframe_deg(self, name: str = "initial") -> np.ndarray:
+        """The 16 controlled angles (degrees, Figure 1's order) of one of the model's keyframes.
+
+        ``initial`` is the common initial posture, the config key ``initial_posture_deg`` (a test
+        checks that they agree).
+        """
+        try:
+            key = self.model.key(name)
+        except KeyError as err:
+            names = [self.model.key(i).name for i in range(self.model.nkey)]
+            raise ValueError(f"the scene has no keyframe {name!r}; it has {names}") from err
+        return np.degrees(key.qpos[self.qpos_adr])
+
     def command_deg(self, angles_deg: np.ndarray) -> None:
         """Set the 16 position-servo targets; the physics moves the arm there."""
         self.data.ctrl[:] = np.radians(self._checked(angles_deg))
