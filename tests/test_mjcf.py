@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import mujoco
 import numpy as np
 import pytest
 import yaml
 from conftest import REPO
 
-from icub_affordance.body import OBJECT_NAMES, Robot
+from icub_affordance.body import OBJECT_NAMES, Robot, scene_files
 
 SCENE = REPO / "assets" / "icub_scene.xml"
 ROBOT = REPO / "assets" / "icub_right_arm.xml"
@@ -71,3 +73,47 @@ def test_the_keyframe_leaves_resized_objects_where_the_scene_puts_them():
 def test_an_unknown_keyframe_is_named(robot):
     with pytest.raises(ValueError, match="no keyframe 'home'.*initial"):
         robot.keyframe_deg("home")
+
+
+def test_scene_files_lists_the_scene_and_the_robot_file(monkeypatch):
+    assert scene_files(SCENE) == [SCENE, ROBOT]
+    monkeypatch.chdir(REPO)
+    assert scene_files("assets/icub_scene.xml") == [  # relative paths stay relative
+        Path("assets/icub_scene.xml"),
+        Path("assets/icub_right_arm.xml"),
+    ]
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def body_file(name: str) -> str:
+    return f'<mujoco><worldbody><body name="{name}"/></worldbody></mujoco>'
+
+
+def test_scene_files_finds_nested_includes_where_mujoco_does(tmp_path):
+    scene = write(
+        tmp_path / "scene.xml",
+        '<mujoco><include file="parts/a.xml"/>'
+        '<worldbody><include file="parts/c.xml"/></worldbody></mujoco>',
+    )
+    a = write(tmp_path / "parts" / "a.xml", '<mujoco><include file="b.xml"/></mujoco>')
+    b = write(tmp_path / "parts" / "b.xml", body_file("b"))
+    c = write(tmp_path / "parts" / "c.xml", '<mujoco><body name="c"/></mujoco>')
+    assert scene_files(scene) == [scene, a, b, c]
+    assert body_names(mujoco.MjModel.from_xml_path(str(scene))) == ["world", "b", "c"]
+    # MuJoCo looks in the scene's directory first, then in the including file's
+    top_b = write(tmp_path / "b.xml", body_file("top_b"))
+    assert scene_files(scene) == [scene, a, top_b, c]
+    assert body_names(mujoco.MjModel.from_xml_path(str(scene))) == ["world", "top_b", "c"]
+
+
+def test_scene_files_names_a_missing_include(tmp_path):
+    scene = write(tmp_path / "scene.xml", '<mujoco><include file="robot.xml"/></mujoco>')
+    with pytest.raises(FileNotFoundError, match=r"robot\.xml, included by .*scene\.xml"):
+        scene_files(scene)
+    with pytest.raises(FileNotFoundError, match="missing.xml"):
+        scene_files(tmp_path / "missing.xml")
