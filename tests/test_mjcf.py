@@ -7,8 +7,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
-import yaml
-from conftest import REPO
+from conftest import REPO, initial_posture_deg
 
 from icub_affordance.body import OBJECT_NAMES, Robot, scene_files
 
@@ -44,13 +43,8 @@ def test_the_robot_file_compiles_alone():
     assert robot.nu == scene.nu and robot.nq == scene.nq - 7 * len(OBJECT_NAMES)
 
 
-def configured_initial_posture() -> np.ndarray:
-    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
-    return np.array(config["initial_posture_deg"], dtype=float)
-
-
 def test_the_initial_keyframe_is_the_configured_initial_posture(robot):
-    posture = configured_initial_posture()
+    posture = initial_posture_deg()  # config/config.yaml
     key = robot.model.key("initial")
     np.testing.assert_allclose(robot.keyframe_deg("initial"), posture, rtol=0, atol=1e-9)
     np.testing.assert_allclose(np.degrees(key.ctrl), posture, rtol=0, atol=1e-9)
