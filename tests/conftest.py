@@ -5,12 +5,20 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 
 from icub_affordance.body import Robot
 
 REPO = Path(__file__).resolve().parents[1]
+
+
+def initial_posture_deg() -> np.ndarray:
+    """The common initial posture (Figure 1's 16 DoF, degrees), as the pipeline reads it: the key
+    ``initial_posture_deg`` of config/config.yaml. A fresh array at every call."""
+    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    return np.array(config["initial_posture_deg"], dtype=float)
 
 
 @pytest.fixture

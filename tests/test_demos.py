@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import initial_posture_deg
 
 from icub_affordance.body import (
     DOF_NAMES,
@@ -16,7 +17,7 @@ from icub_affordance.body import (
 from icub_affordance.demos import GRIPS, DemoConfig, is_grasp, make_demo, object_demos
 from icub_affordance.io import load_npz
 
-INITIAL = np.array([-50, 30, 0, 70, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0], dtype=float)
+INITIAL = initial_posture_deg()  # config/config.yaml
 T = {name: i for i, name in enumerate(TOUCH_NAMES)}
 
 

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import initial_posture_deg
 
 from icub_affordance.body import TOUCH_NAMES, Robot
 from icub_affordance.demos import GraspPlan, execute_grasp, pinch_point
 
-INITIAL = np.array([-50, 30, 0, 70, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0], dtype=float)
+INITIAL = initial_posture_deg()  # config/config.yaml
 
 
 @pytest.fixture(scope="module")

@@ -5,8 +5,9 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 import pytest
+from conftest import initial_posture_deg
 
-from icub_affordance.body import DOF_NAMES, N_DOF, to_degrees, to_normalised
+from icub_affordance.body import DOF_NAMES, N_ARM_DOF, N_DOF, to_degrees, to_normalised
 
 # The paper's Figure 1, typed from the paper: (actuator, min deg, max deg).
 FIGURE1_TABLE = [
@@ -47,8 +48,8 @@ HAND_COUPLING = {
         "r_little_distal",
     },
 }
-# An arm posture with the hand in free air, well above the table.
-FREE_ARM = [-50, 30, 0, 70, 0, 0, 0]
+# An arm posture with the hand in free air, well above the table: the initial posture's arm.
+FREE_ARM = initial_posture_deg()[:N_ARM_DOF]
 
 
 def hand_joints(model) -> list[str]:

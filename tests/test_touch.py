@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import initial_posture_deg
 
-from icub_affordance.body import N_DOF, TOUCH_NAMES
+from icub_affordance.body import N_ARM_DOF, N_DOF, TOUCH_NAMES
 
-FREE_ARM = [-50, 30, 0, 70, 0, 0, 0]
+FREE_ARM = initial_posture_deg()[:N_ARM_DOF]  # the initial posture's arm: the hand in free air
 PALM_UP_ARM = [-40, 30, 0, 100, -90, -60, 0]  # palm normal within 12 degrees of vertical
 
 

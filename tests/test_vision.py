@@ -6,11 +6,12 @@ import itertools
 
 import numpy as np
 import pytest
+from conftest import initial_posture_deg
 
 from icub_affordance.body import OBJECT_NAMES, Robot
 from icub_affordance.vision import VisionConfig, foveate, sobel_rgb, to_map, visual_maps
 
-INITIAL = np.array([-50, 30, 0, 70, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0], dtype=float)
+INITIAL = initial_posture_deg()  # config/config.yaml
 
 
 def compute_maps() -> dict[str, np.ndarray]:

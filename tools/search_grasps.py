@@ -27,8 +27,6 @@ from icub_affordance.demos import (
     pinch_point,
 )
 
-INITIAL = np.array([-50, 30, 0, 70, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 0, 0], dtype=float)
-
 
 def candidates(robot: Robot, grip: str, size: str):
     """(label, plan) pairs: the hand-shape families explored for each grip and size."""
@@ -71,6 +69,7 @@ def candidates(robot: Robot, grip: str, size: str):
 
 def score(robot: Robot, grip: str, size: str, plan: GraspPlan, config: DemoConfig) -> int:
     objects = [name for name, info in OBJECTS.items() if info.size == size]
+    initial = robot.keyframe_deg("initial")  # the demos' initial posture (config's, checked)
     passed = 0
     for obj, dyaw, dtilt in itertools.product(objects, [-5, 0, 5], [-5, 0, 5]):
         trial = GraspPlan(
@@ -80,7 +79,7 @@ def score(robot: Robot, grip: str, size: str, plan: GraspPlan, config: DemoConfi
             plan.yaw_deg + dyaw,
             plan.tilt_deg + dtilt,
         )
-        outcome = execute_grasp(robot, obj, trial, INITIAL, lift=config.lift_m)
+        outcome = execute_grasp(robot, obj, trial, initial, lift=config.lift_m)
         passed += is_grasp(grip, outcome.touch, outcome.lift_height, config)
     return passed
 

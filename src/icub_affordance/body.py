@@ -7,6 +7,7 @@ paper's Figure 1 (names, order, ranges) is defined once and checked against the 
 from __future__ import annotations
 
 import os
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -35,6 +36,38 @@ from .spec import (  # noqa: E402, F401  (re-exported: the body's interface)
 
 #: The scene shipped with the project.
 SCENE_PATH = Path(__file__).resolve().parents[2] / "assets" / "icub_scene.xml"
+
+
+def scene_files(scene_path: str | os.PathLike) -> list[Path]:
+    """The scene file and every file it includes (``<include file=...>``), recursively.
+
+    In the order MuJoCo reads them, the scene first. An include is looked up as MuJoCo does:
+    relative to the scene's directory, then to the including file's. The paths stay relative if
+    ``scene_path`` is: they are what a Snakemake rule that loads the scene lists as inputs.
+    """
+    scene = Path(scene_path)
+    files: list[Path] = []
+
+    def visit(path: Path, included_by: Path | None) -> None:
+        if path in files:
+            raise ValueError(f"{included_by} includes {path} a second time (MuJoCo refuses)")
+        if not path.is_file():
+            where = f", included by {included_by}" if included_by else ""
+            raise FileNotFoundError(f"MuJoCo scene file not found: {path}{where}")
+        files.append(path)
+        try:
+            root = ET.parse(path).getroot()
+        except ET.ParseError as err:
+            raise ValueError(f"{path} is not well-formed XML: {err}") from err
+        for element in root.iter("include"):
+            name = element.get("file")
+            if not name:
+                raise ValueError(f"{path}: an <include> without a file attribute")
+            candidates = [Path(os.path.normpath(d / name)) for d in (scene.parent, path.parent)]
+            visit(next((c for c in candidates if c.is_file()), candidates[-1]), path)
+
+    visit(Path(os.path.normpath(scene)), None)
+    return files
 
 
 def resize_object(spec: mujoco.MjSpec, name: str, size: float) -> None:
@@ -163,6 +196,19 @@ class Robot:
             for j in (lead, *self.followers[k]):
                 data.qpos[self.model.jnt_qposadr[j]] = q[k]
                 data.qvel[self.model.jnt_dofadr[j]] = 0.0
+
+    def keyframe_deg(self, name: str = "initial") -> np.ndarray:
+        """The 16 controlled angles (degrees, Figure 1's order) of one of the model's keyframes.
+
+        ``initial`` is the common initial posture, the config key ``initial_posture_deg`` (a test
+        checks that they agree).
+        """
+        try:
+            key = self.model.key(name)
+        except KeyError as err:
+            names = [self.model.key(i).name for i in range(self.model.nkey)]
+            raise ValueError(f"the scene has no keyframe {name!r}; it has {names}") from err
+        return np.degrees(key.qpos[self.qpos_adr])
 
     def command_deg(self, angles_deg: np.ndarray) -> None:
         """Set the 16 position-servo targets; the physics moves the arm there."""
