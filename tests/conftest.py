@@ -26,7 +26,7 @@ def scratch_workflow(path: Path) -> Path:
     import shutil
 
     path.mkdir(parents=True, exist_ok=True)
-    for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
+    for name in ("Snakefile", "workflow", "config", "assets", "src", "benchmarks", ".test"):
         (path / name).symlink_to(REPO / name)
     # the book's sources are copied: its build writes beside them
     shutil.copytree(REPO / "book", path / "book", ignore=shutil.ignore_patterns("_build", "_data"))
