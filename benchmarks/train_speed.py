@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import torch
+import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
@@ -37,7 +38,10 @@ def main(plain_sample: int = 1500) -> None:
     torch.set_num_threads(1)
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     m = synthetic_materials()
-    config = TrainConfig()
+    network = yaml.safe_load((Path(__file__).parents[1] / "config" / "config.yaml").read_text())[
+        "network"
+    ]
+    config = TrainConfig(**{k: v for k, v in network.items() if k != "networks"})
 
     start = time.perf_counter()
     train_network(m, config, "A", seed=1)

@@ -8,8 +8,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from configs import merged
 
 from icub_affordance.body import Robot
+from icub_affordance.demos import DemoConfig
+from icub_affordance.som import SOMConfig
+from icub_affordance.train import TrainConfig
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -17,8 +21,7 @@ REPO = Path(__file__).resolve().parents[1]
 def initial_posture_deg() -> np.ndarray:
     """The common initial posture (Figure 1's 16 DoF, degrees), as the pipeline reads it: the key
     ``initial_posture_deg`` of config/config.yaml. A fresh array at every call."""
-    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
-    return np.array(config["initial_posture_deg"], dtype=float)
+    return np.array(load_config()["initial_posture_deg"], dtype=float)
 
 
 @pytest.fixture
@@ -31,13 +34,26 @@ def robot() -> Robot:
 CONFIG = REPO / "config" / "config.yaml"
 TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
 
-sys.path.insert(0, str(REPO / "workflow" / "lib"))
-from configs import merged  # noqa: E402
-
 
 def load_config() -> dict:
     """The default config, as the pipeline reads it."""
     return yaml.safe_load(CONFIG.read_text())
+
+
+def demo_config(**changes) -> DemoConfig:
+    """The demonstrations' settings of config/config.yaml (the one source), with some changed."""
+    return DemoConfig(**(load_config()["demos"] | changes))
+
+
+def train_config(**changes) -> TrainConfig:
+    """The networks' training settings of config/config.yaml, with some changed."""
+    network = {k: v for k, v in load_config()["network"].items() if k != "networks"}
+    return TrainConfig(**(network | changes))
+
+
+def som_config(**changes) -> SOMConfig:
+    """The maps' settings of config/config.yaml, with some changed."""
+    return SOMConfig(**(load_config()["soms"] | changes))
 
 
 def load_test_config() -> dict:
@@ -50,7 +66,7 @@ def scratch_workflow(path: Path) -> Path:
     import shutil
 
     path.mkdir(parents=True, exist_ok=True)
-    for name in ("Snakefile", "workflow", "config", "assets", "src", ".test"):
+    for name in ("Snakefile", "workflow", "config", "assets", "src", "benchmarks", ".test"):
         (path / name).symlink_to(REPO / name)
     # the book's sources are copied: its build writes beside them
     shutil.copytree(REPO / "book", path / "book", ignore=shutil.ignore_patterns("_build", "_data"))
@@ -59,7 +75,6 @@ def scratch_workflow(path: Path) -> Path:
 
 def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
     import subprocess
-    import sys
 
     return subprocess.run(
         [sys.executable, "-m", "snakemake", *args, "--configfile", str(config)],

@@ -17,13 +17,11 @@ import sys
 from pathlib import Path
 
 import pytest
+from code_deps import CodeGraph, page_code
 from conftest import REPO, run_snakemake
 
-sys.path.insert(0, str(REPO / "workflow" / "lib"))
-from code_deps import CodeGraph, page_code  # noqa: E402
-
 SCRIPTS = REPO / "workflow" / "scripts"
-PACKAGE = REPO / "src" / "icub_affordance"
+ROOTS = [REPO / "src", REPO / "workflow" / "lib", REPO / "benchmarks"]  # the project's code
 
 
 def write_package(root: Path, modules: dict[str, str]) -> Path:
@@ -36,7 +34,7 @@ def write_package(root: Path, modules: dict[str, str]) -> Path:
 
 def test_closure_follows_relative_absolute_and_nested_imports(tmp_path):
     src = write_package(
-        tmp_path,
+        tmp_path / "src",
         {
             "a": "from .b import x\n",
             "b": "def f():\n    from icub_affordance import c\n",
@@ -45,13 +43,26 @@ def test_closure_follows_relative_absolute_and_nested_imports(tmp_path):
             "lonely": "",
         },
     )
-    graph = CodeGraph(src)
-    names = lambda paths: [p.stem for p in paths]  # noqa: E731
-    assert names(graph.closure(["from icub_affordance.a import y"])) == ["__init__", "a", "b", "c"]
-    assert names(graph.closure(["import icub_affordance.d as d"])) == [
-        "__init__", "a", "b", "c", "d",
+    lib = tmp_path / "lib"
+    (lib / "tools").mkdir(parents=True)
+    (lib / "tools" / "__init__.py").write_text("from .words import w\n")
+    (lib / "tools" / "words.py").write_text("from icub_affordance.c import z\n")
+    graph = CodeGraph([src, lib])
+
+    def names(source: str) -> list[str]:
+        return sorted(str(p.relative_to(tmp_path)) for p in graph.closure([source]))
+
+    package = "src/icub_affordance/"
+    assert names("from icub_affordance.a import y") == [
+        f"{package}{m}.py" for m in ("__init__", "a", "b", "c")
+    ]
+    assert names("import icub_affordance.d as d") == [
+        f"{package}{m}.py" for m in ("__init__", "a", "b", "c", "d")
+    ]
+    assert names("from tools import w") == [
+        "lib/tools/__init__.py", "lib/tools/words.py", f"{package}__init__.py", f"{package}c.py",
     ]  # fmt: skip
-    assert names(graph.closure(["import os"])) == ["__init__"]
+    assert names("import os\nimport numpy") == []
 
 
 def test_page_code_reads_code_cells_without_their_options(tmp_path):
@@ -68,7 +79,7 @@ def test_page_code_reads_code_cells_without_their_options(tmp_path):
 
 
 def imported_by_python(source: str) -> set[str]:
-    """The package modules that running a source's module-level imports actually loads."""
+    """The project files that running a source's module-level imports actually loads."""
     imports = [
         ast.unparse(node)
         for node in ast.parse(source).body
@@ -78,16 +89,21 @@ def imported_by_python(source: str) -> set[str]:
         [
             *imports,
             "import sys, json",
-            "print(json.dumps(sorted(m.split('.', 1)[1] for m in sys.modules "
-            "if m.startswith('icub_affordance.'))))",
+            "print(json.dumps([getattr(m, '__file__', None) for m in list(sys.modules.values())]))",
         ]
     )
-    env = os.environ | {"MUJOCO_GL": "egl", "PYTHONPATH": str(REPO / "src")}
+    env = os.environ | {
+        "MUJOCO_GL": "egl",
+        "PYTHONPATH": os.pathsep.join(str(root) for root in ROOTS),
+    }
     out = subprocess.run(
         [sys.executable, "-c", probe], capture_output=True, text=True, env=env, cwd=REPO
     )
     assert out.returncode == 0, out.stderr[-2000:]
-    return set(json.loads(out.stdout.splitlines()[-1])) | {"__init__"}
+    files = {Path(f).resolve() for f in json.loads(out.stdout.splitlines()[-1]) if f}
+    return {
+        str(f.relative_to(REPO)) for f in files if any(f.is_relative_to(root) for root in ROOTS)
+    }
 
 
 def rule_scripts() -> dict[str, str]:
@@ -114,18 +130,18 @@ def script_sources(script: str) -> str:
 
 @pytest.mark.slow
 def test_derived_code_covers_what_python_imports():
-    graph = CodeGraph(REPO / "src")
+    graph = CodeGraph(ROOTS)
     for script in sorted({*rule_scripts().values()}):
         source = script_sources(script)
-        derived = {p.stem for p in graph.closure([source])}
+        derived = {str(p.relative_to(REPO)) for p in graph.closure([source])}
         missing = imported_by_python(source) - derived
         assert not missing, f"{script}: imports {missing} but its rule does not list them"
 
 
 @pytest.mark.slow
 def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
-    """For every module: touch it in a copy of the finished test run, dry-run, and every rule
-    of that run whose code imports the module is scheduled."""
+    """For every module of the project: touch it in a copy of the finished test run, dry-run,
+    and every rule of that run whose code imports the module is scheduled."""
     work = tmp_path / "work"
     work.mkdir()
     # copies with their times kept (a new link would count as a newer input)
@@ -134,14 +150,17 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
             shutil.copytree(built / name, work / name)
         else:
             shutil.copy2(built / name, work / name)
+    shutil.copytree(REPO / "benchmarks", work / "benchmarks")
     done = dry_run_rules(work, "--rerun-triggers", "mtime")
     assert done == set(), f"the finished run is not up to date: {done}"
     imports = {s: imported_by_python(script_sources(s)) for s in {*rule_scripts().values()}}
     in_target = rules_in_target(work)
-    later = os.stat(work / "src" / "icub_affordance" / "io.py").st_mtime + 3600
-    for module in sorted(p.stem for p in (work / "src" / "icub_affordance").glob("*.py")):
-        path = work / "src" / "icub_affordance" / f"{module}.py"
+    modules = sorted({m for files in imports.values() for m in files})
+    assert "src/icub_affordance/train.py" in modules and "workflow/lib/icub_book/text.py" in modules
+    for module in modules:
+        path = work / module
         before = path.stat()
+        later = before.st_mtime + 3600
         os.utime(path, (later, later))
         scheduled = dry_run_rules(work, "--rerun-triggers", "mtime")
         os.utime(path, (before.st_atime, before.st_mtime))
@@ -150,7 +169,7 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
             for rule, script in rule_scripts().items()
             if rule in in_target and module in imports[script]
         }
-        assert expected <= scheduled, f"{module}.py edited: {expected - scheduled} not rerun"
+        assert expected <= scheduled, f"{module} edited: {expected - scheduled} not rerun"
 
 
 def dry_run_rules(work: Path, *args: str) -> set[str]:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import initial_posture_deg
+from conftest import demo_config, initial_posture_deg
 
 from icub_affordance.body import (
     DOF_NAMES,
@@ -14,7 +14,7 @@ from icub_affordance.body import (
     Robot,
     to_normalised,
 )
-from icub_affordance.demos import GRIPS, DemoConfig, is_grasp, make_demo, object_demos
+from icub_affordance.demos import GRIPS, is_grasp, make_demo, object_demos
 from icub_affordance.io import load_npz
 
 INITIAL = initial_posture_deg()  # config/config.yaml
@@ -39,7 +39,7 @@ def test_forty_sequences_of_ten_steps_normalised(demos):
 
 def test_every_final_posture_really_grasps(demos):
     final = demos["touch"][:, :, :, -1]
-    config = DemoConfig()
+    config = demo_config()
     for o, obj in enumerate(OBJECT_NAMES):
         for s in range(5):
             power, precision = final[o, 0, s], final[o, 1, s]
@@ -86,7 +86,7 @@ def test_power_and_precision_differ_in_the_fingers(demos):
 
 def test_demos_are_the_same_on_every_run():
     robot = Robot()
-    config = DemoConfig(sequences=2)
+    config = demo_config(sequences=2)
     a = object_demos(robot, "small_cube", INITIAL, 7, config)
     b = object_demos(robot, "small_cube", INITIAL, 7, config)
     for key in a:
@@ -96,7 +96,7 @@ def test_demos_are_the_same_on_every_run():
 
 
 def test_grasp_check():
-    config = DemoConfig()
+    config = demo_config()
     touch = np.zeros(6)
     assert not is_grasp("precision", touch, 0.05, config)
     touch[[T["touch_thumb"], T["touch_index"]]] = 1.0
@@ -111,14 +111,14 @@ def test_grasp_check():
 
 
 def test_a_demo_that_cannot_grasp_fails_with_its_name():
-    config = DemoConfig(max_attempts=1, lift_m=0.05, min_lift_m=0.05, touch_threshold=1e6)
+    config = demo_config(max_attempts=1, lift_m=0.05, min_lift_m=0.05, touch_threshold=1e6)
     with pytest.raises(RuntimeError, match="small_ball/precision/sequence 3"):
         make_demo(Robot(), "small_ball", "precision", 3, INITIAL, 1, config, "small")
 
 
 def test_inconsistent_lift_settings_are_refused():
     with pytest.raises(ValueError, match="min_lift_m"):
-        DemoConfig(lift_m=0.02, min_lift_m=0.03)
+        demo_config(lift_m=0.02, min_lift_m=0.03)
 
 
 @pytest.mark.parametrize("obj", OBJECT_NAMES)

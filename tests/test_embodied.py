@@ -7,9 +7,10 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import demo_config
 
 from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
-from icub_affordance.demos import DemoConfig, grip_in_contact, grip_used
+from icub_affordance.demos import grip_in_contact, grip_used
 from icub_affordance.embodied import network_policy, replay_policy, run_trial, success_table
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
@@ -76,7 +77,7 @@ def test_the_controller_follows_a_correct_plan(demos):
     """Replaying a demonstration's own servo targets through the embodied controller grasps and
     lifts the object: a network that output them would succeed."""
     robot = Robot()
-    config = DemoConfig()
+    config = demo_config()
     objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
     for o, g in ((0, 0), (1, 1), (2, 0), (3, 1)):  # each object, power and precision
         plan = to_normalised(demos["commands_deg"][o, g, 0])
@@ -93,7 +94,7 @@ def test_the_controller_follows_a_correct_plan(demos):
 def test_a_plan_that_never_reaches_the_object_fails(demos):
     robot = Robot()
     start = demos["angles"][0, 0, 0, 0]
-    out = run_trial(robot, "big_ball", lambda t, p: start, start, 10, "power", DemoConfig())
+    out = run_trial(robot, "big_ball", lambda t, p: start, start, 10, "power", demo_config())
     assert grip_used(out.touch, 0.01) == "none"
     assert np.isnan(out.lift_m)  # not lifted: the grip's fingers never touched
     assert out.qpos.shape[0] == 11  # a state per step and after the lift test
@@ -117,7 +118,7 @@ def test_embodied_trials_have_the_evaluation_columns_and_the_physical_outcome(bu
     assert set(embodied["grip_used"]) <= {"power", "precision", "none"}
     assert embodied["final_error"].between(0, 1).all()
     # success is exactly: the required grip's fingers touch, and the object rose with the hand
-    config = DemoConfig()
+    config = demo_config()
     touch = embodied[[f"touch_{n}" for n in ("thumb", "index", "middle", "ring", "little", "palm")]]
     in_contact = [
         grip_in_contact(g, t, config.touch_threshold)

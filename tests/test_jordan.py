@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import torch
+from conftest import train_config
 
 from icub_affordance.jordan import N_INPUT, OnlineTrainer, Weights, run_closed_loop
 from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
@@ -12,7 +13,6 @@ from icub_affordance.train import (
     CATEGORISATION,
     GRASPING,
     Materials,
-    TrainConfig,
     context,
     mapping_of,
     schedule,
@@ -69,7 +69,7 @@ def test_fast_trainer_equals_the_plain_torch_loop():
 
 def test_training_lowers_the_error():
     m = synthetic_materials()
-    config = TrainConfig(iterations=2000, phase1_iterations=1000)
+    config = train_config(iterations=2000, phase1_iterations=1000)
     _, curve = train_network(m, config, "A", seed=4)
     assert curve["rmse"][:100].mean() > 2 * curve["rmse"][900:1000].mean()
 
@@ -104,7 +104,7 @@ def test_categorisation_cue_is_on_at_the_first_step_only_or_throughout():
 
 
 def test_schedule_has_two_phases_half_and_half():
-    config = TrainConfig(iterations=12000, phase1_iterations=6000)
+    config = train_config(iterations=12000, phase1_iterations=6000)
     tasks, objects, sequences = schedule(config, 4, 4, np.random.default_rng(0))
     assert (tasks[:6000] == GRASPING).all()
     assert (tasks[6000:] == CATEGORISATION).sum() == 3000
@@ -122,6 +122,6 @@ def test_mappings_and_targets():
 
 def test_bad_training_settings_are_refused():
     with pytest.raises(ValueError, match="categorisation_cue"):
-        TrainConfig(categorisation_cue="sometimes")
+        train_config(categorisation_cue="sometimes")
     with pytest.raises(ValueError, match="even"):
-        TrainConfig(iterations=101, phase1_iterations=50)
+        train_config(iterations=101, phase1_iterations=50)

@@ -8,8 +8,9 @@ import mujoco
 import numpy as np
 import pytest
 from conftest import REPO, initial_posture_deg
+from scene_files import scene_files
 
-from icub_affordance.body import OBJECT_NAMES, Robot, scene_files
+from icub_affordance.body import OBJECT_NAMES, Robot
 
 SCENE = REPO / "assets" / "icub_scene.xml"
 ROBOT = REPO / "assets" / "icub_right_arm.xml"

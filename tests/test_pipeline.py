@@ -146,7 +146,9 @@ def replace_with_edited_copy(workdir: Path, relative: str) -> None:
     target.write_text(target.read_text() + comment)
 
 
-@pytest.mark.parametrize("edited", ["assets/icub_scene.xml", "src/icub_affordance/body.py"])
+@pytest.mark.parametrize(
+    "edited", ["assets/icub_scene.xml", "assets/icub_right_arm.xml", "src/icub_affordance/body.py"]
+)
 def test_an_edit_of_the_scene_or_its_code_reruns_the_body_rule(workdir, edited):
     target = "data/body/joint_table.csv"
     assert snakemake(workdir, "-c1", target).returncode == 0

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import pytest
 from conftest import REPO, load_test_config, run_snakemake, scratch_workflow
-
-from icub_affordance.sweep_cost import planned_jobs
+from sweep_cost import planned_jobs
 
 COMPARED = [
     "data/demos/demos.npz",
@@ -148,8 +147,7 @@ def dry_run(workdir, *args, rule="book"):
 
 
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
-
-    from icub_affordance.report import sweep_size
+    from icub_book.text import sweep_size
 
     workdir = scratch_workflow(tmp_path)
     config = load_test_config()
@@ -167,11 +165,16 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         "data/benchmarks/sweep_cost.csv",
     ):
         assert output in book_inputs, output
+    # the book's sentences about the sweep and its cost are the findings rule's
+    _, findings_inputs = dry_run(workdir, "--config", "robustness=True", rule="findings")
+    assert {"data/sweep/summary.csv", "data/benchmarks/sweep_cost.csv"} <= set(findings_inputs)
     # timed last, with nothing beside it: after the sweep and everything else the book shows
+    # (but the findings, which read the cost table)
     _, cost_inputs = dry_run(workdir, "--config", "robustness=True", rule="sweep_cost")
     for name in book_inputs:
         if name.startswith("data/") and name != "data/benchmarks/sweep_cost.csv":
-            assert name in cost_inputs, name
+            if not name.startswith(("data/book/findings.json", "data/book/tables/")):
+                assert name in cost_inputs, name
 
 
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
@@ -189,8 +192,7 @@ def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_pat
 
 
 def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
-
-    from icub_affordance.sweep_cost import SWEEP_INPUTS, measure
+    from sweep_cost import SWEEP_INPUTS, measure
 
     config = load_test_config()
     table = measure(built, config, [1], cores=2, log=lambda _: None)
@@ -206,7 +208,7 @@ def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
 
 
 def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
-    from icub_affordance.sweep_cost import cost_table, read_cost_table, write_cost_table
+    from sweep_cost import cost_table, read_cost_table, write_cost_table
 
     table = cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2, other_load=[0.0, 0.01, 0.5])
     assert table["seconds_per_replication"].tolist() == [20.0, 12.5, 11.0]
@@ -226,15 +228,14 @@ def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
 
 @pytest.mark.parametrize("counts", [[], [0, 4], [1, 1], [1.5], ["4"]])
 def test_bad_replication_counts_are_refused(counts):
-    from icub_affordance.sweep_cost import check_counts
+    from sweep_cost import check_counts
 
     with pytest.raises(ValueError, match="sweep_cost"):
         check_counts(counts)
 
 
 def test_the_cost_config_times_replications_of_the_main_runs_networks():
-
-    from icub_affordance.sweep_cost import cost_config
+    from sweep_cost import cost_config
 
     config = load_test_config() | {"robustness": True}
     scratch = cost_config(config, 3)
@@ -248,8 +249,8 @@ def test_the_cost_config_times_replications_of_the_main_runs_networks():
 
 
 def test_the_cost_words_follow_the_numbers():
-    from icub_affordance.report import cost_findings
-    from icub_affordance.sweep_cost import cost_table
+    from icub_book.text import cost_findings
+    from sweep_cost import cost_table
 
     linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
     assert "10.0 s per replication and an intercept of 10.0 s" in linear
@@ -269,8 +270,7 @@ def test_the_cost_words_follow_the_numbers():
 
 def test_the_sweep_words_follow_the_numbers():
     import pandas as pd
-
-    from icub_affordance.report import sweep_findings, sweep_summary_display
+    from icub_book.text import sweep_findings, sweep_summary_display
 
     row = {
         "learning_rate": 0.075,
@@ -306,8 +306,7 @@ def test_the_sweep_words_follow_the_numbers():
 
 def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers():
     import yaml
-
-    from icub_affordance.report import ROBUSTNESS_COMMAND, robustness_not_run
+    from icub_book.text import ROBUSTNESS_COMMAND, robustness_not_run
 
     config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
     text = robustness_not_run(config)

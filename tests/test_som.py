@@ -6,10 +6,10 @@ import itertools
 
 import numpy as np
 import pytest
+from conftest import som_config
 
 from icub_affordance.io import load_npz
 from icub_affordance.som import (
-    SOMConfig,
     active_units,
     object_activation,
     train_som,
@@ -48,7 +48,7 @@ def test_cluster_size_comes_from_the_input_not_the_name():
     few[4:6, 4:6] = 1
     many = np.zeros((10, 10))
     many[2:8, 2] = many[2:8, 7] = many[2, 2:8] = many[7, 2:8] = 1
-    config = SOMConfig(iterations=200)
+    config = som_config(iterations=200)
     som = train_som(np.array([few.ravel(), many.ravel()]), config, seed=1)
     small = object_activation(som, few, config)
     large = object_activation(som, many, config)
@@ -70,6 +70,6 @@ def test_the_two_task_patterns_differ(soms):
 
 def test_soms_are_deterministic():
     maps = np.random.default_rng(3).integers(0, 2, (4, 10, 10))
-    a = train_soms(maps, SOMConfig(iterations=100), 5)
-    b = train_soms(maps, SOMConfig(iterations=100), 5)
+    a = train_soms(maps, som_config(iterations=100), 5)
+    b = train_soms(maps, som_config(iterations=100), 5)
     np.testing.assert_array_equal(a.goal_act, b.goal_act)

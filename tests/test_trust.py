@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 import yaml
 from conftest import REPO, TEST_CONFIG, load_test_config, run_snakemake, scratch_workflow
+from sweep_cost import planned_jobs
 
 from icub_affordance.body import Robot
 from icub_affordance.io import load_npz
-from icub_affordance.sweep_cost import planned_jobs
 
 COMPARED = [
     "data/vision/visual_maps.npz",

@@ -14,8 +14,10 @@ from __future__ import annotations
 
 import argparse
 import itertools
+from pathlib import Path
 
 import numpy as np
+import yaml
 
 from icub_affordance.body import OBJECTS, Robot
 from icub_affordance.demos import (
@@ -89,7 +91,8 @@ def main() -> None:
     parser.add_argument("grip", choices=["power", "precision"])
     parser.add_argument("size", choices=["large", "small"])
     args = parser.parse_args()
-    robot, config = Robot(), DemoConfig()
+    settings = yaml.safe_load((Path(__file__).parents[1] / "config" / "config.yaml").read_text())
+    robot, config = Robot(), DemoConfig(**settings["demos"])
     results = []
     for label, plan in candidates(robot, args.grip, args.size):
         results.append((score(robot, args.grip, args.size, plan, config), label))

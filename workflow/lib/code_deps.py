@@ -1,82 +1,87 @@
-"""Which files of the project a script runs: its imports of the package, followed transitively.
+"""Which files of the project a script runs: its imports, followed transitively.
 
-Snakemake does not track what a `script:` imports, so every rule lists that code as inputs,
-and editing a module reruns exactly the rules that run it. The lists are derived here from the
-sources themselves (with `ast`), never typed by hand, so they cannot drift.
+Snakemake does not track what a `script:` imports, so every rule lists that code as inputs, and
+editing a module reruns exactly the rules that run it. The lists are derived here from the
+sources themselves (with `ast`), never typed by hand, so they cannot drift. Only the project's
+own code counts: modules found under the given roots (the package's `src/`, `workflow/lib/`,
+`benchmarks/`); everything else (NumPy, MuJoCo, ...) is pinned by the lock.
 """
 
 from __future__ import annotations
 
 import ast
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from functools import cache
 from pathlib import Path
 
-PACKAGE = "icub_affordance"
-
-
-def _imported_modules(source: str, package: str, current: str | None) -> set[str]:
-    """Top-level names of `package` modules that this source imports, anywhere in it.
-
-    `current` is the importing module's own name inside the package (for relative imports),
-    None for a file outside it.
-    """
-    found: set[str] = set()
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                parts = alias.name.split(".")
-                if parts[0] == package:
-                    found.add(parts[1] if len(parts) > 1 else "__init__")
-        elif isinstance(node, ast.ImportFrom):
-            if node.level == 0:
-                parts = (node.module or "").split(".")
-                if parts[0] != package:
-                    continue
-                rest = parts[1:]
-            elif current is not None and node.level == 1:
-                rest = (node.module or "").split(".") if node.module else []
-            else:
-                continue
-            if rest:
-                found.add(rest[0])
-            else:  # `from icub_affordance import x` / `from . import x`: x may be a module
-                found.update(alias.name for alias in node.names)
-                found.add("__init__")
-    return found
-
 
 class CodeGraph:
-    """The package's modules under `root` (a `src/` folder) and what each imports."""
+    """The project's modules under `roots` and what each imports."""
 
-    def __init__(self, src: str | Path, package: str = PACKAGE) -> None:
-        self.package = package
-        self.directory = Path(src) / package
+    def __init__(self, roots: Sequence[str | Path]) -> None:
+        self.roots = tuple(Path(root) for root in roots)
 
-    def path(self, module: str) -> Path:
-        return self.directory / f"{module}.py"
+    def find(self, module: str) -> Path | None:
+        """The file of a dotted module name under the roots (a package: its `__init__.py`)."""
+        parts = module.split(".")
+        for root in self.roots:
+            for path in (
+                root.joinpath(*parts).with_suffix(".py"),
+                root.joinpath(*parts, "__init__.py"),
+            ):
+                if path.is_file():
+                    return path
+        return None
+
+    def _with_parents(self, module: str) -> set[str]:
+        """A module and the packages it sits in: importing it runs their `__init__` too."""
+        parts = module.split(".")
+        return {".".join(parts[:i]) for i in range(1, len(parts) + 1)}
+
+    def imports(self, source: str, module: str | None = None, is_package: bool = False) -> set[str]:
+        """The project modules a source imports, anywhere in it (functions included).
+
+        `module` is the source's own dotted name, for its relative imports (None: a script).
+        """
+        found: set[str] = set()
+        for node in ast.walk(ast.parse(source)):
+            if isinstance(node, ast.Import):
+                names = [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                if node.level:
+                    if module is None:
+                        continue
+                    package = module.split(".")
+                    package = package[: len(package) - node.level + (1 if is_package else 0)]
+                    base = ".".join([*package, *([node.module] if node.module else [])])
+                else:
+                    base = node.module or ""
+                # `from a import b`: b may be a module of package a
+                names = [base, *(f"{base}.{alias.name}" for alias in node.names)]
+            else:
+                continue
+            for name in names:
+                found |= {m for m in self._with_parents(name) if self.find(m) is not None}
+        return found
 
     @cache  # noqa: B019 (one graph per workflow, alive as long as it)
     def _direct(self, module: str) -> frozenset[str]:
-        source = self.path(module).read_text()
-        found = _imported_modules(source, self.package, module)
-        return frozenset(m for m in found if self.path(m).is_file())
+        path = self.find(module)
+        return frozenset(self.imports(path.read_text(), module, path.name == "__init__.py"))
 
     def closure(self, sources: Iterable[str]) -> list[Path]:
-        """The package files that these source texts import, transitively, `__init__` first."""
-        todo = {"__init__"}
+        """The project files that these source texts import, transitively, sorted."""
+        todo: set[str] = set()
         for source in sources:
-            todo |= {
-                m for m in _imported_modules(source, self.package, None) if self.path(m).is_file()
-            }
+            todo |= self.imports(source)
         seen: set[str] = set()
         while todo:
             module = todo.pop()
             if module not in seen:
                 seen.add(module)
                 todo |= self._direct(module) - seen
-        return [self.path(m) for m in sorted(seen, key=lambda m: (m != "__init__", m))]
+        return sorted({self.find(m) for m in seen})
 
 
 _CODE_CELL = re.compile(r"^```\{code-cell\}[^\n]*\n(.*?)^```", re.DOTALL | re.MULTILINE)

@@ -5,6 +5,7 @@ rule body_figure:
     """Figure 1: the robot at the table in its initial posture, the eye's view, the joint table."""
     input:
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("body_figure"),
     output:
         scene="data/body/figure1_scene.png",

@@ -42,6 +42,33 @@ if config["robustness"]:
     }
 
 
+# The book displays, the pipeline computes: the rule `findings` writes every number, verdict,
+# sentence and table the pages show (data/book/findings.json, data/book/tables/), from these
+# outputs; the pages only glue and display them. It reads no figure.
+FINDINGS_READS = [
+    "anova.json",
+    "ablation_anova.json",
+    "embodied_analysis.json",
+    "divergence.csv",
+    "divergence.json",
+    "hidden_explained.csv",
+    "demos.npz",
+    "demo_summary.csv",
+    "joint_table.csv",
+    "visual_maps.npz",
+    "soms.npz",
+    *(name for name in BOOK_DATA if name.startswith("curves/")),
+]
+FINDINGS_TABLES = ["anova_closed_loop", "anova_teacher_forced", "comparison", "cue_anova"]
+if config["robustness"]:
+    FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
+    FINDINGS_TABLES += ["sweep"]
+FINDINGS_CONFIG = ["seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep"]
+BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
+    f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES
+}
+
+
 rule rulegraph:
     """The DAG's rules and their dependencies, for the book's reproduction page."""
     input:
@@ -61,10 +88,38 @@ rule rulegraph:
         "{PYTHON} -m snakemake --rulegraph --nolock all > {output} 2> {log}"
 
 
+rule findings:
+    """Every number, verdict, sentence and table the book shows, from the run's outputs."""
+    input:
+        data=[BOOK_DATA[name] for name in FINDINGS_READS],
+        code=script_code("findings"),
+    output:
+        json=BOOK_FINDINGS["findings.json"],
+        tables=[BOOK_FINDINGS[f"tables/{table}.csv"] for table in FINDINGS_TABLES],
+    params:
+        # the settings the pages quote or the findings depend on (not, say, the figures')
+        config=settings({key: config[key] for key in FINDINGS_CONFIG}),
+        # the cue timing the ablation trained with (common.smk: ablation_run)
+        ablation_cue=RUN_CONFIG[ABLATION]["network"]["categorisation_cue"],
+        names=FINDINGS_READS,
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=5,
+    log:
+        "data/logs/findings.log",
+    benchmark:
+        "data/benchmarks/findings.tsv"
+    script:
+        "../scripts/findings.py"
+
+
 rule book:
-    """Stage the outputs the book shows, record the run's provenance, build the book strictly."""
+    """Stage the outputs the book shows and the findings, record the run's provenance, build the
+    book strictly."""
     input:
         data=list(BOOK_DATA.values()),
+        findings=list(BOOK_FINDINGS.values()),
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
         code=script_code("book", pages=sorted(glob.glob("book/*.md"))),
@@ -72,10 +127,8 @@ rule book:
         "book/_build/html/index.html",
     params:
         config=settings(config),
-        # the cue timing the ablation trained with (common.smk: ablation_run)
-        ablation_cue=RUN_CONFIG[ABLATION]["network"]["categorisation_cue"],
-        names=list(BOOK_DATA),
-    threads: 2  # pages execute side by side (icub_affordance.notebooks)
+        names=list(BOOK_DATA) + list(BOOK_FINDINGS),
+    threads: 2  # pages execute side by side (workflow/lib/icub_book/notebooks.py)
     resources:
         mem_mb=2000,
         runtime=15,

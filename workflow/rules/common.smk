@@ -8,19 +8,30 @@ from pathlib import Path
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
 from configs import merged  # noqa: E402
+from scene_files import scene_files  # noqa: E402
 
 # The interpreter running Snakemake, for the rare shell command that calls Python tools.
 PYTHON = sys.executable
 
-_CODE = CodeGraph(Path(workflow.basedir) / "src")
+# the project's own code: the package, the workflow's and the book's machinery, the benchmarks
+_CODE = CodeGraph(
+    [Path(workflow.basedir) / folder for folder in ("src", "workflow/lib", "benchmarks")]
+)
 
 
-def script_code(script, pages=()):
-    """The package modules that `workflow/scripts/{script}.py` imports (and the book `pages`, if
+def script_code(*scripts, pages=()):
+    """The project's modules that `workflow/scripts/{script}.py` imports (and the book `pages`, if
     given), transitively: inputs, so that editing one reruns exactly the rules that run it."""
-    path = Path(workflow.basedir) / "workflow" / "scripts" / f"{script}.py"
-    sources = [path.read_text(), *(page_code(page) for page in pages)]
+    folder = Path(workflow.basedir) / "workflow" / "scripts"
+    sources = [
+        *((folder / f"{script}.py").read_text() for script in scripts),
+        *(page_code(page) for page in pages),
+    ]
     return [str(p.relative_to(workflow.basedir)) for p in _CODE.closure(sources)]
+
+
+# The scene and every file it includes: inputs of every rule that loads it.
+SCENE_FILES = [str(path) for path in scene_files(config["scene"])]
 
 
 def settings(value):

@@ -5,6 +5,7 @@ rule demos_object:
     """Every grip and sequence of one object, made and checked in physics (one job per object)."""
     input:
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("demos_object"),
     output:
         "data/demos/parts/{object}.npz",
@@ -57,6 +58,7 @@ rule demo_filmstrip:
     input:
         demos=rules.demos.output.demos,
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("demo_filmstrip"),
     output:
         "data/demos/filmstrip.png",

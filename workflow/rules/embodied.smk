@@ -14,6 +14,7 @@ rule embodied:
         demos=rules.demos.output.demos,
         weights="data/train/net{net}/weights.npz",
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied"),
     output:
         trials="data/embodied/net{net}/trials.csv",
@@ -43,6 +44,7 @@ rule embodied_replay:
     input:
         demos=rules.demos.output.demos,
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied_replay"),
     output:
         "data/embodied/replay.csv",
@@ -97,6 +99,7 @@ rule embodied_filmstrip:
             f"data/embodied/net{net}/trials.csv" for net in EMBODIED_FILM_NETWORKS
         ],
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied_filmstrip"),
     output:
         "data/figures/embodied_filmstrip.png",

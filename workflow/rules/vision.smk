@@ -5,6 +5,7 @@ rule visual_maps:
     """Render each object on the spot, edge-filter, foveate and reduce to the 10x10 maps."""
     input:
         scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("visual_maps"),
     output:
         maps="data/vision/visual_maps.npz",

@@ -6,23 +6,33 @@ import subprocess
 import sys
 from pathlib import Path
 
-from icub_affordance.io import redirect_log, write_text
-from icub_affordance.notebooks import execute_pages, is_notebook
-from icub_affordance.report import provenance, read_benchmarks, stage
+# The book's machinery (workflow/lib) and the benchmarks (benchmarks/) are not in the package:
+# put them on the path (Snakemake adds only this script's own folder, at the end).
+WORKFLOW = Path(snakemake.scriptdir).resolve().parent
+sys.path[:0] = [str(WORKFLOW / "lib"), str(WORKFLOW.parent / "benchmarks")]
+
+from collect import benchmark_table, read_benchmarks  # noqa: E402
+from icub_book.notebooks import execute_pages, is_notebook  # noqa: E402
+from icub_book.run import provenance, stage  # noqa: E402
+
+from icub_affordance.io import atomic_path, redirect_log, write_text  # noqa: E402
 
 with redirect_log(snakemake.log[0]):
     book = Path("book")
     data_dir = book / "_data"
-    stage(dict(zip(snakemake.params.names, snakemake.input.data, strict=True)), data_dir)
+    files = [*snakemake.input.data, *snakemake.input.findings]
+    stage(dict(zip(snakemake.params.names, files, strict=True)), data_dir)
     run = provenance(dict(snakemake.params.config), Path.cwd())
-    run["ablation_cue"] = snakemake.params.ablation_cue
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
+    # how long each rule took, from the benchmark files of every job run so far (the reproduce
+    # page's table): made here, as the book is the last job and no rule can declare them
     benchmarks = {
         job: text
         for job, text in read_benchmarks(Path("data/benchmarks")).items()
         if not job.startswith("sweep/")
     }
-    write_text(data_dir / "benchmarks.json", json.dumps(benchmarks, indent=1) + "\n")
+    with atomic_path(data_dir / "benchmarks.csv") as tmp:
+        benchmark_table(benchmarks).to_csv(tmp)
     # a clean build every time: no pages left from an earlier table of contents, and the same
     # HTML as a first build (Sphinx links its CSS differently when the last build's is there)
     shutil.rmtree(book / "_build", ignore_errors=True)

@@ -1,73 +1,15 @@
-"""What the book's pages need: the run's provenance and numbers formatted for reading.
+"""The book's words: numbers formatted for reading, and the sentences generated from the run.
 
-The book rule copies every pipeline output it shows into ``book/_data`` and writes
-``book/_data/run.json``; the pages read only those, so each number and figure in the book is
-the pipeline's own output on that run.
+The verdicts behind the sentences (is an effect in the paper's direction, is it significant)
+are the package's (``icub_affordance.findings``); this module only says them. The rule
+``findings`` (``workflow/scripts/findings.py``) calls it, and the pages show what it wrote.
 """
 
 from __future__ import annotations
 
-import json
 import math
-import shutil
-import subprocess
-from datetime import UTC, datetime
-from importlib import metadata
-from pathlib import Path
 
-PACKAGES = (
-    "mujoco",
-    "numpy",
-    "torch",
-    "opencv-python-headless",
-    "minisom",
-    "statsmodels",
-    "pandas",
-    "matplotlib",
-    "snakemake",
-    "jupyter-book",
-)
-
-
-def provenance(config: dict, repo: Path) -> dict:
-    """The config used, the git commit, key package versions and the date of this run."""
-    try:
-        commit = subprocess.run(
-            ["git", "rev-parse", "HEAD"], cwd=repo, capture_output=True, text=True, check=True
-        ).stdout.strip()
-        dirty = bool(
-            subprocess.run(
-                ["git", "status", "--porcelain", "--untracked-files=no"],
-                cwd=repo,
-                capture_output=True,
-                text=True,
-                check=True,
-            ).stdout.strip()
-        )
-    except (OSError, subprocess.CalledProcessError):
-        commit, dirty = "unknown (not a git checkout)", False
-    return {
-        "config": config,
-        "commit": commit,
-        "uncommitted_changes": dirty,
-        "versions": {name: metadata.version(name) for name in PACKAGES},
-        "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
-    }
-
-
-def stage(files: dict[str, str], data_dir: Path) -> None:
-    """Copy the pipeline outputs the book shows into its data folder, under stable names."""
-    if data_dir.exists():
-        shutil.rmtree(data_dir)
-    data_dir.mkdir(parents=True)
-    for name, source in files.items():
-        target = data_dir / name
-        target.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(source, target)
-
-
-def load_run(data_dir: Path) -> dict:
-    return json.loads((data_dir / "run.json").read_text())
+from icub_affordance.findings import Verdict, interval_direction
 
 
 def fmt_p(p: float) -> str:
@@ -82,42 +24,173 @@ def fmt_f(effect: dict) -> str:
     )
 
 
-def benchmark_table(tables: dict[str, str]):
-    """Per rule: jobs, total and longest wall time (s), largest memory (MB), from Snakemake's
-    benchmark files (``{job name: file text}``, the job name's first part being the rule)."""
-    import io
+def pct(x: float) -> str:
+    return f"{100 * x:.0f}%"
 
-    import pandas as pd
 
-    rows = []
-    for job, text in tables.items():
-        table = pd.read_csv(io.StringIO(text), sep="\t")
-        memory = pd.to_numeric(table["max_rss"], errors="coerce").iloc[-1]
-        rows.append(
-            {
-                "rule": job.split("/")[0],
-                "seconds": float(table["s"].iloc[-1]),
-                "memory": float(memory),
-            }
+# The main effects: the front page, the results, the discussion and the chapter beyond the paper.
+
+
+def lower_or_higher(verdict: Verdict) -> str:
+    """The RMSE of the condition the paper reports as faster, against the other's."""
+    return "lower" if verdict.paper_direction else "higher"
+
+
+def paper_agreement(verdict: Verdict) -> str:
+    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
+    words = (
+        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
+    )
+    return words if verdict.significant else f"{words}, though not significantly"
+
+
+def significance(verdict: Verdict) -> str:
+    return ", significantly" if verdict.significant else ", but not significantly"
+
+
+def results_sentence(effect: str, verdict: Verdict) -> str:
+    """One effect of one test mode (results page)."""
+    if effect == "congruency":
+        words = (
+            "congruent trials were faster (lower RMSE) than incongruent ones"
+            if verdict.paper_direction
+            else "congruent trials were slower (higher RMSE) than incongruent ones"
         )
-    frame = pd.DataFrame(rows)
+    else:
+        words = (
+            "large objects were faster than small ones"
+            if verdict.paper_direction
+            else "large objects were slower than small ones"
+        )
+    return words + significance(verdict)
+
+
+def discussion(
+    congruency: Verdict,
+    size: Verdict,
+    forced_size: Verdict,
+    grip_distance: dict[str, float],
+    cue: str,
+) -> str:
+    """The discussion's paragraphs (MyST), from the closed-loop verdicts, the teacher-forced size
+    verdict, the distance between the two grips' demonstrations per size and the run's cue."""
+    text = []
+    if congruency.reproduced:
+        text.append(
+            "**The congruency effect is reproduced.** Networks that must answer with the grip an "
+            "object does not invite are slower (higher RMSE) than when the two agree, as "
+            "Tucker and Ellis found in people and as the paper reports. In this model the cause "
+            "can be seen directly: with the categorisation cue present only at the first step, "
+            "an incongruent movement often drifts toward the object's ordinary grasp, because "
+            "from the second step on the Goal map shows the same pattern as in a grasping trial."
+        )
+    else:
+        text.append(
+            "**The congruency effect is not reproduced in this run** (see the Results for the "
+            "numbers). The paper reports lower RMSE for congruent trials."
+        )
+    if size.reproduced:
+        text.append(
+            "**The size effect is reproduced:** large objects give a lower RMSE than small ones "
+            "in closed loop, as the paper reports."
+        )
+    elif size.reversed:
+        text.append(
+            "**The size effect is reversed.** The paper reports faster responses for large "
+            "objects; here, in closed loop, large objects give a significantly *higher* RMSE "
+            "than small ones. The RMSE mixes two things the paper's reaction-time analogy does "
+            "not separate: how long the conflict lasts and how far apart the two grips' postures "
+            "are. Over the demonstrations, the power and precision movements of the large "
+            f"objects differ by an RMS of {grip_distance['large']:.3f} (normalised angles) and "
+            f"those of the small objects by {grip_distance['small']:.3f}"
+            + (
+                ", so a drift toward the wrong grip costs more for a large object. "
+                if grip_distance["large"] > grip_distance["small"]
+                else ". "
+            )
+            + (
+                "In teacher-forced testing, where no drift can build up, large objects are "
+                "faster, as in the paper."
+                if forced_size.reproduced
+                else "Teacher-forced testing does not show the paper's size effect either."
+            )
+        )
+    else:
+        text.append(
+            "**The size effect is not significant in closed loop.** The paper reports faster "
+            "responses for large objects."
+        )
+    text.append(
+        "The reproduction notes list the choices behind these numbers. The most consequential is "
+        f"the reading of the categorisation cue (this run: `{cue}`); the next chapter sets the "
+        "other reading beside it, run by the same pipeline."
+    )
+    return "\n\n".join(text)
+
+
+def robot_error_sentence(verdict: Verdict) -> str:
+    """The congruency effect on the robot's final posture error."""
+    words = (
+        "the arm ended further from the demonstrated grasp in incongruent trials"
+        if verdict.paper_direction
+        else "the arm ended nearer the demonstrated grasp in incongruent trials"
+    )
+    return words + significance(verdict)
+
+
+def anova_or_undefined(anova: dict | None, effect: str) -> str:
     return (
-        frame.groupby("rule")
-        .agg(
-            jobs=("seconds", "size"),
-            total_s=("seconds", "sum"),
-            longest_s=("seconds", "max"),
-            max_memory_mb=("memory", "max"),
-        )
-        .sort_values("total_s", ascending=False)
+        fmt_f(anova[effect]) if anova else "undefined: every network scored the same in every cell"
     )
 
 
-def read_benchmarks(directory: Path) -> dict[str, str]:
-    return {
-        str(path.relative_to(directory).with_suffix("")): path.read_text()
-        for path in sorted(Path(directory).rglob("*.tsv"))
-    }
+def points_difference(difference: dict) -> str:
+    """A difference of rates in percentage points, with its 95% interval when there is one."""
+    if math.isnan(difference["ci_low"]):
+        return f"{100 * difference['mean']:+.0f} points"
+    return (
+        f"{100 * difference['mean']:+.0f} points (95% interval {100 * difference['ci_low']:+.0f} "
+        f"to {100 * difference['ci_high']:+.0f})"
+    )
+
+
+def cue_verdict(verdict: Verdict) -> str:
+    return (
+        "shows the congruency effect"
+        if verdict.reproduced
+        else "does not show the congruency effect"
+    )
+
+
+def cue_explanation(decides: bool) -> str:
+    if decides:
+        return (
+            "So the effect needs a cue that is gone after the first step. A cue that stays on "
+            "tells the network at every step which grip is wanted, and nothing is left for the "
+            "object's natural grip to pull against; a cue that is gone leaves the network to "
+            "hold its choice in its own posture feedback, and there the grasp the object affords "
+            "can win."
+        )
+    return "So in this run the cue's timing does not decide whether the effect appears."
+
+
+def divergence_sentence(first_step: int | None) -> str:
+    if first_step is not None:
+        return (
+            f"From step {first_step} on, incongruent trials are significantly further from "
+            "grasping at every step (paired t-tests over networks, p < 0.05): the visual input "
+            "keeps drawing the network toward the grasp it learned for the object, and in "
+            "incongruent trials the output must be held away from it. This is the conflict, in "
+            "the hidden layer."
+        )
+    return (
+        "Incongruent trials are not significantly further from grasping at every step to the end "
+        "(paired t-tests over networks): this run shows no lasting conflict in the hidden layer."
+    )
+
+
+def floor_sentence(at_floor: bool) -> str:
+    return "Success is near the floor, so it can say little about congruency." if at_floor else ""
 
 
 # The robustness page (book/robustness.md): the sweep and its cost, or a plain note that this
@@ -203,14 +276,12 @@ def effect_sentence(row, effect: str) -> str:
     n = int(row["replications"])
     mean, low, high = row[f"{effect}_effect"], row[f"{effect}_ci_low"], row[f"{effect}_ci_high"]
     interval = fmt_interval(mean, low, high)
-    if n < 2:
-        direction = f"{first} {'faster' if mean > 0 else 'slower'} than {second} (one replication)"
-    elif low > 0:
-        direction = f"{first} faster than {second}, the paper's direction"
-    elif high < 0:
-        direction = f"{first} slower than {second}, against the paper"
-    else:
-        direction = f"no consistent difference between {first} and {second}"
+    direction = {
+        "single": f"{first} {'faster' if mean > 0 else 'slower'} than {second} (one replication)",
+        "paper": f"{first} faster than {second}, the paper's direction",
+        "against": f"{first} slower than {second}, against the paper",
+        "unclear": f"no consistent difference between {first} and {second}",
+    }[interval_direction(n, mean, low, high)]
     sig, rev = int(row[f"{effect}_n_significant"]), int(row[f"{effect}_n_reversed"])
     return (
         f"**{effect.capitalize()}:** {direction} (mean difference {interval}); significant "

@@ -1,0 +1,145 @@
+"""What the run's outputs say: the verdicts and summaries the book reports, as numbers and flags.
+
+Each function takes the pipeline's outputs (already loaded) and returns plain numbers, booleans
+or labels; the words the book puts around them are the book's own (``workflow/lib``). The rule
+``findings`` runs these once per build, so a verdict such as "the congruency effect is
+reproduced" has a single definition here, and a test.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+#: The significance level of every verdict.
+ALPHA = 0.05
+
+#: For each effect, the condition the paper reports as faster (lower RMSE), then the other.
+PAPER_ORDER = {"congruency": ("congruent", "incongruent"), "size": ("large", "small")}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One effect of one analysis against the paper."""
+
+    paper_direction: bool  #: the condition the paper reports as faster has the lower mean
+    significant: bool  #: the repeated-measures ANOVA's p is below ALPHA
+
+    @property
+    def reproduced(self) -> bool:
+        """In the paper's direction, and significant."""
+        return self.paper_direction and self.significant
+
+    @property
+    def reversed(self) -> bool:
+        """Against the paper's direction, and significant."""
+        return self.significant and not self.paper_direction
+
+
+def verdict(analysis: dict, effect: str, alpha: float = ALPHA) -> Verdict:
+    """The verdict on ``effect`` ("congruency" or "size") of one analysis.
+
+    ``analysis`` has the cell means (``means``) and the repeated-measures ANOVA
+    (``repeated_measures``, or None where it is undefined, as ``anova.json`` for one test mode
+    and the robot measures of ``data/embodied/analysis.json`` hold them. An undefined or NaN p is
+    not significant.
+    """
+    first, second = PAPER_ORDER[effect]
+    means = analysis["means"]
+    anova = analysis.get("repeated_measures")
+    p = anova[effect]["p"] if anova else float("nan")
+    return Verdict(paper_direction=bool(means[first] < means[second]), significant=bool(p < alpha))
+
+
+def cue_timing_decides(shows_effect: dict[str, bool]) -> bool:
+    """Whether the congruency effect appears with the cue at the first step only and not with the
+    cue held at every step: ``shows_effect`` maps each cue timing run to its verdict."""
+    return shows_effect == {"first_step": True, "all_steps": False}
+
+
+def curve_summary(curves: np.ndarray, phase1_iterations: int) -> dict[str, float | int]:
+    """The learning curves (networks, iterations) at the moments the paper names: the mean RMSE
+    over networks of the first 10 iterations, of the 200 around iteration 2000 (or earlier on a
+    shorter run), of the last 500 of phase 1 and of the last 500 of training."""
+    curves = np.asarray(curves, dtype=float)
+    at = min(2000, curves.shape[1] - 100)
+    return {
+        "n_networks": len(curves),
+        "at": at,
+        "start": float(curves[:, :10].mean()),
+        "around_at": float(curves[:, at - 100 : at + 100].mean()),
+        "phase1_end": float(curves[:, max(phase1_iterations - 500, 0) : phase1_iterations].mean()),
+        "end": float(curves[:, -500:].mean()),
+    }
+
+
+def grip_distance(angles: np.ndarray, objects: list[str]) -> dict[str, float]:
+    """How far apart the two grips' demonstrations are, for large and for small objects.
+
+    ``angles`` is ``demos.npz``'s (object, grip, sequence, step, DoF), normalised 0-1. For each
+    size, the root mean square over its objects, sequences, steps after the first (every
+    demonstration starts from the same posture) and DoF of the difference between the first
+    grip's and the second grip's posture at the same object, sequence and step.
+    """
+    angles = np.asarray(angles, dtype=float)
+    out = {}
+    for size, prefix in (("large", "big"), ("small", "small")):
+        index = [i for i, name in enumerate(objects) if name.startswith(prefix)]
+        a = angles[index]
+        out[size] = float(np.sqrt(((a[:, 0, :, 1:] - a[:, 1, :, 1:]) ** 2).mean()))
+    return out
+
+
+def demo_counts(summary) -> dict[str, float | int]:
+    """From ``demos/summary.csv``: demonstrations, attempts in all, demonstrations that needed
+    more than one attempt, and the smallest lift (cm)."""
+    return {
+        "n_demos": len(summary),
+        "n_attempts": int(summary["attempts"].sum()),
+        "n_retried": int((summary["attempts"] > 1).sum()),
+        "lift_min_cm": float(summary["lift_m"].min() * 100),
+    }
+
+
+def joint_counts(joints) -> dict[str, int]:
+    """From ``body/joint_table.csv``: controlled DoF, joints they drive, and joints the hand's
+    motors (every DoF after the 7 of the arm) drive."""
+    driven = [len(d.split()) for d in joints["driven_joints"]]
+    return {"n_dof": len(joints), "n_driven": sum(driven), "n_hand_driven": sum(driven[7:])}
+
+
+def edge_cells(maps) -> dict[str, int]:
+    """The edge cells of each object's 10 x 10 visual map."""
+    return {name: int(np.asarray(maps[name]).sum()) for name in maps}
+
+
+def explained_by_two_axes(explained) -> float:
+    """The share of hidden-state variance the first two principal axes explain, mean over
+    networks (``eval/hidden_explained.csv``)."""
+    return float((explained["pc1"] + explained["pc2"]).mean())
+
+
+def robot_verdicts(analysis: dict, floor: float = 0.1) -> dict[str, bool]:
+    """From ``embodied/analysis.json``: whether the networks' success is below the ceiling the
+    sensed-posture replay sets, and whether categorisation success is at the floor (below
+    ``floor``), where it can say little about congruency."""
+    return {
+        "below_ceiling": bool(
+            analysis["success_rate"] < analysis["replay_success"]["sensed_postures"]
+        ),
+        "at_floor": bool(analysis["categorisation_success"] < floor),
+    }
+
+
+def interval_direction(replications: int, mean: float, low: float, high: float) -> str:
+    """An effect over replications, from its mean and 95% interval (positive: the paper's
+    direction): "paper" or "against" when the interval excludes 0, "unclear" when it does not,
+    and "single" with one replication (no interval)."""
+    if replications < 2:
+        return "single"
+    if low > 0:
+        return "paper"
+    if high < 0:
+        return "against"
+    return "unclear"

@@ -1,0 +1,359 @@
+"""The findings: the verdicts and statistics the book reports, on hand-made inputs, and the rule
+that writes them for every page (data/book/findings.json and data/book/tables/)."""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import re
+from html import escape
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from conftest import REPO
+
+from icub_affordance import findings
+from icub_affordance.findings import Verdict, verdict
+
+
+def analysis(congruent, incongruent, large, small, p_congruency, p_size):
+    """One test mode as anova.json holds it (only what the verdicts read)."""
+    means = {"congruent": congruent, "incongruent": incongruent, "large": large, "small": small}
+    rm = {"congruency": {"p": p_congruency}, "size": {"p": p_size}}
+    return {"means": means, "repeated_measures": rm}
+
+
+# -- the verdict: direction and p < 0.05, defined once ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("congruent", "incongruent", "p", "direction", "significant"),
+    [
+        (0.10, 0.12, 0.01, True, True),  # the paper's result
+        (0.10, 0.12, 0.20, True, False),  # its direction, not significant
+        (0.12, 0.10, 0.01, False, True),  # significantly reversed
+        (0.12, 0.10, 0.20, False, False),
+        (0.10, 0.10, 0.01, False, True),  # equal means are not the paper's direction
+        (0.10, 0.12, 0.05, True, False),  # p must be below 0.05, not at it
+        (0.10, 0.12, 0.0499, True, True),
+        (0.10, 0.12, float("nan"), True, False),  # an undefined p is not significant
+    ],
+)
+def test_the_congruency_verdict(congruent, incongruent, p, direction, significant):
+    v = verdict(analysis(congruent, incongruent, 0.1, 0.1, p, 0.5), "congruency")
+    assert v == Verdict(paper_direction=direction, significant=significant)
+    assert v.reproduced == (direction and significant)
+    assert v.reversed == (significant and not direction)
+
+
+def test_the_size_verdict_reads_the_size_means_and_p():
+    # congruency says one thing, size another: each verdict reads its own effect
+    m = analysis(0.10, 0.12, 0.15, 0.11, 0.001, 0.03)
+    assert verdict(m, "size") == Verdict(paper_direction=False, significant=True)
+    assert verdict(m, "size").reversed and verdict(m, "congruency").reproduced
+    m = analysis(0.10, 0.12, 0.11, 0.15, 0.9, 0.03)
+    assert verdict(m, "size").reproduced and not verdict(m, "congruency").significant
+
+
+def test_without_an_anova_nothing_is_significant():
+    """The robot measures' ANOVA is None where every network scored the same in every cell."""
+    m = {"means": {"congruent": 0.2, "incongruent": 0.3}, "repeated_measures": None}
+    assert verdict(m, "congruency") == Verdict(paper_direction=True, significant=False)
+
+
+@pytest.mark.parametrize(
+    ("main", "ablation", "decides"),
+    [
+        (("first_step", True), ("all_steps", False), True),
+        (("all_steps", False), ("first_step", True), True),  # the same, with the roles swapped
+        (("first_step", True), ("all_steps", True), False),
+        (("first_step", False), ("all_steps", False), False),
+        (("all_steps", True), ("first_step", False), False),  # the other way round
+    ],
+)
+def test_the_cue_timing_decides_only_when_first_step_alone_shows_the_effect(
+    main, ablation, decides
+):
+    assert findings.cue_timing_decides(dict([main, ablation])) is decides
+
+
+@pytest.mark.parametrize(
+    ("n", "mean", "low", "high", "direction"),
+    [
+        (10, 0.03, 0.02, 0.04, "paper"),
+        (10, -0.03, -0.04, -0.02, "against"),
+        (10, 0.01, -0.01, 0.03, "unclear"),
+        (10, 0.01, 0.0, 0.03, "unclear"),  # an interval touching 0 does not exclude it
+        (1, -0.02, float("nan"), float("nan"), "single"),
+    ],
+)
+def test_an_effect_over_replications_by_its_interval(n, mean, low, high, direction):
+    assert findings.interval_direction(n, mean, low, high) == direction
+
+
+def test_the_robot_verdicts():
+    emb = {
+        "success_rate": 0.3,
+        "categorisation_success": 0.05,
+        "replay_success": {"commands": 1.0, "sensed_postures": 0.5},
+    }
+    assert findings.robot_verdicts(emb) == {"below_ceiling": True, "at_floor": True}
+    emb |= {"success_rate": 0.5, "categorisation_success": 0.1}
+    assert findings.robot_verdicts(emb) == {"below_ceiling": False, "at_floor": False}
+
+
+# -- the statistics ------------------------------------------------------------------------------
+
+OBJECTS = ["big_ball", "small_ball", "big_cube", "small_cube"]
+
+
+def test_the_grip_distance_of_a_made_up_demonstration_set():
+    """Two grips a known distance apart at every step after the first; the first step (the
+    common starting posture) is made far apart on purpose and must not count."""
+    angles = np.zeros((4, 2, 5, 10, 16))
+    angles[:, 1, :, 0] = 0.9  # step 0: excluded
+    angles[[0, 2], 1, :, 1:] = 0.3  # large objects: precision 0.3 from power on every DoF
+    angles[[1, 3], 1, :, 1:] = 0.1
+    gap = findings.grip_distance(angles, OBJECTS)
+    assert gap["large"] == pytest.approx(0.3) and gap["small"] == pytest.approx(0.1)
+
+
+def grip_distance_by_hand(angles, objects, size):
+    """The root mean square difference between the grips, summed term by term."""
+    total, count = 0.0, 0
+    for o, name in enumerate(objects):
+        if name.startswith("big") != (size == "large"):
+            continue
+        for seq, step, dof in itertools.product(
+            range(angles.shape[2]), range(1, angles.shape[3]), range(angles.shape[4])
+        ):
+            total += (angles[o, 0, seq, step, dof] - angles[o, 1, seq, step, dof]) ** 2
+            count += 1
+    return math.sqrt(total / count)
+
+
+def test_the_grip_distance_of_random_demonstrations_equals_a_hand_count():
+    angles = np.random.default_rng(3).random((4, 2, 3, 6, 5))
+    objects = ["small_cube", "big_ball", "big_cube", "small_ball"]  # any order
+    gap = findings.grip_distance(angles, objects)
+    for size in ("large", "small"):
+        assert gap[size] == pytest.approx(grip_distance_by_hand(angles, objects, size), rel=1e-12)
+
+
+def test_the_learning_curve_summary():
+    iterations = np.arange(3000, dtype=float)
+    curves = np.stack([iterations, iterations + 2])  # two networks, mean = iteration + 1
+    s = findings.curve_summary(curves, phase1_iterations=1500)
+    assert s["n_networks"] == 2 and s["at"] == 2000
+    assert s["start"] == pytest.approx(np.mean(np.arange(10)) + 1)
+    assert s["around_at"] == pytest.approx(np.mean(np.arange(1900, 2100)) + 1)
+    assert s["phase1_end"] == pytest.approx(np.mean(np.arange(1000, 1500)) + 1)
+    assert s["end"] == pytest.approx(np.mean(np.arange(2500, 3000)) + 1)
+    # a short run: the moment "around 2000" moves to 100 before the end
+    assert findings.curve_summary(curves[:, :1200], 600)["at"] == 1100
+
+
+def test_the_demonstration_counts():
+    summary = pd.DataFrame({"attempts": [1, 3, 1, 2], "lift_m": [0.05, 0.049, 0.051, 0.05]})
+    assert findings.demo_counts(summary) == {
+        "n_demos": 4,
+        "n_attempts": 7,
+        "n_retried": 2,
+        "lift_min_cm": pytest.approx(4.9),
+    }
+
+
+def test_the_joint_counts():
+    joints = pd.DataFrame({"driven_joints": ["a"] * 7 + ["b c", "d", "e f g"]})
+    assert findings.joint_counts(joints) == {"n_dof": 10, "n_driven": 13, "n_hand_driven": 6}
+
+
+# -- the words ---------------------------------------------------------------------------------
+
+
+def test_the_words_say_the_verdict():
+    from icub_book import text
+
+    yes, weak = Verdict(True, True), Verdict(True, False)
+    reversed_, against = Verdict(False, True), Verdict(False, False)
+    assert text.paper_agreement(yes) == "as in the paper"
+    assert text.paper_agreement(weak) == "as in the paper, though not significantly"
+    assert text.paper_agreement(reversed_) == "the opposite of what the paper reports"
+    assert text.paper_agreement(against).endswith("reports, though not significantly")
+    assert text.results_sentence("congruency", yes) == (
+        "congruent trials were faster (lower RMSE) than incongruent ones, significantly"
+    )
+    assert text.results_sentence("size", against) == (
+        "large objects were slower than small ones, but not significantly"
+    )
+    gap = {"large": 0.2, "small": 0.1}
+    reversed_size = text.discussion(yes, reversed_, yes, gap, "first_step")
+    assert "**The congruency effect is reproduced.**" in reversed_size
+    assert "**The size effect is reversed.**" in reversed_size
+    assert "an RMS of 0.200 (normalised angles)" in reversed_size
+    assert "so a drift toward the wrong grip costs more for a large object" in reversed_size
+    assert "In teacher-forced testing, where no drift can build up" in reversed_size
+    neither = text.discussion(weak, weak, weak, gap, "all_steps")
+    assert "is not reproduced in this run" in neither and "not significant in closed" in neither
+    assert "normalised angles" not in neither and "(this run: `all_steps`)" in neither
+
+
+# -- the rule, on the test configuration's run ---------------------------------------------------
+
+PAGES = sorted(p.stem for p in (REPO / "book").glob("*.md") if "kernelspec:" in p.read_text())
+
+
+@pytest.fixture(scope="module")
+def found(built):
+    return json.loads((built / "data" / "book" / "findings.json").read_text())
+
+
+def test_the_rule_writes_a_section_for_every_page_that_glues(found):
+    assert set(found) == set(PAGES) - {"comparison", "reproduce"}  # these show only tables
+
+
+def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, found):
+    with np.load(built / "data" / "demos" / "demos.npz", allow_pickle=False) as demos:
+        angles, objects = demos["angles"], demos["objects"].tolist()
+    for size in ("large", "small"):
+        expected = grip_distance_by_hand(angles, objects, size)
+        assert found["discussion"][f"grip_distance_{size}"] == pytest.approx(expected, rel=1e-9)
+
+
+def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
+    anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
+    closed = anova["closed_loop"]
+    cong = verdict(closed, "congruency")
+    assert found["intro"]["cong_dir"] == ("lower" if cong.paper_direction else "higher")
+    results = (built / "book" / "_build" / "html" / "results.html").read_text()
+    for mode in ("closed_loop", "teacher_forced"):
+        assert found["results"][f"{mode}_cong_sentence"] in results
+    assert found["beyond"]["cue_main_verdict"] == (
+        "shows the congruency effect" if cong.reproduced else "does not show the congruency effect"
+    )
+
+
+def test_the_rules_tables_are_the_ones_the_book_shows(built):
+    tables = built / "data" / "book" / "tables"
+    anova = pd.read_csv(tables / "anova_closed_loop.csv")
+    assert (
+        anova["analysis"].tolist()
+        == ["two-way (trials)"] * 3 + ["repeated measures (networks)"] * 3
+    )
+    comparison = pd.read_csv(tables / "comparison.csv", dtype=str)
+    html = (built / "book" / "_build" / "html" / "comparison.html").read_text()
+    for value in comparison["this run (closed loop)"]:
+        assert value in html or escape(value) in html, value
+
+
+def test_the_findings_rule_reads_no_figure(tmp_path):
+    from conftest import run_snakemake, scratch_workflow
+
+    result = run_snakemake(
+        scratch_workflow(tmp_path), "-n", "--forceall", "data/book/findings.json"
+    )
+    assert result.returncode == 0, result.stderr[-3000:]
+    block = result.stdout.split("rule findings:")[1].split("\n\n")[0]
+    inputs = block.split("input:")[1].split("\n")[0].split(", ")
+    assert "data/eval/anova.json" in [name.strip() for name in inputs]
+    assert not [name for name in inputs if name.strip().endswith(".png")], inputs
+    # nor on a plot rule: nothing drawn is made for it
+    assert not re.search(r"rule (figure\w*|\w*filmstrip):", result.stdout)
+
+
+FORBIDDEN = [
+    "icub_affordance",  # the science: the findings rule runs it
+    "icub_book",  # the words: the findings rule writes them
+    ".mean(",
+    ".sum(",
+    ".groupby(",
+    "< 0.05",
+    "ttest",
+]
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_a_page_only_displays(page):
+    """No statistic, test or verdict in a page's code: it reads and shows what the rules wrote."""
+    source = (REPO / "book" / f"{page}.md").read_text()
+    code = "\n".join(re.findall(r"```\{code-cell\}[^\n]*\n(.*?)```", source, flags=re.S))
+    for word in FORBIDDEN:
+        assert word not in code, (page, word)
+
+
+def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
+    """The sweep is too long for the tests' run: its findings from a made-up summary and cost
+    table, and the page executed on them."""
+    import shutil
+
+    import yaml
+    from conftest import TEST_CONFIG
+    from icub_book import pages
+    from icub_book.notebooks import execute_pages
+    from jupyter_cache import get_cache
+    from myst_nb.core.read import read_myst_markdown_notebook
+    from sweep_cost import cost_table, write_cost_table
+
+    config = yaml.safe_load(TEST_CONFIG.read_text()) | {"robustness": True}
+    config["sweep"] |= {"seeds": [1, 2, 3], "categorisation_cue": ["first_step"]}
+    row = {"learning_rate": 0.075, "hidden": 10, "categorisation_cue": "first_step"}
+    row |= {"replications": 3}
+    for effect, sign in (("congruency", 1), ("size", -1)):
+        row |= {
+            f"{effect}_effect": 0.03 * sign,
+            f"{effect}_ci_low": 0.02 * sign,
+            f"{effect}_ci_high": 0.04 * sign,
+            f"{effect}_eta_p2": 0.5,
+            f"{effect}_n_significant": 3 if sign > 0 else 0,
+            f"{effect}_n_reversed": 0 if sign > 0 else 2,
+        }
+    inputs = {"sweep_summary.csv": tmp_path / "summary.csv", "sweep_cost.csv": tmp_path / "c.csv"}
+    pd.DataFrame([row]).to_csv(inputs["sweep_summary.csv"], index=False)
+    write_cost_table(cost_table([1, 2], [20.0, 30.0], cores=2), inputs["sweep_cost.csv"])
+    values, table = pages.robustness(inputs, config)
+    assert values["ran"] and values["sweep_run"].startswith(
+        "This build ran the sweep: 3 replications (seeds 1, 2, 3) of one setting, 3 points of"
+    )
+    assert "congruent faster than incongruent, the paper's direction" in values["sweep_findings"]
+    assert "large objects slower than small objects, against the paper" in values["sweep_findings"]
+    assert "it takes three to tell" in values["cost_findings"]
+    assert table["significant"].tolist() == ["3 of 3", "0 of 3"]
+
+    book = tmp_path / "book"
+    (book / "_data" / "tables").mkdir(parents=True)
+    page = shutil.copy(REPO / "book" / "robustness.md", book / "robustness.md")
+    (book / "_data" / "findings.json").write_text(json.dumps({"robustness": values}))
+    table.to_csv(book / "_data" / "tables" / "sweep.csv", index=False)
+    shutil.copy(inputs["sweep_cost.csv"], book / "_data" / "sweep_cost.csv")
+    execute_pages(book, [Path(page)], workers=1)
+    notebook = read_myst_markdown_notebook(Path(page).read_text(), path=str(page))
+    _, merged = get_cache(str(book / "_build" / ".jupyter_cache")).merge_match_into_notebook(
+        notebook
+    )
+    shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
+    for words in (values["sweep_run"], "the paper's direction", "0 of 3", "wall time (s)"):
+        assert json.dumps(words)[1:-1] in shown, words
+    assert "did not run the sweep" not in shown
+
+
+def test_the_package_is_the_science():
+    """The book's machinery and the benchmarks live outside the package, which never imports
+    Snakemake or the book's tools."""
+    import ast
+
+    machinery = {"snakemake", "myst_nb", "jupyter_cache", "nbclient", "nbformat", "sphinx"}
+    machinery |= {"IPython", "icub_book", "sweep_cost", "collect", "subprocess"}
+    for path in (REPO / "src" / "icub_affordance").glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Import):
+                names = [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.level == 0:
+                names = [node.module]
+            else:
+                continue
+            assert not {name.split(".")[0] for name in names} & machinery, (path.name, names)
+    for moved in ("notebooks", "report", "sweep_cost"):
+        assert not (REPO / "src" / "icub_affordance" / f"{moved}.py").exists(), moved

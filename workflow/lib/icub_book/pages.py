@@ -1,0 +1,378 @@
+"""What each page of the book shows: every number, verdict, sentence and table, from the outputs.
+
+``page_findings`` reads the pipeline's outputs (by their names in the book rule's ``BOOK_DATA``)
+and returns, per page, the values the page glues (``findings.json``), and the tables it shows.
+The verdicts and statistics are the package's (``icub_affordance.findings``, ``.som``), the
+words this package's (``text``); the pages only display the result.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from icub_affordance import findings as science
+from icub_affordance.io import load_npz
+from icub_affordance.som import active_units
+
+from . import text
+
+MODES = ("closed_loop", "teacher_forced")
+ANALYSES = (("two_way", "two-way (trials)"), ("repeated_measures", "repeated measures (networks)"))
+
+#: What the paper reports, beside which the comparison page sets this run's numbers.
+PAPER = {
+    "start": "about 0.3",
+    "around_2000": "about 0.05",
+    "end": "stable around 0.05",
+    "congruency": "congruent lower; significant",
+    "size": "large lower; significant",
+    "networks": "12 (6 per mapping)",
+    "learning_rate": "0.075",
+    "iterations": "12,000 (6000 + 6000)",
+    "hidden": "10",
+    "sequences": "5 (4 + 1)",
+}
+
+
+def _json(path) -> dict:
+    return json.loads(Path(path).read_text())
+
+
+def _curves(inputs: Mapping[str, str]) -> np.ndarray:
+    names = sorted(name for name in inputs if name.startswith("curves/"))
+    return np.array([pd.read_csv(inputs[name])["rmse"].to_numpy() for name in names])
+
+
+def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
+    """Both ANOVAs of one test mode, one row per effect (results page)."""
+    rows = []
+    for analysis, label in ANALYSES:
+        for effect, r in anova[mode][analysis].items():
+            rows.append(
+                {
+                    "analysis": label,
+                    "effect": effect,
+                    "F": r["F"],
+                    "df": f"({r['df1']:.0f}, {r['df2']:.0f})",
+                    "p": r["p"],
+                    "partial η²": r["eta_p2"],
+                }
+            )
+    return pd.DataFrame(rows)
+
+
+def intro(anova: dict) -> dict:
+    closed = anova["closed_loop"]
+    means, rm = closed["means"], closed["repeated_measures"]
+    cong, size = science.verdict(closed, "congruency"), science.verdict(closed, "size")
+    return {
+        "n_networks": closed["n_networks"],
+        "cong": means["congruent"],
+        "incong": means["incongruent"],
+        "large": means["large"],
+        "small": means["small"],
+        "cong_stats": text.fmt_f(rm["congruency"]),
+        "size_stats": text.fmt_f(rm["size"]),
+        "cong_dir": text.lower_or_higher(cong),
+        "size_dir": text.lower_or_higher(size),
+        "cong_verdict": text.paper_agreement(cong),
+        "size_verdict": text.paper_agreement(size),
+    }
+
+
+def results(anova: dict, curve: dict) -> dict:
+    out = {
+        "rmse_start": curve["start"],
+        "rmse_2000": curve["around_at"],
+        "at_2000": curve["at"],
+        "rmse_phase1_end": curve["phase1_end"],
+        "rmse_end": curve["end"],
+        "n_networks": curve["n_networks"],
+    }
+    for mode in MODES:
+        m = anova[mode]
+        for key, value in m["means"].items():
+            out[f"{mode}_{key}"] = value
+        for analysis, _ in ANALYSES:
+            for effect, r in m[analysis].items():
+                out[f"{mode}_{analysis}_{effect}"] = text.fmt_f(r)
+        for key, value in m["wrong_grip_rate"].items():
+            out[f"{mode}_wrong_{key}"] = 100 * value
+        out[f"{mode}_cong_sentence"] = text.results_sentence(
+            "congruency", science.verdict(m, "congruency")
+        )
+        out[f"{mode}_size_sentence"] = text.results_sentence("size", science.verdict(m, "size"))
+    out["n_trials"] = anova["closed_loop"]["n_trials"]
+    return out
+
+
+def discussion(anova: dict, demos: dict, cue: str) -> dict:
+    closed, forced = anova["closed_loop"], anova["teacher_forced"]
+    gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
+    return {
+        "grip_distance_large": gap["large"],
+        "grip_distance_small": gap["small"],
+        "text": text.discussion(
+            science.verdict(closed, "congruency"),
+            science.verdict(closed, "size"),
+            science.verdict(forced, "size"),
+            gap,
+            cue,
+        ),
+    }
+
+
+def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
+    """The paper's numbers beside this run's (closed loop, repeated-measures ANOVA)."""
+    net, closed = config["network"], anova["closed_loop"]
+    m = closed["means"]
+
+    def effect(name: str) -> str:
+        first, second = science.PAPER_ORDER[name]
+        lower = first if science.verdict(closed, name).paper_direction else second
+        return (
+            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; "
+            f"{text.fmt_f(closed['repeated_measures'][name])}"
+        )
+
+    at, n = curve["at"], closed["n_networks"]
+    sequences = config["demos"]["sequences"]
+    rows = [
+        ("RMSE at the start of training", "start", f"{curve['start']:.3f} (first 10 iterations)"),
+        (
+            "RMSE after about 2000 iterations",
+            "around_2000",
+            f"{curve['around_at']:.3f} (iterations {at - 100}-{at + 100})",
+        ),
+        ("RMSE afterwards", "end", f"{curve['end']:.3f} (last 500 iterations)"),
+        ("congruent vs incongruent", "congruency", effect("congruency")),
+        ("large vs small objects", "size", effect("size")),
+        ("networks", "networks", f"{n} ({n // 2} per mapping)"),
+        ("learning rate", "learning_rate", f"{net['learning_rate']}"),
+        (
+            "iterations",
+            "iterations",
+            f"{net['iterations']:,} ({net['phase1_iterations']} + "
+            f"{net['iterations'] - net['phase1_iterations']})",
+        ),
+        ("hidden units", "hidden", f"{net['hidden']}"),
+        ("sequences per object (train + test)", "sequences", f"{sequences} ({sequences - 1} + 1)"),
+    ]
+    return pd.DataFrame(
+        [(quantity, PAPER[key], run) for quantity, key, run in rows],
+        columns=["quantity", "paper", "this run (closed loop)"],
+    )
+
+
+def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
+    """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
+    emb = _json(inputs["embodied_analysis.json"])
+    main, ablation = _json(inputs["anova.json"]), _json(inputs["ablation_anova.json"])
+    divergence = pd.read_csv(inputs["divergence.csv"])
+    first_step = _json(inputs["divergence.json"])["first_divergent_step"]
+    explained = pd.read_csv(inputs["hidden_explained.csv"])
+    robot = science.robot_verdicts(emb)
+    err, suc = emb["measures"]["final_error"], emb["measures"]["success"]
+    out = {
+        "emb_n_trials": emb["n_trials"],
+        "n_steps": config["demos"]["steps"],
+        "n_predicted": config["demos"]["steps"] - 1,
+        "n_hidden": config["network"]["hidden"],
+        "emb_success": text.pct(emb["success_rate"]),
+        "emb_grasping_success": text.pct(emb["grasping_success"]),
+        "emb_categorisation_success": text.pct(emb["categorisation_success"]),
+        "emb_touching": text.pct(emb["touching_rate"]),
+        "replay_commands": text.pct(emb["replay_success"]["commands"]),
+        "replay_sensed": text.pct(emb["replay_success"]["sensed_postures"]),
+        "err_congruent": err["means"]["congruent"],
+        "err_incongruent": err["means"]["incongruent"],
+        "err_large": err["means"]["large"],
+        "err_small": err["means"]["small"],
+    }
+    for effect in ("congruency", "size", "interaction"):
+        for measure in ("final_error", "success"):
+            rm = emb["measures"][measure]["repeated_measures"]
+            out[f"emb_{measure}_{effect}"] = text.anova_or_undefined(rm, effect)
+    out |= {
+        "suc_congruent": text.pct(suc["means"]["congruent"]),
+        "suc_incongruent": text.pct(suc["means"]["incongruent"]),
+        "suc_diff": text.points_difference(suc["incongruent_minus_congruent"]),
+        "emb_err_sentence": text.robot_error_sentence(science.verdict(err, "congruency")),
+        "emb_ceiling_sentence": "below" if robot["below_ceiling"] else "at or above",
+        "floor_sentence": text.floor_sentence(robot["at_floor"]),
+    }
+
+    # the cue ablation: which reading of the paper's cue gives the effect
+    main_cue = config["network"]["categorisation_cue"]
+    rows = []
+    for cue, result in ((main_cue, main), (ablation_cue, ablation)):
+        for mode in MODES:
+            for effect in ("congruency", "size", "interaction"):
+                e = result[mode]["repeated_measures"][effect]
+                rows.append(
+                    {
+                        "cue": cue.replace("_", " "),
+                        "test": mode.replace("_", " "),
+                        "effect": effect,
+                        "F": e["F"],
+                        "df": f"({e['df1']:.0f}, {e['df2']:.0f})",
+                        "p": e["p"],
+                        "partial η²": e["eta_p2"],
+                    }
+                )
+    shows = {}
+    for name, cue, result in (("main", main_cue, main), ("ablation", ablation_cue, ablation)):
+        m = result["closed_loop"]
+        v = science.verdict(m, "congruency")
+        shows[cue] = v.reproduced
+        out |= {
+            f"cue_{name}_congruent": m["means"]["congruent"],
+            f"cue_{name}_incongruent": m["means"]["incongruent"],
+            f"cue_{name}_congruency": text.fmt_f(m["repeated_measures"]["congruency"]),
+            f"cue_{name}_size": text.fmt_f(m["repeated_measures"]["size"]),
+            f"cue_{name}_verdict": text.cue_verdict(v),
+        }
+    out |= {
+        "main_cue_phrase": text.CUES[main_cue],
+        "ablation_cue_phrase": text.CUES[ablation_cue],
+        "cue_explanation": text.cue_explanation(science.cue_timing_decides(shows)),
+    }
+
+    # the hidden layer
+    out |= {
+        "div_last_cong": float(divergence["congruent"].iloc[-1]),
+        "div_last_incong": float(divergence["incongruent"].iloc[-1]),
+        "div_step1_cong": float(divergence["congruent"].iloc[0]),
+        "div_step1_incong": float(divergence["incongruent"].iloc[0]),
+        "div_sentence": text.divergence_sentence(first_step),
+        "pca_explained": text.pct(science.explained_by_two_axes(explained)),
+    }
+    return out, pd.DataFrame(rows)
+
+
+def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
+    """The sweep's sentences and table, or what the page says when this build did not run it."""
+    if not config["robustness"]:
+        return {"ran": False, "not_run": text.robustness_not_run(config)}, None
+    import sweep_cost  # benchmarks/sweep_cost.py: the cost table's columns, checked
+
+    summary = pd.read_csv(inputs["sweep_summary.csv"])
+    cost = sweep_cost.read_cost_table(inputs["sweep_cost.csv"])
+    n_points, n_networks = text.sweep_size(config)
+    seeds = config["sweep"]["seeds"]
+    settings = f"each of {len(summary)} settings" if len(summary) > 1 else "one setting"
+    return {
+        "ran": True,
+        "sweep_run": (
+            f"This build ran the sweep: {len(seeds)} replications (seeds "
+            f"{', '.join(map(str, seeds))}) of {settings}, {n_points} points of "
+            f"{config['network']['networks']} networks, {n_networks} networks in all."
+        ),
+        "sweep_findings": text.sweep_findings(summary),
+        "cost_findings": text.cost_findings(cost),
+    }, text.sweep_summary_display(summary)
+
+
+def training(inputs: Mapping[str, str], config: dict) -> dict:
+    net, dem = config["network"], config["demos"]
+    demos = science.demo_counts(pd.read_csv(inputs["demo_summary.csv"]))
+    return {
+        "n_demos": demos["n_demos"],
+        "n_attempts": demos["n_attempts"],
+        "n_retried": demos["n_retried"],
+        "lift_min": demos["lift_min_cm"],
+        "lift_check": dem["lift_m"] * 100,
+        "yaw": dem["yaw_deg"],
+        "tilt": dem["tilt_deg"],
+        "shift": dem["shift_m"] * 1000,
+        "lr": net["learning_rate"],
+        "iterations": net["iterations"],
+        "phase1": net["phase1_iterations"],
+        "phase2_start": net["phase1_iterations"] + 1,
+        "phase2_half": (net["iterations"] - net["phase1_iterations"]) // 2,
+        "networks": net["networks"],
+        "half_networks": net["networks"] // 2,
+        "cue": net["categorisation_cue"].replace("_", " "),
+        "n_sequences": dem["sequences"],
+        "n_train_sequences": dem["sequences"] - 1,
+        "n_steps": dem["steps"],
+        "last_step": dem["steps"] - 1,
+    }
+
+
+def vision(inputs: Mapping[str, str], config: dict) -> dict:
+    cells = science.edge_cells(load_npz(inputs["visual_maps.npz"]))
+    return {f"cells_{name}": n for name, n in cells.items()} | {
+        "window": config["vision"]["window"],
+        "threshold": config["vision"]["edge_threshold"],
+    }
+
+
+def robot(inputs: Mapping[str, str]) -> dict:
+    return science.joint_counts(pd.read_csv(inputs["joint_table.csv"]))
+
+
+def architecture(inputs: Mapping[str, str], config: dict) -> dict:
+    soms = load_npz(inputs["soms.npz"])
+    units = {
+        f"units_{obj}": active_units(act)
+        for obj, act in zip(soms["objects"].tolist(), soms["object_act"], strict=True)
+    }
+    return units | {
+        "width_per_edge": config["soms"]["object_width_per_edge"],
+        "bump_sigma": config["soms"]["bump_sigma"],
+        "hidden": config["network"]["hidden"],
+    }
+
+
+def notes(config: dict) -> dict:
+    sizes = config["object_sizes_m"]
+    return {
+        "seed": config["seed"],
+        "init_scale": config["network"]["init_scale"],
+        "som_iterations": config["soms"]["iterations"],
+        "big_cm": 100 * sizes["big_ball"],
+        "small_cm": 100 * sizes["small_ball"],
+        "big_cube_cm": 100 * sizes["big_cube"],
+        "small_cube_cm": 100 * sizes["small_cube"],
+    }
+
+
+def page_findings(
+    inputs: Mapping[str, str], config: dict, ablation_cue: str
+) -> tuple[dict[str, dict], dict[str, pd.DataFrame]]:
+    """Every page's values ({page: {name: value}}) and tables ({name: table}).
+
+    ``inputs`` maps the book's names of the outputs (``BOOK_DATA``'s keys, the learning curves
+    as ``curves/netNN.csv``) to their files; ``config`` is the run's, ``ablation_cue`` the cue
+    timing the ablation trained with.
+    """
+    anova = _json(inputs["anova.json"])
+    curve = science.curve_summary(_curves(inputs), config["network"]["phase1_iterations"])
+    demos = load_npz(inputs["demos.npz"])
+    beyond_values, cue_table = beyond(inputs, config, ablation_cue)
+    robustness_values, sweep_table = robustness(inputs, config)
+    pages = {
+        "intro": intro(anova),
+        "results": results(anova, curve),
+        "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
+        "beyond": beyond_values,
+        "robustness": robustness_values,
+        "training": training(inputs, config),
+        "vision": vision(inputs, config),
+        "robot": robot(inputs),
+        "architecture": architecture(inputs, config),
+        "notes": notes(config),
+    }
+    tables = {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES} | {
+        "comparison": comparison(anova, curve, config),
+        "cue_anova": cue_table,
+    }
+    if sweep_table is not None:
+        tables["sweep"] = sweep_table
+    return pages, tables
