@@ -289,15 +289,14 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     table, and the page executed on them."""
     import shutil
 
-    import yaml
-    from conftest import TEST_CONFIG
+    from conftest import load_test_config
     from icub_book import pages
     from icub_book.notebooks import execute_pages
     from jupyter_cache import get_cache
     from myst_nb.core.read import read_myst_markdown_notebook
     from sweep_cost import cost_table, write_cost_table
 
-    config = yaml.safe_load(TEST_CONFIG.read_text()) | {"robustness": True}
+    config = load_test_config() | {"robustness": True}
     config["sweep"] |= {"seeds": [1, 2, 3], "categorisation_cue": ["first_step"]}
     row = {"learning_rate": 0.075, "hidden": 10, "categorisation_cue": "first_step"}
     row |= {"replications": 3}

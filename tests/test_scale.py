@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import REPO, load_test_config, run_snakemake, scratch_workflow
+from conftest import REPO, load_config, load_test_config, run_snakemake, scratch_workflow
 from sweep_cost import planned_jobs
 
 COMPARED = [
@@ -49,10 +49,9 @@ def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
 
 
 def test_the_sweep_dag_trains_twelve_networks_per_point(tmp_path):
-    import yaml
 
     workdir = scratch_workflow(tmp_path)
-    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    config = load_config()
     sweep = config["sweep"]
     points = (
         len(sweep["seeds"])
@@ -305,10 +304,9 @@ def test_the_sweep_words_follow_the_numbers():
 
 
 def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers():
-    import yaml
     from icub_book.text import ROBUSTNESS_COMMAND, robustness_not_run
 
-    config = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+    config = load_config()
     text = robustness_not_run(config)
     assert "did not run the sweep" in text and ROBUSTNESS_COMMAND in text
     assert ROBUSTNESS_COMMAND == "snakemake -c2 --config robustness=True"
