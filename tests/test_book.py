@@ -81,6 +81,7 @@ def test_front_page_shows_provenance(built, html):
     assert f"seed: {run['config']['seed']}" in html["intro"]
 
 
+@pytest.mark.slow
 def test_a_changed_output_changes_the_book_after_a_rebuild(built, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(built, copy, symlinks=True)
@@ -111,6 +112,7 @@ def without_build_time(page):
     return re.sub(r"built \d{4}-\d\d-\d\d \d\d:\d\d UTC", "built (time)", page.read_text())
 
 
+@pytest.mark.slow
 def test_a_rebuild_from_the_same_outputs_gives_the_same_pages(built, tmp_path):
     """No random table ids or layouts: only the build time and the benchmark table move."""
     copy = tmp_path / "copy"

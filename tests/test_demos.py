@@ -14,8 +14,9 @@ from icub_affordance.body import (
     Robot,
     to_normalised,
 )
-from icub_affordance.demos import GRIPS, is_grasp, make_demo, object_demos
+from icub_affordance.demos import is_grasp, make_demo, object_demos
 from icub_affordance.io import load_npz
+from icub_affordance.spec import GRIPS
 
 INITIAL = initial_posture_deg()  # config/config.yaml
 T = {name: i for i, name in enumerate(TOUCH_NAMES)}

@@ -65,10 +65,9 @@ def test_the_network_as_controller_is_the_network_of_the_evaluation():
 
 
 @pytest.fixture(scope="module")
-def demos(request):
+def demos(built):
     """The demonstrations of the small pipeline run (the demos do not depend on the config's
     test-size settings)."""
-    built = request.getfixturevalue("built")
     data = np.load(built / "data" / "demos" / "demos.npz")
     return {key: data[key] for key in data.files}
 

@@ -249,6 +249,7 @@ def test_the_rules_tables_are_the_ones_the_book_shows(built):
         assert value in html or escape(value) in html, value
 
 
+@pytest.mark.slow
 def test_the_findings_rule_reads_no_figure(tmp_path):
     from conftest import run_snakemake, scratch_workflow
 

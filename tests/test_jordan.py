@@ -9,9 +9,8 @@ from conftest import train_config
 
 from icub_affordance.jordan import N_INPUT, OnlineTrainer, Weights, run_closed_loop
 from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
+from icub_affordance.spec import CATEGORISATION, GRASPING
 from icub_affordance.train import (
-    CATEGORISATION,
-    GRASPING,
     Materials,
     context,
     mapping_of,

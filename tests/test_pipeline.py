@@ -57,6 +57,7 @@ def test_missing_key_is_refused():
         validate(config, str(SCHEMA))
 
 
+@pytest.mark.slow
 def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
     bad = load_test_config()
     bad["seed"] = -5
@@ -73,6 +74,7 @@ def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
     assert not (workdir / "data").exists()
 
 
+@pytest.mark.slow
 def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_path):
     bad = load_test_config()
     bad["initial_posture_deg"][3] = 150  # the elbow stops at 106
@@ -92,6 +94,7 @@ def test_posture_outside_figure1_ranges_fails_with_the_joint_named(workdir, tmp_
     assert not (workdir / "data" / "vision" / "visual_maps.npz").exists()
 
 
+@pytest.mark.slow
 def test_test_config_runs_end_to_end(built):
     workdir = built
     body = workdir / "data" / "body"
@@ -146,6 +149,7 @@ def replace_with_edited_copy(workdir: Path, relative: str) -> None:
     target.write_text(target.read_text() + comment)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "edited", ["assets/icub_scene.xml", "assets/icub_right_arm.xml", "src/icub_affordance/body.py"]
 )

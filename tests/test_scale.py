@@ -16,6 +16,7 @@ COMPARED = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("profile", ["default", "slurm", "local-cluster"])
 def test_profiles_parse(tmp_path, profile):
     workdir = scratch_workflow(tmp_path)
@@ -29,6 +30,7 @@ def test_profiles_parse(tmp_path, profile):
     assert result.returncode == 0, result.stderr[-3000:]
 
 
+@pytest.mark.slow
 def test_every_job_of_the_run_left_a_benchmark(built):
     """Each job's wall time and memory are on record (benchmarks/collect.py reads them)."""
     result = run_snakemake(built, "-n", "--forceall")
@@ -37,6 +39,7 @@ def test_every_job_of_the_run_left_a_benchmark(built):
     assert len(list((built / "data" / "benchmarks").rglob("*.tsv"))) == jobs
 
 
+@pytest.mark.slow
 def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
     workdir = scratch_workflow(tmp_path)
     result = run_snakemake(
@@ -48,6 +51,7 @@ def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
         assert (workdir / name).read_bytes() == (built / name).read_bytes(), name
 
 
+@pytest.mark.slow
 def test_the_sweep_dag_trains_twelve_networks_per_point(tmp_path):
 
     workdir = scratch_workflow(tmp_path)
@@ -145,6 +149,7 @@ def dry_run(workdir, *args, rule="book"):
     return counts, [name.strip() for name in inputs]
 
 
+@pytest.mark.slow
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     from icub_book.text import sweep_size
 
@@ -176,6 +181,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
                 assert name in cost_inputs, name
 
 
+@pytest.mark.slow
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
     counts, book_inputs = dry_run(scratch_workflow(tmp_path))
     assert counts["book"] == 1
@@ -183,6 +189,7 @@ def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
     assert not [n for n in book_inputs if n.startswith("data/") and "sweep" in n], book_inputs
 
 
+@pytest.mark.slow
 def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_path):
     result = run_snakemake(scratch_workflow(tmp_path), "-n", "--config", "robustness=true")
     assert result.returncode != 0

@@ -29,6 +29,7 @@ COMPARED = [
 ]
 
 
+@pytest.mark.slow
 def test_killed_and_resumed_single_core_run_equals_the_two_core_run(built, tmp_path):
     """A run with -c1, killed hard part-way and resumed, gives byte-identical outputs."""
     workdir = scratch_workflow(tmp_path)
@@ -69,6 +70,7 @@ def changed_config(tmp_path: Path, change) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["network"].update(learning_rate=0.05))
     plan = run_snakemake(built, "-n", config=path)
@@ -81,12 +83,14 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
         assert rule not in jobs, (rule, jobs)
 
 
+@pytest.mark.slow
 def test_the_cue_timing_reruns_training_too(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["network"].update(categorisation_cue="all_steps"))
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
     assert "train" in jobs and "demos_object" not in jobs and "soms" not in jobs
 
 
+@pytest.mark.slow
 def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["object_sizes_m"].update(big_ball=0.065))
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
@@ -94,6 +98,7 @@ def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
         assert rule in jobs, (rule, jobs)
 
 
+@pytest.mark.slow
 def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
     path = changed_config(
         tmp_path, lambda c: c["figures"].update(filmstrip=[["small_ball", "power", 1]])
@@ -102,6 +107,7 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
     assert set(jobs) <= {"demo_filmstrip", "book", "all", "rulegraph"}, jobs
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("change", "words"),
     [
@@ -127,6 +133,7 @@ def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path,
     assert not (workdir / "data").exists()
 
 
+@pytest.mark.slow
 def test_a_missing_scene_is_named_before_any_job(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     path = changed_config(tmp_path, lambda c: c.update(scene="assets/missing.xml"))
@@ -155,6 +162,7 @@ def test_a_truncated_file_is_named_with_what_to_do(built, tmp_path, name):
         load_npz(tmp_path / "gone.npz")
 
 
+@pytest.mark.slow
 def test_a_corrupt_weights_file_fails_the_evaluation_and_keeps_the_old_trials(built, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(built, copy, symlinks=True)

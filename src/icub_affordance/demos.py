@@ -14,6 +14,7 @@ import numpy as np
 
 from .body import DOF_MAX_DEG, DOF_MIN_DEG, N_ARM_DOF, N_DOF, Robot
 from .ik import solve_palm_pose
+from .spec import GRIPS
 
 #: Palm frame axes (columns, in world coordinates) for a palm-down hand with the fingers forward.
 PALM_DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])
@@ -213,22 +214,21 @@ def lift_arm(robot: Robot, lift: float) -> None:
 
 # -- the demonstration set (paper sections 2.3 and 3) --------------------------------------------
 
-GRIPS: tuple[str, ...] = ("power", "precision")
-
 
 @dataclass(frozen=True)
 class DemoConfig:
-    """How the demonstrator varies and checks its grasps (config key ``demos``)."""
+    """How the demonstrator varies and checks its grasps (config key ``demos``, where their
+    values are given)."""
 
-    sequences: int = 5  # per object and grip; they differ in the hand's final pose
-    steps: int = 10  # recorded time steps, pre-grasp (0) to final grasp (steps - 1)
-    max_attempts: int = 8  # fresh variations tried before a demo is declared impossible
-    yaw_deg: float = 5.0  # variation of the hand's final rotation about the vertical, +-
-    tilt_deg: float = 5.0  # variation of its pitch, +-
-    shift_m: float = 0.003  # variation of its final position relative to the object, +- per axis
-    lift_m: float = 0.05  # the check: lift the arm this far...
-    min_lift_m: float = 0.03  # ...and the object must rise at least this much with the hand
-    touch_threshold: float = 0.01  # N; a touch sensor reads contact above this
+    sequences: int  # per object and grip; they differ in the hand's final pose
+    steps: int  # recorded time steps, pre-grasp (0) to final grasp (steps - 1)
+    max_attempts: int  # fresh variations tried before a demo is declared impossible
+    yaw_deg: float  # variation of the hand's final rotation about the vertical, +-
+    tilt_deg: float  # variation of its pitch, +-
+    shift_m: float  # variation of its final position relative to the object, +- per axis
+    lift_m: float  # the check: lift the arm this far...
+    min_lift_m: float  # ...and the object must rise at least this much with the hand
+    touch_threshold: float  # N; a touch sensor reads contact above this
 
     def __post_init__(self) -> None:
         if self.min_lift_m > self.lift_m:
@@ -309,7 +309,7 @@ def grip_in_contact(grip: str, touch: np.ndarray, threshold: float) -> bool:
 
 def grip_used(touch: np.ndarray, threshold: float) -> str:
     """The grip the touch sensors report: power if it is one, else precision, else none."""
-    for grip in ("power", "precision"):
+    for grip in GRIPS:
         if grip_in_contact(grip, touch, threshold):
             return grip
     return "none"

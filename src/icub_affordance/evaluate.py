@@ -12,11 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import Weights, run_closed_loop
-from .som import TASKS
-from .spec import OBJECTS
-from .train import GRASPING, Materials, context, target_grip
-
-MODES = ("closed_loop", "teacher_forced")
+from .spec import GRASPING, MODES, OBJECTS, TASKS
+from .train import Materials, context, target_grip
 
 
 def evaluate_network(

@@ -15,18 +15,20 @@ from dataclasses import dataclass
 import numpy as np
 from minisom import MiniSom
 
-TASKS: tuple[str, ...] = ("grasping", "categorisation")
+from .spec import TASKS
 
 
 @dataclass(frozen=True)
 class SOMConfig:
-    grid: int = 10  # each map is grid x grid units
-    iterations: int = 2000  # training presentations per map
-    sigma: float = 3.0  # initial neighbourhood width (units), decays during training
-    learning_rate: float = 0.5
-    object_width_per_edge: float = 0.45  # object bump width = this * sqrt(edge cells), units
-    bump_sigma: float = 1.2  # width of the Task and Goal bumps, units
-    task_pattern_size: int = 20  # length of the random binary task patterns
+    """The maps' settings (config key ``soms``, where their values and meaning are given)."""
+
+    grid: int  # each map is grid x grid units
+    iterations: int  # training presentations per map
+    sigma: float  # initial neighbourhood width (units), decays during training
+    learning_rate: float
+    object_width_per_edge: float  # object bump width = this * sqrt(edge cells), units
+    bump_sigma: float  # width of the Task and Goal bumps, units
+    task_pattern_size: int  # length of the random binary task patterns
 
 
 def train_som(data: np.ndarray, config: SOMConfig, seed: int) -> MiniSom:

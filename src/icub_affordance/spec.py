@@ -1,5 +1,6 @@
-"""What the paper fixes about the robot and the objects: Figure 1's 16 DoF with their ranges,
-the six touch sensors, the four objects, and the 0-1 units the network sees.
+"""What the paper fixes, and the project's vocabulary: Figure 1's 16 DoF with their ranges, the
+six touch sensors, the four objects, the grips, tasks, category mappings, cue timings and test
+modes, and the 0-1 units the network sees. Every module names these from here.
 
 Kept apart from :mod:`icub_affordance.body` so that the learning code can use them without
 importing MuJoCo (a second of start-up for every training job).
@@ -65,6 +66,26 @@ OBJECTS: dict[str, ObjectInfo] = {
     "big_cube": ObjectInfo("artefact", "large", "power"),
     "small_cube": ObjectInfo("artefact", "small", "precision"),
 }
+
+
+#: The two grips (paper section 2.3), in the order of the demonstrations' grip axis.
+GRIPS: tuple[str, ...] = ("power", "precision")
+
+#: The two tasks (paper section 2.3), in the order of the Task and Goal maps' task axis.
+TASKS: tuple[str, ...] = ("grasping", "categorisation")
+GRASPING, CATEGORISATION = 0, 1
+
+#: The networks' two category mappings (paper section 3): A for networks 1-6, B for 7-12.
+MAPPINGS: dict[str, dict[str, str]] = {
+    "A": {"natural": "power", "artefact": "precision"},
+    "B": {"natural": "precision", "artefact": "power"},
+}
+
+#: How long a categorisation trial shows its cue (MODEL.md section 7: two readings).
+CUES: tuple[str, ...] = ("first_step", "all_steps")
+
+#: The two ways the trained networks are tested (paper section 3; MODEL.md section 6).
+MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")
 
 
 def to_normalised(angles_deg: np.ndarray) -> np.ndarray:

@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from .spec import MODES
+
 EFFECTS = {"congruency": "congruency", "size": "size", "interaction": "congruency:size"}
 
 
@@ -92,7 +94,7 @@ def cell_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, float]:
 def analyse(trials: pd.DataFrame) -> dict[str, object]:
     """Everything anova.json holds, for both test modes."""
     result: dict[str, object] = {}
-    for mode in ("closed_loop", "teacher_forced"):
+    for mode in MODES:
         df = categorisation_trials(trials, mode)
         result[mode] = {
             "n_trials": int(len(df)),
@@ -119,7 +121,7 @@ def anova_table_markdown(result: dict[str, object]) -> str:
         "| mode | analysis | effect | F | df | p | partial eta^2 |",
         "|---|---|---|---|---|---|---|",
     ]
-    for mode in ("closed_loop", "teacher_forced"):
+    for mode in MODES:
         for analysis in ("two_way", "repeated_measures"):
             for effect, r in result[mode][analysis].items():
                 lines.append(

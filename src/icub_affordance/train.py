@@ -13,26 +13,19 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import N_GOAL, N_VISUAL, OnlineTrainer, Weights, equal_runs
-from .som import TASKS
-from .spec import OBJECTS
-
-GRASPING, CATEGORISATION = 0, 1
-MAPPINGS = {
-    # mapping A (the paper's networks 1-6): natural objects -> power, artefacts -> precision
-    "A": {"natural": "power", "artefact": "precision"},
-    "B": {"natural": "precision", "artefact": "power"},
-}
-CUES = ("first_step", "all_steps")
+from .spec import CATEGORISATION, CUES, GRASPING, MAPPINGS, OBJECTS, TASKS
 
 
 @dataclass(frozen=True)
 class TrainConfig:
-    hidden: int = 10
-    learning_rate: float = 0.075
-    iterations: int = 12000
-    phase1_iterations: int = 6000
-    init_scale: float = 0.5  # initial weights uniform in +- this
-    categorisation_cue: str = "first_step"  # or "all_steps"
+    """A network's training settings (config key ``network``, where their values are given)."""
+
+    hidden: int
+    learning_rate: float
+    iterations: int
+    phase1_iterations: int
+    init_scale: float  # initial weights uniform in +- this
+    categorisation_cue: str  # one of CUES
 
     def __post_init__(self) -> None:
         if self.categorisation_cue not in CUES:

@@ -4,12 +4,13 @@ import pandas as pd
 
 from icub_affordance.figures import conflict_timecourse, figure5
 from icub_affordance.io import redirect_log
+from icub_affordance.spec import MODES
 from icub_affordance.stats import categorisation_trials
 
 with redirect_log(snakemake.log[0]):
     trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)
     cells, steps = {}, {}
-    for mode in ("closed_loop", "teacher_forced"):
+    for mode in MODES:
         df = categorisation_trials(trials, mode)
         means = df.groupby(["congruency", "size", "network"])["rmse"].mean()
         cells[mode] = {

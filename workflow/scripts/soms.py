@@ -3,7 +3,8 @@
 import numpy as np
 
 from icub_affordance.io import load_npz, redirect_log, save_npz
-from icub_affordance.som import TASKS, SOMConfig, active_units, train_soms
+from icub_affordance.som import SOMConfig, active_units, train_soms
+from icub_affordance.spec import TASKS
 
 with redirect_log(snakemake.log[0]):
     objects = list(snakemake.params.objects)

@@ -1,7 +1,7 @@
 """Train one Jordan network (the wildcard `net`) and save its learning curve and weights."""
 
 from icub_affordance.io import redirect_log, save_npz, write_csv
-from icub_affordance.som import TASKS
+from icub_affordance.spec import TASKS
 from icub_affordance.train import (
     TrainConfig,
     load_materials,

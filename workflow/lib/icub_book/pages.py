@@ -18,10 +18,10 @@ import pandas as pd
 from icub_affordance import findings as science
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
+from icub_affordance.spec import MODES
 
 from . import text
 
-MODES = ("closed_loop", "teacher_forced")
 ANALYSES = (("two_way", "two-way (trials)"), ("repeated_measures", "repeated measures (networks)"))
 
 #: What the paper reports, beside which the comparison page sets this run's numbers.
