@@ -73,3 +73,43 @@ def test_soms_are_deterministic():
     a = train_soms(maps, som_config(iterations=100), 5)
     b = train_soms(maps, som_config(iterations=100), 5)
     np.testing.assert_array_equal(a.goal_act, b.goal_act)
+
+
+def outline_maps() -> np.ndarray:
+    """Two large outlines (many edge cells) and two small ones, as the four objects' maps."""
+    maps = np.zeros((4, 10, 10))
+    maps[0, 1:9, 1] = maps[0, 1:9, 8] = maps[0, 1, 1:9] = maps[0, 8, 1:9] = 1  # big square
+    maps[1, 4:6, 4:6] = 1  # small square
+    maps[2, 2:8, 2] = maps[2, 2:8, 7] = maps[2, 2, 3:7] = maps[2, 7, 3:7] = 1  # big, rounder
+    maps[3, 4, 4:7] = maps[3, 5, 4] = 1  # small, another shape
+    return maps
+
+
+def test_goal_response_changes_the_goal_activations_and_nothing_upstream():
+    """Two readings that differ only in soms.goal_response: the same Object and Task maps (and
+    the same Goal map weights, trained on their outputs); only what the Goal map sends on
+    differs, and with `grows` a large object's Goal cluster is the larger."""
+    maps = outline_maps()
+    fixed = train_soms(maps, som_config(iterations=300, goal_response="fixed"), 7)
+    grows = train_soms(maps, som_config(iterations=300, goal_response="grows"), 7)
+    for field in vars(fixed):
+        if field != "goal_act":
+            np.testing.assert_array_equal(getattr(fixed, field), getattr(grows, field), field)
+    assert not np.allclose(fixed.goal_act, grows.goal_act)
+    # a bump of one width whatever the object (3-5 units, fewer at the map's edge)
+    assert max(active_units(a) for a in fixed.goal_act.reshape(8, 10, 10)) <= 5
+
+    def width(act, winner):
+        """The bump's width, from its value one unit from the winner: exp(-1 / (2 width^2))."""
+        row = winner[0] + 1 if winner[0] + 1 < act.shape[0] else winner[0] - 1
+        return np.sqrt(-1 / (2 * np.log(act[row, winner[1]])))
+
+    for task in range(2):
+        widths = [width(grows.goal_act[o, task], grows.goal_winners[o, task]) for o in range(4)]
+        assert min(widths[0], widths[2]) > max(widths[1], widths[3]), widths
+        assert widths[0] > som_config().bump_sigma
+
+
+def test_goal_response_is_checked():
+    with pytest.raises(ValueError, match="goal_response"):
+        som_config(goal_response="wide")

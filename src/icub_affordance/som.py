@@ -2,10 +2,14 @@
 
 The maps themselves are MiniSom's. What the network receives from a map is this project's
 choice, stated here and in the book: a Gaussian bump on the map centred on the winning unit.
-For the Task and Goal maps the bump has a fixed width. For the Object map its width grows with the
-square root of the number of edge cells in the visual input, so a large object (more edge cells,
-a longer outline) lights up a larger cluster than a small one (paper section 2.3, after Caligiore
-et al. 2008). The width is computed from the input alone; nothing is keyed by the object's name.
+For the Object map its width grows with the square root of the input's activity (its sum: the
+number of edge cells of the binary visual map), so a large object (more edge cells, a longer
+outline) lights up a larger cluster than a small one (paper section 2.3, after Caligiore et al.
+2008). The width is computed from the input alone; nothing is keyed by the object's name. The Task
+map's bump has a fixed width. The Goal map's is a reading (MODEL.md section 5, config
+``soms.goal_response``): ``fixed``, the Task map's fixed width, or ``grows``, the Object map's rule
+applied to the Goal map's input (the Object and Task maps' activations), so a large object's Goal
+cluster is larger too.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from minisom import MiniSom
 
-from .spec import TASKS
+from .spec import GOAL_RESPONSES, TASKS
 
 
 @dataclass(frozen=True)
@@ -27,8 +31,15 @@ class SOMConfig:
     sigma: float  # initial neighbourhood width (units), decays during training
     learning_rate: float
     object_width_per_edge: float  # object bump width = this * sqrt(edge cells), units
-    bump_sigma: float  # width of the Task and Goal bumps, units
+    bump_sigma: float  # width of the Task bump, and of the Goal bump when it is fixed, units
     task_pattern_size: int  # length of the random binary task patterns
+    goal_response: str  # one of GOAL_RESPONSES: the Goal bump's width fixed or growing
+
+    def __post_init__(self) -> None:
+        if self.goal_response not in GOAL_RESPONSES:
+            raise ValueError(
+                f"goal_response must be one of {GOAL_RESPONSES}, not {self.goal_response!r}"
+            )
 
 
 def train_som(data: np.ndarray, config: SOMConfig, seed: int) -> MiniSom:
@@ -52,15 +63,30 @@ def bump(grid: int, centre: tuple[int, int], sigma: float) -> np.ndarray:
     return np.exp(-d2 / (2.0 * sigma**2))
 
 
-def object_activation(som: MiniSom, visual_map: np.ndarray, config: SOMConfig) -> np.ndarray:
-    """The Object map's response: a bump at the winner, as wide as the input is active."""
-    x = visual_map.astype(float).ravel()
+def growing_activation(som: MiniSom, x: np.ndarray, config: SOMConfig) -> np.ndarray:
+    """The Object map's rule: a bump at the winner whose width is ``object_width_per_edge`` times
+    the square root of the input's activity (its sum; at least 1)."""
+    x = np.asarray(x, dtype=float).ravel()
     width = config.object_width_per_edge * np.sqrt(max(x.sum(), 1.0))
     return bump(config.grid, som.winner(x), width)
 
 
+def object_activation(som: MiniSom, visual_map: np.ndarray, config: SOMConfig) -> np.ndarray:
+    """The Object map's response: a bump at the winner, as wide as the input is active (for the
+    binary visual map, its activity is its number of edge cells)."""
+    return growing_activation(som, visual_map, config)
+
+
 def fixed_activation(som: MiniSom, x: np.ndarray, config: SOMConfig) -> np.ndarray:
     return bump(config.grid, som.winner(np.asarray(x, dtype=float)), config.bump_sigma)
+
+
+def goal_activation(som: MiniSom, x: np.ndarray, config: SOMConfig) -> np.ndarray:
+    """The Goal map's response to its input (the Object and Task maps' activations, joined), by
+    the reading ``config.goal_response``: a fixed-width bump, or the Object map's growing one."""
+    if config.goal_response == "grows":
+        return growing_activation(som, x, config)
+    return fixed_activation(som, x, config)
 
 
 @dataclass
@@ -96,7 +122,7 @@ def train_soms(visual_maps: np.ndarray, config: SOMConfig, seed: int) -> SOMs:
         [np.concatenate([o.ravel(), t.ravel()]) for o in object_act for t in task_act]
     )
     goal_som = train_som(goal_inputs, config, seed + 13)
-    goal_act = np.array([fixed_activation(goal_som, g, config) for g in goal_inputs])
+    goal_act = np.array([goal_activation(goal_som, g, config) for g in goal_inputs])
     n_obj, n_task = len(object_act), len(task_act)
     return SOMs(
         object_act=object_act,

@@ -84,6 +84,10 @@ MAPPINGS: dict[str, dict[str, str]] = {
 #: How long a categorisation trial shows its cue (MODEL.md section 7: two readings).
 CUES: tuple[str, ...] = ("first_step", "all_steps")
 
+#: What the Goal map sends on (MODEL.md section 5: two readings): a bump of fixed width, or one
+#: that widens with its input's activity, as the Object map's does.
+GOAL_RESPONSES: tuple[str, ...] = ("fixed", "grows")
+
 #: The two ways the trained networks are tested (paper section 3; MODEL.md section 6).
 MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")
 

@@ -1,9 +1,13 @@
 """The paper's statistics (section 3): ANOVAs of trial RMSE by congruency and object size.
 
-Two analyses of the categorisation trials: the paper's two-way ANOVA over all trials (every
-trial an observation), and a repeated-measures ANOVA with the network as the subject, which
-respects that each network contributes trials to every cell. Both report F, degrees of freedom,
-p and partial eta squared.
+Three analyses of the categorisation trials: the paper's two-way ANOVA over all trials (every
+trial an observation: the paper's analysis, shown, not used for inference), a repeated-measures
+ANOVA with the network as the subject, and the analysis used for inference, a linear mixed model
+(MODEL.md section 8): fixed effects congruency x size x mapping, a random intercept per network,
+fitted to each network's mean per object (the network is the unit: in closed loop a network's
+trials of one object and task are identical, whatever the sequence). The ANOVAs report F,
+degrees of freedom, p and partial eta squared; the mixed model an estimate, its 95% interval and p
+per term.
 """
 
 from __future__ import annotations
@@ -91,9 +95,95 @@ def cell_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, float]:
     return out
 
 
+#: The mixed model's factors, each coded -0.5 / +0.5, the second level +0.5: so a main effect's
+#: estimate is the difference second - first averaged over the other factors (for congruency and
+#: size, positive is the paper's direction), and an interaction's the difference of differences.
+MIXED_CODING = {
+    "congruency": ("congruent", "incongruent"),
+    "size": ("large", "small"),
+    "mapping": ("A", "B"),
+}
+MIXED_TERMS = (
+    "congruency",
+    "size",
+    "mapping",
+    "congruency:size",
+    "congruency:mapping",
+    "size:mapping",
+    "congruency:size:mapping",
+)
+
+
+def network_object_means(df: pd.DataFrame, depvar: str = "rmse") -> pd.DataFrame:
+    """Each network's mean ``depvar`` per object (over its sequences), with the object's
+    congruency, size and the network's mapping: the mixed model's observations."""
+    keys = ["network", "mapping", "object", "congruency", "size"]
+    return df.groupby(keys, as_index=False)[depvar].mean()
+
+
+def coded(means: pd.DataFrame) -> pd.DataFrame:
+    """The factors of ``MIXED_CODING`` as -0.5 / +0.5 columns."""
+    out = means.copy()
+    for factor, (first, second) in MIXED_CODING.items():
+        values = out[factor].astype(str)
+        if not set(values) <= {first, second}:
+            raise ValueError(f"{factor}: levels {sorted(set(values))}, expected {first}, {second}")
+        out[factor] = np.where(values == second, 0.5, -0.5)
+    return out
+
+
+def mixed_model(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+    """statsmodels MixedLM (REML) of ``depvar`` on congruency x size x mapping, a random
+    intercept per network, over the networks' means per object. One entry per term (
+    ``MIXED_TERMS``): estimate, 95% Wald interval and p."""
+    import warnings
+
+    import statsmodels.formula.api as smf
+
+    data = coded(network_object_means(df, depvar))
+    # fitted in units of the measure's standard deviation and scaled back (the estimates and
+    # intervals scale with it, p does not): at RMSE's scale (variances ~1e-4) the gradient
+    # optimisers stop early or meet a singular matrix
+    scale = float(data[depvar].std()) or 1.0
+    data["y"] = data[depvar] / scale
+    model = smf.mixedlm("y ~ congruency * size * mapping", data, groups=data["network"])
+    with warnings.catch_warnings():
+        # a network variance estimated at 0 is a boundary, not an error: the fit is still the
+        # REML fit, and the intervals of the fixed effects are still Wald's
+        warnings.simplefilter("ignore")
+        fit = model.fit(reml=True, method=["powell", "nm"])
+    ci = fit.conf_int(alpha=0.05)
+    return {
+        term: {
+            "estimate": float(fit.fe_params[term]) * scale,
+            "ci_low": float(ci.loc[term, 0]) * scale,
+            "ci_high": float(ci.loc[term, 1]) * scale,
+            "p": float(fit.pvalues[term]),
+        }
+        for term in MIXED_TERMS
+    }
+
+
+def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+    """Per object and mapping, the mean over networks of each network's mean (and its n)."""
+    per_net = network_object_means(df, depvar)
+    out = {}
+    for (mapping, obj), group in per_net.groupby(["mapping", "object"]):
+        out[f"{mapping}_{obj}"] = {
+            "mean": float(group[depvar].mean()),
+            "sd": float(group[depvar].std(ddof=1)) if len(group) > 1 else float("nan"),
+            "n_networks": int(len(group)),
+            "congruency": str(group["congruency"].iloc[0]),
+            "size": str(group["size"].iloc[0]),
+        }
+    return out
+
+
 def analyse(trials: pd.DataFrame) -> dict[str, object]:
-    """Everything anova.json holds, for both test modes."""
+    """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode, and
+    the mixed model per mode under ``mixed``."""
     result: dict[str, object] = {}
+    mixed = {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         result[mode] = {
@@ -104,6 +194,8 @@ def analyse(trials: pd.DataFrame) -> dict[str, object]:
             "means": cell_means(df),
             "wrong_grip_rate": wrong_grip_rates(df),
         }
+        mixed[mode] = mixed_model(df)
+    result["mixed"] = mixed
     return result
 
 
