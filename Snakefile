@@ -33,6 +33,7 @@ include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
 include: "workflow/rules/runs.smk"
+include: "workflow/rules/readings.smk"
 include: "workflow/rules/embodied.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
@@ -54,5 +55,7 @@ rule all:
         rules.figure5.output,
         rules.figure_hidden.output,
         run_outputs(CONFIGURED_RUNS),
+        rules.readings.output,
+        rules.readings_figure.output,
         rules.embodied_summary.output,
         rules.embodied_filmstrip.output,

@@ -219,6 +219,49 @@ def sweep_effects(points, path) -> None:
     save(fig, path)
 
 
+def readings_effects(summary, replications, path) -> None:
+    """Every reading's congruency and size effects on every measure: the mean difference over
+    replications with its 95% interval (positive: the paper's direction), and each replication's
+    estimate as a small dot."""
+    measures = list(dict.fromkeys(summary["measure"]))
+    readings = list(dict.fromkeys(summary["reading"]))
+    effects = ("congruency", "size")
+    fig, axes = plt.subplots(
+        len(measures), 2, figsize=(10, 1.0 + 0.45 * len(readings) * len(measures)), squeeze=False
+    )
+    y = np.arange(len(readings))
+    for i, measure in enumerate(measures):
+        for j, effect in enumerate(effects):
+            ax = axes[i, j]
+            rows = summary[(summary["measure"] == measure) & (summary["effect"] == effect)]
+            rows = rows.set_index("reading").loc[readings]
+            mean = rows["diff"].to_numpy()
+            err = np.vstack([mean - rows["ci_low"], rows["ci_high"] - mean])
+            colours = [
+                "C2" if lo > 0 else ("C3" if hi < 0 else "0.5")
+                for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
+            ]
+            ax.errorbar(mean, y, xerr=err, fmt="none", ecolor="0.6", capsize=3)
+            ax.scatter(mean, y, c=colours, zorder=3)
+            reps = replications[
+                (replications["measure"] == measure) & (replications["effect"] == effect)
+            ]
+            for k, reading in enumerate(readings):
+                est = reps.loc[reps["reading"] == reading, "estimate"].to_numpy()
+                ax.scatter(est, np.full(len(est), k + 0.25), s=6, c="0.4", zorder=2)
+            ax.axvline(0, color="0.3", lw=0.8)
+            ax.set_yticks(y, readings if j == 0 else [""] * len(readings), fontsize=8)
+            ax.invert_yaxis()
+            ax.set_title(f"{measure}: {effect}", fontsize=9)
+            ax.grid(alpha=0.3)
+    fig.suptitle(
+        "difference in the paper's direction (> 0): green / red = interval above / below 0",
+        fontsize=9,
+    )
+    fig.tight_layout()
+    save(fig, path)
+
+
 CONDITION_STYLE = {
     "grasping": {"color": "0.45", "ls": "-"},
     "congruent": {"color": "tab:green", "ls": "-"},

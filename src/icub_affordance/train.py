@@ -67,8 +67,8 @@ def context(m: Materials, obj: int, task: int, cue: str) -> np.ndarray:
     """Visual and goal input at each of the steps-1 transitions of a trial: (steps-1, 200).
 
     In a categorisation trial the Task map shows the categorisation pattern at the first step
-    only (cue "first_step", this project's reading of the paper), then the grasping pattern again;
-    with cue "all_steps" it stays on.
+    only (cue "first_step"), then the grasping pattern again; with cue "all_steps" it stays on. Both
+    are readings of the paper (MODEL.md section 7), run side by side.
     """
     steps = m.demos.shape[3] - 1
     ctx = np.empty((steps, N_VISUAL + N_GOAL))

@@ -50,7 +50,8 @@ def settings(value):
 # ---- Runs --------------------------------------------------------------------------------------
 # A run is the model run once: the config itself (the main run, at the paths under data/), or
 # the config with some sections overridden (every other run, under data/runs/{name}/). Runs come
-# from config `runs:`, from the cue ablation (the other cue timing) and from the sweep.
+# from config `runs:`, from the cue ablation (the other cue timing), from the sweep and from the
+# readings (those not already among the others).
 
 MAIN = "main"
 RUN_SECTIONS = ("seed", "network", "soms")  # what a run may override
@@ -78,10 +79,41 @@ def sweep_runs():
     return runs
 
 
+def reading_runs(known):
+    """The readings (config `readings`, MODEL.md sections 5, 7, 8): every combination of cue
+    timing and Goal response, each replicated at the config's seed and, with robustness, at each
+    of `readings.seeds`. A replication is the run whose config equals the config with that
+    reading and seed laid over it: an existing run (in `known`, name -> config) if one has those
+    settings, else a new run. Returns the new runs (name -> overrides) and the readings table,
+    one row per reading and replication: reading, cue, goal_response, seed, run."""
+    readings = config["readings"]
+    seeds = [config["seed"], *(readings["seeds"] if config["robustness"] else [])]
+    known, new, table = dict(known), {}, []
+    for cue, goal in itertools.product(readings["categorisation_cue"], readings["goal_response"]):
+        for seed in dict.fromkeys(seeds):
+            overrides = {
+                "seed": seed,
+                "network": {"categorisation_cue": cue},
+                "soms": {"goal_response": goal},
+            }
+            run_config = merged(config, overrides)
+            run = next((name for name, c in known.items() if c == run_config), None)
+            if run is None:
+                run = f"reading_{cue}_{goal}" + ("" if seed == config["seed"] else f"_seed{seed}")
+                new[run], known[run] = overrides, run_config
+            row = {"reading": f"{cue}+{goal}", "cue": cue, "goal_response": goal}
+            table.append(row | {"seed": seed, "run": run})
+    return new, table
+
+
 ABLATION, _ablation_overrides = ablation_run()
 SWEEP_RUNS = sweep_runs()
+_EARLIER = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
+READING_RUNS, READINGS = reading_runs(
+    {MAIN: config} | {name: merged(config, o) for name, o in _EARLIER.items()}
+)
 # in this order, which decides whose demonstrations and SOMs a run shares (stage_run)
-RUNS = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
+RUNS = {**_EARLIER, **READING_RUNS}
 CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
@@ -95,10 +127,10 @@ def check_runs():
     schema_path = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
     validator = jsonschema.Draft202012Validator(yaml.safe_load(schema_path.read_text()))
     for name in config["runs"]:
-        if name in (MAIN, ABLATION) or name in SWEEP_RUNS:
+        if name in (MAIN, ABLATION) or name in SWEEP_RUNS or name.startswith("reading_"):
             raise ValueError(
-                f"config runs: the name {name!r} is taken (the main run, the cue ablation or a "
-                "sweep point). Give the run another name."
+                f"config runs: the name {name!r} is taken (the main run, the cue ablation, a "
+                "sweep point or a reading: reading_*). Give the run another name."
             )
         error = jsonschema.exceptions.best_match(validator.iter_errors(RUN_CONFIG[name]))
         if error is not None:
