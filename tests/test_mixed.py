@@ -123,3 +123,11 @@ def test_mixed_model_uses_network_means_not_trials():
     a, b = mixed_model(df), mixed_model(copies)
     for term in MIXED_TERMS:
         assert a[term]["ci_low"] == pytest.approx(b[term]["ci_low"], rel=1e-6)
+
+
+def test_mixed_model_of_a_constant_measure_is_zero_without_p():
+    """Every trial committing at the same step: no difference, no variance, no p."""
+    fit = mixed_model(synthetic().assign(rmse=1.0))
+    for term in MIXED_TERMS:
+        assert fit[term]["estimate"] == fit[term]["ci_low"] == fit[term]["ci_high"] == 0.0
+        assert np.isnan(fit[term]["p"])

@@ -52,6 +52,13 @@ def verdict(analysis: dict, effect: str, alpha: float = ALPHA) -> Verdict:
     return Verdict(paper_direction=bool(means[first] < means[second]), significant=bool(p < alpha))
 
 
+def mixed_verdict(mixed: dict, effect: str, alpha: float = ALPHA) -> Verdict:
+    """The verdict on ``effect`` of one mixed model (``anova.json``'s ``mixed`` of one mode): its
+    estimate is the difference in the paper's direction (``stats.MIXED_CODING``), its p Wald's."""
+    term = mixed[effect]
+    return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(term["p"] < alpha))
+
+
 def cue_timing_decides(shows_effect: dict[str, bool]) -> bool:
     """Whether the congruency effect appears with the cue at the first step only and not with the
     cue held at every step: ``shows_effect`` maps each cue timing run to its verdict."""

@@ -98,7 +98,10 @@ def summary(replications: pd.DataFrame) -> pd.DataFrame:
 
 def direction(row) -> str:
     """A summary row's effect: "paper" or "reversed" when its interval excludes 0 on that side,
-    "none" when it includes 0."""
+    "none" when it includes 0, "constant" when the measure did not vary at all (a difference of
+    exactly 0 with a zero-width interval)."""
+    if row["diff"] == row["ci_low"] == row["ci_high"] == 0:
+        return "constant"
     if row["ci_low"] > 0:
         return "paper"
     if row["ci_high"] < 0:
@@ -111,6 +114,8 @@ def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
     replications significant each way, as text (the book's matrix)."""
 
     def cell(row) -> str:
+        if direction(row) == "constant":
+            return "0 (every network scored the same on every object)"
         counts = f"; {row['n_paper']}/{row['replications']} paper, {row['n_reversed']} reversed"
         return (
             f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]"

@@ -135,12 +135,20 @@ def coded(means: pd.DataFrame) -> pd.DataFrame:
 def mixed_model(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
     """statsmodels MixedLM (REML) of ``depvar`` on congruency x size x mapping, a random
     intercept per network, over the networks' means per object. One entry per term (
-    ``MIXED_TERMS``): estimate, 95% Wald interval and p."""
+    ``MIXED_TERMS``): estimate, 95% Wald interval and p. A measure that is the same for every
+    network and object gives estimates of 0, zero-width intervals and an undefined (NaN) p."""
     import warnings
 
     import statsmodels.formula.api as smf
 
     data = coded(network_object_means(df, depvar))
+    if data[depvar].nunique() == 1:
+        # every network scored the same on every object (say, every trial committing at the first
+        # step): no difference to estimate and no variance to test it against
+        return {
+            term: {"estimate": 0.0, "ci_low": 0.0, "ci_high": 0.0, "p": float("nan")}
+            for term in MIXED_TERMS
+        }
     # fitted in units of the measure's standard deviation and scaled back (the estimates and
     # intervals scale with it, p does not): at RMSE's scale (variances ~1e-4) the gradient
     # optimisers stop early or meet a singular matrix

@@ -27,9 +27,16 @@ BOOK_DATA = {
     "divergence.json": "data/eval/divergence.json",
     "hidden_explained.csv": "data/eval/hidden_explained.csv",
     "hidden_representations.png": "data/figures/hidden_representations.png",
+    "readings_summary.csv": "data/readings/summary.csv",
+    "readings_replications.csv": "data/readings/replications.csv",
+    "readings_effects.png": "data/readings/effects.png",
 } | {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
+# the Goal map under the other response, if a reading uses it (the readings chapter)
+_GROWS = [r["run"] for r in READINGS if r["goal_response"] == "grows" and r["seed"] == config["seed"]]
+if _GROWS and config["soms"]["goal_response"] != "grows":
+    BOOK_DATA["readings_grows_soms.npz"] = f"{run_dir(stage_run(_GROWS[0], 'soms'))}/soms/soms.npz"
 
 # With `--config robustness=True` the book also shows the sweep and its cost (robustness.md);
 # without, that page says that this build did not run them.
@@ -57,13 +64,26 @@ FINDINGS_READS = [
     "joint_table.csv",
     "visual_maps.npz",
     "soms.npz",
+    "readings_summary.csv",
+    *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
-FINDINGS_TABLES = ["anova_closed_loop", "anova_teacher_forced", "comparison", "cue_anova"]
+FINDINGS_TABLES = [
+    "anova_closed_loop",
+    "anova_teacher_forced",
+    "mixed_closed_loop",
+    "mixed_teacher_forced",
+    "comparison",
+    "cue_anova",
+    "readings_matrix",
+    "readings_summary",
+]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
     FINDINGS_TABLES += ["sweep"]
-FINDINGS_CONFIG = ["seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep"]
+FINDINGS_CONFIG = [
+    "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
+]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES
 }

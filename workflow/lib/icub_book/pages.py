@@ -16,9 +16,11 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance import findings as science
+from icub_affordance import readings as readings_science
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
+from icub_affordance.stats import MIXED_TERMS
 
 from . import text
 
@@ -66,18 +68,67 @@ def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def mixed_rows(anova: dict, mode: str) -> pd.DataFrame:
+    """The mixed model of one test mode, one row per term (results page)."""
+    return pd.DataFrame(
+        [
+            {
+                "term": term.replace(":", " × "),
+                "estimate": anova["mixed"][mode][term]["estimate"],
+                "95% interval": text.fmt_ci(anova["mixed"][mode][term]),
+                "p": anova["mixed"][mode][term]["p"],
+            }
+            for term in MIXED_TERMS
+        ]
+    )
+
+
+def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """The readings chapter: the matrix of readings x measures, the Goal map's clusters under
+    each response, and the conclusion, from data/readings/summary.csv."""
+    summary = pd.read_csv(inputs["readings_summary.csv"])
+    directions = {
+        (row["reading"], row["measure"], row["effect"]): readings_science.direction(row)
+        for _, row in summary.iterrows()
+    }
+    goal_units = {}
+    for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
+        if name in inputs:
+            soms = load_npz(inputs[name])
+            for o, obj in enumerate(soms["objects"].tolist()):
+                for t, task in enumerate(soms["tasks"].tolist()):
+                    goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
+                        soms["goal_act"][o, t]
+                    )
+    reps = sorted(set(summary["replications"]))
+    values = goal_units | {
+        "n_readings": int(summary["reading"].nunique()),
+        "replications": " to ".join(map(str, reps)),
+        "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
+        "conclusion": text.readings_conclusion(summary, directions),
+    }
+    shown = summary.assign(
+        reading=[
+            text.reading_label(c, g)
+            for c, g in zip(summary["cue"], summary["goal_response"], strict=True)
+        ]
+    )
+    return values, {"readings_matrix": readings_science.matrix(shown), "readings_summary": summary}
+
+
 def intro(anova: dict) -> dict:
     closed = anova["closed_loop"]
-    means, rm = closed["means"], closed["repeated_measures"]
-    cong, size = science.verdict(closed, "congruency"), science.verdict(closed, "size")
+    means, mixed = closed["means"], anova["mixed"]["closed_loop"]
+    cong = science.mixed_verdict(mixed, "congruency")
+    size = science.mixed_verdict(mixed, "size")
     return {
         "n_networks": closed["n_networks"],
         "cong": means["congruent"],
         "incong": means["incongruent"],
         "large": means["large"],
         "small": means["small"],
-        "cong_stats": text.fmt_f(rm["congruency"]),
-        "size_stats": text.fmt_f(rm["size"]),
+        "cong_stats": text.fmt_mixed(mixed["congruency"]),
+        "size_stats": text.fmt_mixed(mixed["size"]),
         "cong_dir": text.lower_or_higher(cong),
         "size_dir": text.lower_or_higher(size),
         "cong_verdict": text.paper_agreement(cong),
@@ -85,7 +136,7 @@ def intro(anova: dict) -> dict:
     }
 
 
-def results(anova: dict, curve: dict) -> dict:
+def results(anova: dict, curve: dict, cue: str) -> dict:
     out = {
         "rmse_start": curve["start"],
         "rmse_2000": curve["around_at"],
@@ -103,24 +154,29 @@ def results(anova: dict, curve: dict) -> dict:
                 out[f"{mode}_{analysis}_{effect}"] = text.fmt_f(r)
         for key, value in m["wrong_grip_rate"].items():
             out[f"{mode}_wrong_{key}"] = 100 * value
+        mixed = anova["mixed"][mode]
+        for term, r in mixed.items():
+            out[f"{mode}_mixed_{term.replace(':', '_x_')}"] = text.fmt_mixed(r)
         out[f"{mode}_cong_sentence"] = text.results_sentence(
-            "congruency", science.verdict(m, "congruency")
+            "congruency", science.mixed_verdict(mixed, "congruency")
         )
-        out[f"{mode}_size_sentence"] = text.results_sentence("size", science.verdict(m, "size"))
+        out[f"{mode}_size_sentence"] = text.results_sentence(
+            "size", science.mixed_verdict(mixed, "size")
+        )
     out["n_trials"] = anova["closed_loop"]["n_trials"]
+    out["cue"] = text.CUES[cue]
     return out
 
 
 def discussion(anova: dict, demos: dict, cue: str) -> dict:
-    closed, forced = anova["closed_loop"], anova["teacher_forced"]
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     return {
         "grip_distance_large": gap["large"],
         "grip_distance_small": gap["small"],
         "text": text.discussion(
-            science.verdict(closed, "congruency"),
-            science.verdict(closed, "size"),
-            science.verdict(forced, "size"),
+            science.mixed_verdict(anova["mixed"]["closed_loop"], "congruency"),
+            science.mixed_verdict(anova["mixed"]["closed_loop"], "size"),
+            science.mixed_verdict(anova["mixed"]["teacher_forced"], "size"),
             gap,
             cue,
         ),
@@ -357,22 +413,29 @@ def page_findings(
     demos = load_npz(inputs["demos.npz"])
     beyond_values, cue_table = beyond(inputs, config, ablation_cue)
     robustness_values, sweep_table = robustness(inputs, config)
+    readings_values, readings_tables = readings(inputs, config)
     pages = {
         "intro": intro(anova),
-        "results": results(anova, curve),
+        "results": results(anova, curve, config["network"]["categorisation_cue"]),
         "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
         "beyond": beyond_values,
         "robustness": robustness_values,
+        "readings": readings_values,
         "training": training(inputs, config),
         "vision": vision(inputs, config),
         "robot": robot(inputs),
         "architecture": architecture(inputs, config),
         "notes": notes(config),
     }
-    tables = {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES} | {
-        "comparison": comparison(anova, curve, config),
-        "cue_anova": cue_table,
-    }
+    tables = (
+        {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
+        | {f"mixed_{mode}": mixed_rows(anova, mode) for mode in MODES}
+        | {
+            "comparison": comparison(anova, curve, config),
+            "cue_anova": cue_table,
+        }
+        | readings_tables
+    )
     if sweep_table is not None:
         tables["sweep"] = sweep_table
     return pages, tables

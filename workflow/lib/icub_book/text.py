@@ -24,6 +24,15 @@ def fmt_f(effect: dict) -> str:
     )
 
 
+def fmt_ci(term: dict) -> str:
+    return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
+
+
+def fmt_mixed(term: dict) -> str:
+    """A mixed-model term: estimate, 95% interval, p."""
+    return f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, {fmt_p(term['p'])}"
+
+
 def pct(x: float) -> str:
     return f"{100 * x:.0f}%"
 
@@ -121,9 +130,11 @@ def discussion(
             "responses for large objects."
         )
     text.append(
-        "The reproduction notes list the choices behind these numbers. The most consequential is "
-        f"the reading of the categorisation cue (this run: `{cue}`); the next chapter sets the "
-        "other reading beside it, run by the same pipeline."
+        "The reproduction notes list the choices behind these numbers. The most consequential are "
+        f"readings of the paper's text: when the categorisation cue reaches the network (this "
+        f"run: `{cue}`) and what the Goal map sends on. The next chapters set the other readings "
+        "beside this one, with equal standing, run by the same pipeline and scored on the same "
+        "trials with three measures."
     )
     return "\n\n".join(text)
 
@@ -376,3 +387,98 @@ def cost_findings(cost) -> str:
             "run, so modest differences between the marginal costs mean little."
         )
     return text
+
+
+# The readings chapter (book/readings.md): the readings x measures matrix in words.
+
+MEASURE_NAMES = {
+    "rmse": "the paper's RMSE",
+    "time_to_commit": "time to commit",
+    "rmse_per_grip_distance": "RMSE per grip distance",
+}
+GOAL_RESPONSES = {
+    "fixed": "a Goal bump of fixed width",
+    "grows": "a Goal bump that widens with its input",
+}
+DIRECTIONS = {
+    "paper": "in the paper's direction",
+    "reversed": "reversed",
+    "none": "not distinguishable from zero",
+    "constant": "absent, the measure the same for every network and object,",
+}
+
+
+def reading_label(cue: str, goal: str) -> str:
+    return f"{CUES[cue]}, {GOAL_RESPONSES[goal]}"
+
+
+def readings_conclusion(summary, directions: dict) -> str:
+    """What the readings matrix says, generated from ``data/readings/summary.csv`` (MyST).
+
+    ``directions`` maps (reading, measure, effect) to "paper", "reversed" or "none": where the
+    effect's 95% interval lies (``icub_affordance.readings.direction``)."""
+    readings = list(dict.fromkeys(summary["reading"]))
+    measures = list(dict.fromkeys(summary["measure"]))
+    n = sorted(set(summary["replications"]))
+    info = summary.drop_duplicates("reading").set_index("reading")
+
+    def label(reading: str) -> str:
+        row = info.loc[reading]
+        return f"*{reading_label(row['cue'], row['goal_response'])}*"
+
+    def listing(names: list[str]) -> str:
+        return "no reading" if not names else " and ".join(label(r) for r in names)
+
+    paragraphs = []
+    if n == [1]:
+        paragraphs.append(
+            "Each reading ran once here (one replication at the config's seed), so an interval "
+            "below is that replication's mixed-model interval over its networks: it says how "
+            "sure the effect is for these demonstrations, maps and networks, not whether another "
+            f"replication would show it. `{ROBUSTNESS_COMMAND}` replicates every reading."
+        )
+    else:
+        paragraphs.append(
+            f"Each reading ran {' to '.join(map(str, n))} whole replications (each reseeding the "
+            "demonstrations, the SOMs and the networks); an interval is a 95% t-interval over "
+            "the replications' estimates."
+        )
+    lines = []
+    for measure in measures:
+        for effect in ("congruency", "size"):
+            by = {d: [] for d in DIRECTIONS}
+            for reading in readings:
+                by[directions[(reading, measure, effect)]].append(reading)
+            parts = [f"{DIRECTIONS[d]} with {listing(names)}" for d, names in by.items() if names]
+            lines.append(
+                f"- **{effect.capitalize()}, {MEASURE_NAMES[measure]}:** " + "; ".join(parts) + "."
+            )
+    paragraphs.append("\n".join(lines))
+    both = {
+        measure: [
+            r
+            for r in readings
+            if directions[(r, measure, "congruency")] == directions[(r, measure, "size")] == "paper"
+        ]
+        for measure in measures
+    }
+    first = measures[0]
+    if both[first]:
+        paragraphs.append(
+            f"On {MEASURE_NAMES[first]}, the paper's own measure, both effects go the paper's way "
+            f"with {listing(both[first])}."
+        )
+    else:
+        paragraphs.append(
+            f"On {MEASURE_NAMES[first]}, the paper's own measure, no reading gives both effects "
+            "in the paper's direction."
+        )
+    others = [m for m in measures[1:] if both[m]]
+    paragraphs.append(
+        " ".join(
+            f"On {MEASURE_NAMES[m]}, both go the paper's way with {listing(both[m])}."
+            for m in others
+        )
+        or "No other measure gives both effects in the paper's direction under any reading."
+    )
+    return "\n\n".join(paragraphs)
