@@ -95,8 +95,10 @@ def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tm
 def test_a_bad_run_stops_snakemake_before_any_job(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     path = tmp_path / "bad.yaml"
-    path.write_text(yaml.safe_dump({"runs": {"half_lr": {"network": {"learnin_rate": 0.1}}}}))
-    result = run_snakemake(workdir, "-n", "--configfile", str(path))
+    bad = {"half_lr": {"network": {"learnin_rate": 0.1}}}
+    path.write_text(yaml.safe_dump(load_test_config() | {"runs": bad}))
+    result = run_snakemake(workdir, "-n", config=path)
     assert result.returncode != 0
-    assert "runs.half_lr" in result.stderr and "learnin_rate" in result.stderr
+    message = result.stdout + result.stderr
+    assert "runs.half_lr" in message and "learnin_rate" in message
     assert not (workdir / "data").exists()
