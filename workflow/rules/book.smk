@@ -27,6 +27,7 @@ BOOK_DATA = {
     "divergence.json": "data/eval/divergence.json",
     "hidden_explained.csv": "data/eval/hidden_explained.csv",
     "hidden_representations.png": "data/figures/hidden_representations.png",
+    "measures.json": "data/eval/measures.json",
     "readings_summary.csv": "data/readings/summary.csv",
     "readings_replications.csv": "data/readings/replications.csv",
     "readings_effects.png": "data/readings/effects.png",
@@ -65,6 +66,7 @@ FINDINGS_READS = [
     "visual_maps.npz",
     "soms.npz",
     "readings_summary.csv",
+    "measures.json",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
@@ -73,6 +75,7 @@ FINDINGS_TABLES = [
     "anova_teacher_forced",
     "mixed_closed_loop",
     "mixed_teacher_forced",
+    "object_means",
     "comparison",
     "cue_anova",
     "readings_matrix",

@@ -83,6 +83,26 @@ def mixed_rows(anova: dict, mode: str) -> pd.DataFrame:
     )
 
 
+def object_means(measures: dict) -> pd.DataFrame:
+    """Per mapping and object: the mean RMSE over networks of categorisation trials, in both test
+    modes (``eval/measures.json``; results page)."""
+    closed, forced = (measures[mode]["rmse"]["object_means"] for mode in MODES)
+    return pd.DataFrame(
+        [
+            {
+                "mapping": key.split("_", 1)[0],
+                "object": key.split("_", 1)[1].replace("_", " "),
+                "congruency": row["congruency"],
+                "size": row["size"],
+                "networks": row["n_networks"],
+                "closed loop": f"{row['mean']:.4f} (sd {row['sd']:.4f})",
+                "teacher forced": f"{forced[key]['mean']:.4f} (sd {forced[key]['sd']:.4f})",
+            }
+            for key, row in closed.items()
+        ]
+    )
+
+
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The readings chapter: the matrix of readings x measures, the Goal map's clusters under
     each response, and the conclusion, from data/readings/summary.csv."""
@@ -190,10 +210,10 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
 
     def effect(name: str) -> str:
         first, second = science.PAPER_ORDER[name]
-        lower = first if science.verdict(closed, name).paper_direction else second
+        lower = first if m[first] < m[second] else second
         return (
-            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; "
-            f"{text.fmt_f(closed['repeated_measures'][name])}"
+            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; mixed model "
+            f"{text.fmt_mixed(anova['mixed']['closed_loop'][name])}"
         )
 
     at, n = curve["at"], closed["n_networks"]
@@ -431,6 +451,7 @@ def page_findings(
         {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
         | {f"mixed_{mode}": mixed_rows(anova, mode) for mode in MODES}
         | {
+            "object_means": object_means(_json(inputs["measures.json"])),
             "comparison": comparison(anova, curve, config),
             "cue_anova": cue_table,
         }
