@@ -109,3 +109,48 @@ def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
     # the Goal response changes the SOMs only: one set per seed and response, demos per seed
     assert counts.get("run_soms", 0) == n_reps * (len(readings["goal_response"]) - 1) + (n_reps - 1)
     assert counts.get("run_demos", 0) == n_reps - 1
+
+
+def test_closed_loop_trials_do_not_depend_on_the_sequence(built):
+    """What the book says plainly: in closed loop a network's trials of one object and task are
+    one movement whatever the sequence (same start, same inputs); teacher forced, they differ."""
+    import numpy as np
+
+    from icub_affordance.io import load_npz
+
+    hidden = load_npz(built / "data" / "eval" / "hidden.npz")
+    sequences = load_config()["demos"]["sequences"]
+    for key, h in hidden.items():
+        per = h.reshape(-1, sequences, *h.shape[1:])  # (task x object, sequence, step, unit)
+        same = np.allclose(per, per[:, :1], atol=0, rtol=0)
+        assert same == key.endswith("closed_loop"), key
+
+
+def test_readings_summary_has_every_cell(built):
+    table = pd.read_csv(built / "data" / "readings" / "summary.csv")
+    readings = load_config()["readings"]
+    assert list(table.columns) == SUMMARY_COLUMNS
+    assert len(table) == (
+        len(readings["categorisation_cue"])
+        * len(readings["goal_response"])
+        * len(readings["measures"])
+        * 2
+    )
+    assert (table["replications"] == 1).all()
+
+
+def test_anova_json_has_the_mixed_model_per_mode(built):
+    import json
+
+    from icub_affordance.spec import MODES
+    from icub_affordance.stats import MIXED_TERMS
+
+    anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
+    assert set(anova["mixed"]) == set(MODES)
+    for mode in MODES:
+        assert set(anova["mixed"][mode]) == set(MIXED_TERMS)
+        for term in anova["mixed"][mode].values():
+            assert set(term) == {"estimate", "ci_low", "ci_high", "p"}
+            assert term["ci_low"] <= term["estimate"] <= term["ci_high"]
+    # the paper's analysis is still there, beside it
+    assert "two_way" in anova["closed_loop"]
