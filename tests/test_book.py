@@ -70,8 +70,12 @@ def test_anova_numbers_in_the_book_equal_anova_json(built, html):
             for effect, r in anova[mode][analysis].items():
                 assert f"{r['F']:.2f}" in html["results"], (mode, analysis, effect)
                 assert f"{r['p']:.2g}" in html["results"], (mode, analysis, effect)
-    rm = anova["closed_loop"]["repeated_measures"]["congruency"]
-    assert f"F({rm['df1']:.0f}, {rm['df2']:.0f}) = {rm['F']:.2f}" in html["intro"]
+    # inference is the mixed model's: in the results and on the front page
+    for mode in ("closed_loop", "teacher_forced"):
+        for term, r in anova["mixed"][mode].items():
+            assert f"{r['estimate']:+.4f}" in html["results"], (mode, term)
+    mixed = anova["mixed"]["closed_loop"]["congruency"]
+    assert f"estimate {mixed['estimate']:+.4f}" in html["intro"]
 
 
 def test_front_page_shows_provenance(built, html):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 import pytest
 from conftest import REPO, load_config, load_test_config, run_snakemake, scratch_workflow
 from sweep_cost import planned_jobs
@@ -157,8 +159,26 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     config = load_test_config()
     points, networks = sweep_size(config)
     counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
-    ablation = config["network"]["networks"]  # the cue ablation's networks, in every run
-    assert counts["run_train"] - ablation == networks == points * config["network"]["networks"]
+    n = config["network"]["networks"]
+    # every run trains: the cue ablation, the sweep points, and the readings' replications that
+    # are neither (a reading at a sweep point's settings is that point); every reading but the
+    # main run is scored by run_measures (common.smk: reading_runs)
+    net, readings = config["network"], config["readings"]
+    shared = sum(
+        1
+        for seed, lr, hidden, cue in itertools.product(
+            *(
+                config["sweep"][key]
+                for key in ("seeds", "learning_rate", "hidden", "categorisation_cue")
+            )
+        )
+        if seed in readings["seeds"] + [config["seed"]]
+        and cue in readings["categorisation_cue"]
+        and config["soms"]["goal_response"] in readings["goal_response"]
+        and (lr, hidden) == (net["learning_rate"], net["hidden"])
+    )
+    assert networks == points * n
+    assert counts["run_train"] == n * (counts["run_measures"] + points - shared)
     assert counts["run_evaluate"] - 1 == counts["run_stats"] - 1 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
     assert counts["book"] == 1
