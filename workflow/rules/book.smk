@@ -126,7 +126,9 @@ rule book:
     output:
         "book/_build/html/index.html",
     params:
-        config=settings(config),
+        # the run's provenance; not `runs`, which the book does not show (a new run reruns
+        # nothing of the main run's)
+        config=settings({key: value for key, value in config.items() if key != "runs"}),
         names=list(BOOK_DATA) + list(BOOK_FINDINGS),
     threads: 2  # pages execute side by side (workflow/lib/icub_book/notebooks.py)
     resources:

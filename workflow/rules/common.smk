@@ -5,9 +5,11 @@ import re
 import sys
 from pathlib import Path
 
+import yaml
+
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
-from configs import merged  # noqa: E402
+from configs import check_runs, merged  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
 # The interpreter running Snakemake, for the rare shell command that calls Python tools.
@@ -86,30 +88,11 @@ CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
 
-def check_runs():
-    """Refuse a configured run whose settings, laid over the config, break the schema, before
-    any job runs, naming the run and the key."""
-    import jsonschema
-    import yaml
-
-    schema_path = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
-    validator = jsonschema.Draft202012Validator(yaml.safe_load(schema_path.read_text()))
-    for name in config["runs"]:
-        if name in (MAIN, ABLATION) or name in SWEEP_RUNS:
-            raise ValueError(
-                f"config runs: the name {name!r} is taken (the main run, the cue ablation or a "
-                "sweep point). Give the run another name."
-            )
-        error = jsonschema.exceptions.best_match(validator.iter_errors(RUN_CONFIG[name]))
-        if error is not None:
-            key = ".".join(str(part) for part in error.absolute_path)
-            raise ValueError(
-                f"config runs.{name}: {key or 'the run'}: {error.message}. Fix or remove this "
-                f"key in the run's entry under `runs:` ({schema_path.name} says what is allowed)."
-            )
-
-
-check_runs()
+check_runs(
+    config,
+    yaml.safe_load((Path(workflow.basedir) / "workflow/schemas/config.schema.yaml").read_text()),
+    taken=[MAIN, ABLATION, *SWEEP_RUNS],
+)
 
 
 def run_dir(run):
