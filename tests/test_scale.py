@@ -54,7 +54,7 @@ def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
 
 
 @pytest.mark.slow
-def test_the_sweep_dag_trains_twelve_networks_per_point(tmp_path):
+def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
 
     workdir = scratch_workflow(tmp_path)
     config = load_config()
@@ -72,7 +72,7 @@ def test_the_sweep_dag_trains_twelve_networks_per_point(tmp_path):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
-    assert counts["run_train"] == 12 * points
+    assert counts["run_train"] == points  # a point's 12 networks in one job
     assert counts["run_evaluate"] == points and counts["sweep_summary"] == 1
     # whole replications: each seed makes its own demonstrations and SOMs, once
     assert counts["run_demos"] == counts["run_soms"] == len(sweep["seeds"])
@@ -160,9 +160,10 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     points, networks = sweep_size(config)
     counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
     n = config["network"]["networks"]
-    # every run trains: the cue ablation, the sweep points, and the readings' replications that
-    # are neither (a reading at a sweep point's settings is that point); every reading but the
-    # main run is scored by run_measures (common.smk: reading_runs)
+    assert networks == points * n
+    # a run's networks in one job: every run trains, the cue ablation, the sweep points, and the
+    # readings' replications that are neither (a reading at a sweep point's settings is that
+    # point); every reading but the main run is scored by run_measures (common.smk: reading_runs)
     net, readings = config["network"], config["readings"]
     shared = sum(
         1
@@ -177,8 +178,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         and config["soms"]["goal_response"] in readings["goal_response"]
         and (lr, hidden) == (net["learning_rate"], net["hidden"])
     )
-    assert networks == points * n
-    assert counts["run_train"] == n * (counts["run_measures"] + points - shared)
+    assert counts["run_train"] == counts["run_measures"] + points - shared
     assert counts["run_evaluate"] - 1 == counts["run_stats"] - 1 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
     assert counts["book"] == 1
