@@ -2,8 +2,10 @@
 #   snakemake -c2                                   reproduce everything with config/config.yaml
 #   snakemake -c2 --configfile .test/config/config.yaml   the small test configuration
 import os
+import sys
+from pathlib import Path
 
-from snakemake.utils import min_version, validate
+from snakemake.utils import min_version, update_config, validate
 
 min_version("9.0")
 
@@ -16,14 +18,22 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 configfile: "config/config.yaml"
 
 
-# `--config robustness=true` reaches Snakemake as the text "true" (only True and False are read
-# as booleans there): say so plainly instead of the schema's bare type error.
-if isinstance(config.get("robustness"), str):
-    raise ValueError(
-        f"config robustness: {config['robustness']!r} is text, not a boolean. On the command line "
-        "write it capitalised, as Snakemake reads booleans: --config robustness=True (or False)."
-    )
+# The config is checked here, before any job: the schema (each key alone), then the rules between
+# keys and the scene itself (workflow/lib/config_checks.py). Nested `--config` values reach here as
+# text (Snakemake reads them with YAML's BaseLoader): they are read as a config file's would be.
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
+from config_checks import (  # noqa: E402
+    check_command_line,
+    check_config,
+    check_scene,
+    typed_overrides,
+)
+
+update_config(config, typed_overrides(workflow.config_settings.config))
+check_command_line(config)
 validate(config, "workflow/schemas/config.schema.yaml")
+check_config(config)
+check_scene(config)
 
 
 

@@ -7,6 +7,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
+from config_checks import check_config  # noqa: E402
 from configs import merged  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
@@ -107,6 +108,7 @@ def check_runs():
                 f"config runs.{name}: {key or 'the run'}: {error.message}. Fix or remove this "
                 f"key in the run's entry under `runs:` ({schema_path.name} says what is allowed)."
             )
+        check_config(RUN_CONFIG[name], prefix=f"runs.{name}.")
 
 
 check_runs()
