@@ -74,10 +74,27 @@ use rule figure5 as run_figure5 with:
         "data/benchmarks/runs/{run}/figure5.tsv"
 
 
-def run_outputs(runs):
-    """What the default target makes of each run: its ANOVAs and its Figure 5."""
-    return [
-        f"data/runs/{run}/{path}"
-        for run in runs
-        for path in ("eval/anova.json", "figures/figure5.png")
-    ]
+def run_files(run):
+    """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
+    common.smk: stage_run), each network's curve and weights, the tests, ANOVAs and Figure 5.
+
+    All of them are inputs of the run's target, not only its last files: Snakemake does not
+    remake a missing file that no job still to run needs, so a deleted (or corrupt, and deleted
+    as the error says) intermediate file would otherwise stay missing after a green run.
+    """
+
+    def outputs(name, **wildcards):
+        """The rule's output files for this run (the main run's rule, or its `run_` copy)."""
+        if run == MAIN:
+            return expand(list(getattr(rules, name).output), **wildcards)
+        return expand(list(getattr(rules, f"run_{name}").output), run=run, **wildcards)
+
+    files = []
+    if stage_run(run, "demos") == run:
+        files += outputs("demos_object", object=config["objects"]) + outputs("demos")
+    if stage_run(run, "soms") == run:
+        files += outputs("soms")
+    files += outputs("train", net=run_networks(run))
+    for name in ("evaluate", "stats", "figure5"):
+        files += outputs(name)
+    return files
