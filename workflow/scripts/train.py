@@ -1,5 +1,7 @@
 """Train one Jordan network (the wildcard `net`) and save its learning curve and weights."""
 
+import numpy as np
+
 from icub_affordance.io import redirect_log, save_npz, write_csv
 from icub_affordance.spec import TASKS
 from icub_affordance.train import (
@@ -22,6 +24,12 @@ with redirect_log(snakemake.log[0]):
     weights, curve = train_network(
         materials, config, mapping, network_seed(snakemake.params.seed, net)
     )
+    weights.check_finite(f"network {net:02d}")
+    if not np.all(np.isfinite(curve["rmse"])):
+        raise FloatingPointError(
+            f"network {net:02d}: its training error became NaN (the outputs diverged). Lower "
+            "config network.learning_rate or network.init_scale."
+        )
     columns = ("iteration", "phase", "task", "object", "sequence", "rmse")
     rows = [
         dict(zip(columns, (i, phase, TASKS[task], materials.objects[obj], seq, rmse), strict=True))
