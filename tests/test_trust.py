@@ -194,3 +194,59 @@ def test_object_sizes_change_the_scene():
     with pytest.raises(ValueError, match="pear"):
         Robot(object_sizes={"pear": 0.05})
     np.testing.assert_allclose(default.model.geom("big_ball").size[0], 0.035)
+
+
+def data_files(workdir: Path) -> dict[str, bytes]:
+    """Every file of a run under data/, logs and benchmarks aside, by path."""
+    return {
+        str(p.relative_to(workdir)): p.read_bytes()
+        for p in sorted((workdir / "data").rglob("*"))
+        if p.is_file() and p.relative_to(workdir / "data").parts[0] not in ("logs", "benchmarks")
+    }
+
+
+@pytest.mark.slow
+def test_every_file_the_default_target_makes_is_itself_a_target(built):
+    """Snakemake remakes a missing file only if a job still to run needs it: so every file of
+    the DAG (the intermediate ones too) must be an input of `all` to be remade when deleted."""
+    summary = run_snakemake(built, "--summary", "-c1")
+    assert summary.returncode == 0, summary.stderr[-2000:]
+    made = {line.split("\t")[0] for line in summary.stdout.splitlines()[1:] if line.strip()}
+    made = {f for f in made if not f.startswith(("data/logs/", "data/benchmarks/"))}
+    plan = run_snakemake(built, "-n", "--force", "all", "-c1")
+    block = plan.stdout.split("rule all:", 1)[1]
+    targets = set(re.search(r"input: (.*)", block)[1].split(", "))
+    assert made - targets == set()
+    assert set(data_files(built)) <= targets  # every file of the finished run is in `all`
+
+
+@pytest.mark.slow
+def test_deleted_intermediate_files_are_remade_byte_identically(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    for name in ("data/soms/soms.npz", "data/eval/trials.csv", "data/train/net01/weights.npz"):
+        (copy / name).unlink()
+    result = run_snakemake(copy, "-c2")
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_following_the_advice_for_a_corrupt_file_restores_the_run(built, tmp_path):
+    """A corrupt file: the job that reads it fails saying "delete it and rerun `snakemake -c2`";
+    doing exactly that gives back every file, byte for byte."""
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    weights = copy / "data/train/net01/weights.npz"
+    weights.write_bytes(weights.read_bytes()[:100])
+    failed = run_snakemake(copy, "-c1", "--forcerun", "evaluate")
+    assert failed.returncode != 0
+    advice = re.search(
+        r"(\S+) is corrupt or truncated .*; delete it and rerun `(snakemake -c2)`",
+        (copy / "data/logs/evaluate.log").read_text(),
+    )
+    assert advice, (copy / "data/logs/evaluate.log").read_text()[-2000:]
+    (copy / advice[1]).unlink()  # delete it ...
+    rerun = run_snakemake(copy, *advice[2].split()[1:])  # ... and rerun `snakemake -c2`
+    assert rerun.returncode == 0, rerun.stderr[-3000:]
+    assert data_files(copy) == data_files(built)
