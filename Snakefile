@@ -69,7 +69,7 @@ DEFAULT_OUTPUTS = [
     *rules.rulegraph.output,
     *rules.findings.output,
     *rules.book.output,
-    *(SWEEP_OUTPUTS if config["robustness"] else []),
+    *([*SWEEP_OUTPUTS, *rules.sweep_cost.output] if config["robustness"] else []),
 ]
 
 

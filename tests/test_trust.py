@@ -117,6 +117,16 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         (lambda c: c["network"].pop("hidden"), ["hidden", "required"]),
         (lambda c: c["network"].update(iterations="many"), ["many", "integer"]),
         (lambda c: c["network"].update(categorisation_cue="sometimes"), ["sometimes", "all_steps"]),
+        # rules between keys (workflow/lib/config_checks.py), checked when the config is read
+        (lambda c: c["network"].update(phase1_iterations=1300), ["phase1_iterations", "1300"]),
+        (lambda c: c["vision"].update(window=300), ["vision.window", "300", "320x240"]),
+        (lambda c: c["initial_posture_deg"].__setitem__(3, 150), ["initial_posture_deg[3]", "150"]),
+        (
+            lambda c: c["figures"].update(filmstrip=[["big_ball", "power", 99]]),
+            ["figures.filmstrip[0]", "99", "0..4"],
+        ),
+        (lambda c: c["runs"].update(x={"network": {"phase1_iterations": 5000}}), ["runs.x."]),
+        (lambda c: c.update(scene="assets/icub_right_arm.xml"), ["config key scene", "Fix"]),
     ],
 )
 def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path, change, words):
@@ -250,3 +260,52 @@ def test_following_the_advice_for_a_corrupt_file_restores_the_run(built, tmp_pat
     rerun = run_snakemake(copy, *advice[2].split()[1:])  # ... and rerun `snakemake -c2`
     assert rerun.returncode == 0, rerun.stderr[-3000:]
     assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_a_broken_benchmark_file_advice_followed_literally_makes_the_timeline_work(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    (copy / "data/benchmarks/figure4.tsv").write_text("not a benchmark\n")
+    timeline = [sys.executable, str(REPO / "benchmarks/timeline.py"), "data/benchmarks"]
+    failed = subprocess.run(timeline, cwd=copy, capture_output=True, text=True)
+    advice = re.search(r"`(snakemake -c2 --forceall)`", failed.stderr)
+    assert failed.returncode != 0 and advice, failed.stderr
+    rerun = run_snakemake(copy, *advice[1].split()[1:])
+    assert rerun.returncode == 0, rerun.stderr[-3000:]
+    assert subprocess.run(timeline, cwd=copy, capture_output=True).returncode == 0
+    assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_the_sweep_and_its_cost_are_targets_with_robustness(built):
+    plan = run_snakemake(built, "-n", "--force", "all", "-c1", "--config", "robustness=True")
+    targets = set(re.search(r"input: (.*)", plan.stdout.split("rule all:", 1)[1])[1].split(", "))
+    assert "data/benchmarks/sweep_cost.csv" in targets
+    assert "data/sweep/points.csv" in targets
+    assert any(t.startswith("data/runs/sweep_seed1_") and "weights.npz" in t for t in targets)
+
+
+@pytest.mark.slow
+def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_path):
+    scene = built / "moved_scene"
+    scene.mkdir(exist_ok=True)
+    for name in ("icub_scene.xml", "icub_right_arm.xml"):
+        shutil.copy(REPO / "assets" / name, scene / name)
+    plan = run_snakemake(built, "-n", "-c1", "--config", "scene=moved_scene/icub_scene.xml")
+    shutil.rmtree(scene)
+    assert plan.returncode == 0, plan.stderr[-2000:]
+    jobs = planned_jobs(plan.stdout)
+    for rule in ("body_figure", "visual_maps", "demos_object", "demo_filmstrip", "embodied"):
+        assert rule in jobs, (rule, jobs)
+
+
+@pytest.mark.slow
+def test_a_nested_command_line_override_means_what_the_config_file_would(tmp_path):
+    workdir = scratch_workflow(tmp_path / "w")
+    for entry in ("network={networks: 6}", "runs={x: {network: {learning_rate: 0.0375}}}"):
+        result = run_snakemake(workdir, "-n", "-c1", "--config", entry)
+        assert result.returncode == 0, (entry, result.stderr[-2000:])
+    assert "run_train" in planned_jobs(result.stdout)
+    result = run_snakemake(workdir, "-n", "-c1", "--config", "network={phase1_iterations: 1300}")
+    assert result.returncode != 0 and "network.phase1_iterations: 1300" in result.stderr
