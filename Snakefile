@@ -5,7 +5,7 @@ import os
 import sys
 from pathlib import Path
 
-from snakemake.utils import min_version, update_config, validate
+from snakemake.utils import min_version, update_config
 
 min_version("9.0")
 
@@ -18,20 +18,24 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 configfile: "config/config.yaml"
 
 
-# The config is checked here, before any job: the schema (each key alone), then the rules between
-# keys and the scene itself (workflow/lib/config_checks.py). Nested `--config` values reach here as
-# text (Snakemake reads them with YAML's BaseLoader): they are read as a config file's would be.
+# The config is checked here, before any job (workflow/lib/config_checks.py): the schema (each key
+# alone, workflow/schemas/config.schema.yaml), the rules between keys, and the scene itself.
+# Nested `--config` values reach here as text (Snakemake reads them with YAML's BaseLoader): they
+# are read again as a config file's would be.
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from config_checks import (  # noqa: E402
     check_command_line,
     check_config,
     check_scene,
+    check_schema,
+    load_schema,
     typed_overrides,
 )
 
+CONFIG_SCHEMA = load_schema(Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
 update_config(config, typed_overrides(workflow.config_settings.config))
 check_command_line(config)
-validate(config, "workflow/schemas/config.schema.yaml")
+check_schema(config, CONFIG_SCHEMA)
 check_config(config)
 check_scene(config)
 

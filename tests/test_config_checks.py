@@ -182,3 +182,42 @@ def test_the_schema_bounds_every_number():
 
     visit(schema, "schema")
     assert not unbounded, unbounded
+
+
+SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
+
+
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        (lambda c: c["network"].update(hidden=0), ["network.hidden", "0", "1 <= x <= 1000", "Fix"]),
+        (lambda c: c["network"].update(networks=7), ["network.networks", "7", "multiple of 2"]),
+        (lambda c: c.update(seed="abc"), ["config key seed", "'abc'", "whole number", "Fix"]),
+        (lambda c: c["vision"].update(eye="nose_eye"), ["vision.eye", "nose_eye", "left_eye"]),
+        (lambda c: c.update(learningrate=0.1), ["learningrate", "no such key", "network", "Fix"]),
+        (lambda c: c["network"].pop("hidden"), ["config key network", "hidden", "required", "Fix"]),
+        (
+            lambda c: c["initial_posture_deg"].__setitem__(0, 400),
+            ["initial_posture_deg.0", "400", "-180 <= x <= 180"],
+        ),
+        (lambda c: c["demos"].update(touch_threshold=50), ["demos.touch_threshold", "50", "10"]),
+        (
+            lambda c: c["sweep"].update(seeds=[5_000_000_000]),
+            ["sweep.seeds.0", "5000000000", "4294967295"],
+        ),
+        (
+            lambda c: c["runs"].update(x={"vision": {"window": 50}}),
+            ["runs.x.vision", "no such key", "seed, network, soms"],
+        ),
+    ],
+)
+def test_a_schema_refusal_names_key_value_allowed_and_fix(change, words):
+    from config_checks import check_schema, load_schema
+
+    config = load_config()
+    check_schema(config, load_schema(SCHEMA))
+    change(config)
+    with pytest.raises(ConfigError) as info:
+        check_schema(config, load_schema(SCHEMA))
+    for word in words:
+        assert word in str(info.value), (word, str(info.value))

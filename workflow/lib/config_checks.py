@@ -11,6 +11,7 @@ once, with MuJoCo). Every refusal names the config key, the value, what is allow
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
+from pathlib import Path
 from typing import Any
 
 import yaml
@@ -71,6 +72,91 @@ def check_command_line(overrides: Mapping[str, Any]) -> None:
             f"config key robustness: {value!r} is text, not a boolean. On the command line write "
             "it capitalised, as Snakemake reads booleans: --config robustness=True (or False)."
         )
+
+
+# ---- the schema ---------------------------------------------------------------------------------
+
+
+def _allowed(schema: Mapping[str, Any]) -> str:
+    """What a schema node allows, in words."""
+    if "enum" in schema:
+        return "one of " + ", ".join(map(str, schema["enum"]))
+    parts = []
+    kind = schema.get("type")
+    if kind:
+        parts.append({"integer": "a whole number", "number": "a number"}.get(kind, f"a {kind}"))
+    low = schema.get("minimum", schema.get("exclusiveMinimum"))
+    high = schema.get("maximum", schema.get("exclusiveMaximum"))
+    if low is not None or high is not None:
+        below = "<" if "exclusiveMinimum" in schema else "<="
+        above = "<" if "exclusiveMaximum" in schema else "<="
+        parts.append(
+            " ".join(
+                [*([f"{low} {below}"] if low is not None else []), "x"]
+                + ([f"{above} {high}"] if high is not None else [])
+            )
+        )
+    if "multipleOf" in schema:
+        parts.append(f"a multiple of {schema['multipleOf']}")
+    if "minItems" in schema or "maxItems" in schema:
+        parts.append(
+            f"{schema.get('minItems', 0)} to {schema.get('maxItems', 'any number of')} items"
+        )
+    if schema.get("uniqueItems"):
+        parts.append("no repeats")
+    if "pattern" in schema:
+        parts.append(f"matching {schema['pattern']}")
+    if isinstance(schema.get("properties"), Mapping):
+        parts.append("the keys " + ", ".join(schema["properties"]))
+    text = ", ".join(parts) or "see the schema"
+    if schema.get("description"):
+        text += f" ({' '.join(str(schema['description']).split())})"
+    return text
+
+
+def load_schema(path: str | Path) -> dict[str, Any]:
+    """The config's JSON schema (workflow/schemas/config.schema.yaml)."""
+    return yaml.safe_load(Path(path).read_text())
+
+
+def schema_problem(
+    config: Mapping[str, Any], schema: Mapping[str, Any], prefix: str = ""
+) -> str | None:
+    """The schema's most relevant complaint about `config`, as a refusal that names the key, the
+    value, what is allowed and the fix (None: the config is valid)."""
+    import jsonschema
+
+    validator = jsonschema.Draft202012Validator(schema)
+    error = jsonschema.exceptions.best_match(validator.iter_errors(config))
+    if error is None:
+        return None
+    path = [str(p) for p in error.absolute_path]
+    key = prefix + ".".join(path) if path else prefix.rstrip(".") or "(the whole config)"
+    schema_file = "workflow/schemas/config.schema.yaml"
+    if error.validator == "additionalProperties":
+        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+        where = f"{key}." if path or prefix else ""
+        return (
+            f"config key {where}{extra[0] if extra else '?'}: there is no such key here. Allowed: "
+            f"{', '.join(error.schema.get('properties', {}))}. Fix: correct its spelling or "
+            f"remove it ({schema_file} describes every key)."
+        )
+    if error.validator == "required":
+        return (
+            f"config key {key}: {error.message}. Fix: add it (config/config.yaml has every key "
+            f"with its default; {schema_file} describes it)."
+        )
+    return (
+        f"config key {key}: {error.instance!r} is refused ({error.message}). Allowed: "
+        f"{_allowed(error.schema)}. Fix: set {key} to an allowed value in {WHERE}."
+    )
+
+
+def check_schema(config: Mapping[str, Any], schema: Mapping[str, Any], prefix: str = "") -> None:
+    """Refuse a config that the schema refuses (see :func:`schema_problem`)."""
+    problem = schema_problem(config, schema, prefix)
+    if problem:
+        raise ConfigError(problem)
 
 
 # ---- rules between keys -------------------------------------------------------------------------

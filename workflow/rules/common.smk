@@ -7,7 +7,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
-from config_checks import check_config  # noqa: E402
+from config_checks import ConfigError, check_config, check_schema  # noqa: E402
 from configs import merged  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
@@ -88,26 +88,15 @@ RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items
 
 
 def check_runs():
-    """Refuse a configured run whose settings, laid over the config, break the schema, before
-    any job runs, naming the run and the key."""
-    import jsonschema
-    import yaml
-
-    schema_path = Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml"
-    validator = jsonschema.Draft202012Validator(yaml.safe_load(schema_path.read_text()))
+    """Refuse a configured run whose settings, laid over the config, break the schema or a rule
+    between keys, before any job runs, naming the run and the key."""
     for name in config["runs"]:
         if name in (MAIN, ABLATION) or name in SWEEP_RUNS:
-            raise ValueError(
-                f"config runs: the name {name!r} is taken (the main run, the cue ablation or a "
-                "sweep point). Give the run another name."
+            raise ConfigError(
+                f"config key runs.{name}: the name {name!r} is taken (the main run, the cue "
+                "ablation or a sweep point). Allowed: any other name. Fix: rename the run."
             )
-        error = jsonschema.exceptions.best_match(validator.iter_errors(RUN_CONFIG[name]))
-        if error is not None:
-            key = ".".join(str(part) for part in error.absolute_path)
-            raise ValueError(
-                f"config runs.{name}: {key or 'the run'}: {error.message}. Fix or remove this "
-                f"key in the run's entry under `runs:` ({schema_path.name} says what is allowed)."
-            )
+        check_schema(RUN_CONFIG[name], CONFIG_SCHEMA, prefix=f"runs.{name}.")
         check_config(RUN_CONFIG[name], prefix=f"runs.{name}.")
 
 
