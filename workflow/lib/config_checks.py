@@ -84,7 +84,8 @@ def _allowed(schema: Mapping[str, Any]) -> str:
     parts = []
     kind = schema.get("type")
     if kind:
-        parts.append({"integer": "a whole number", "number": "a number"}.get(kind, f"a {kind}"))
+        names = {"integer": "a whole number", "number": "a number", "array": "a list"}
+        parts.append(names.get(kind, f"a {kind}"))
     low = schema.get("minimum", schema.get("exclusiveMinimum"))
     high = schema.get("maximum", schema.get("exclusiveMaximum"))
     if low is not None or high is not None:
@@ -256,12 +257,10 @@ def check_config(config: Mapping[str, Any], prefix: str = "") -> None:
     `prefix` is put before every key named (`runs.half_lr.` for a run's config).
     """
     problems = list(_problems(config, prefix))
+    if len(problems) == 1:
+        raise ConfigError(problems[0])
     if problems:
-        raise ConfigError(
-            f"the config is refused before any job ({len(problems)} problem"
-            f"{'s' if len(problems) > 1 else ''}); set these in {WHERE}:\n  - "
-            + "\n  - ".join(problems)
-        )
+        raise ConfigError(f"{len(problems)} problems:\n  - " + "\n  - ".join(problems))
 
 
 # ---- the scene ----------------------------------------------------------------------------------
