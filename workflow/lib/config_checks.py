@@ -281,9 +281,9 @@ def check_scene(config: Mapping[str, Any]) -> None:
         robot = Robot(scene, dict(config["object_sizes_m"]))
     except Exception as err:  # whatever MuJoCo or the model indexing raise: the scene is unusable
         raise ConfigError(
-            f"config key scene: {scene!r} cannot be used: {err}. Allowed: an MJCF scene that "
-            f"MuJoCo loads, with the iCub arm of Figure 1, its touch sensors and the four objects. "
-            f"{fix}"
+            f"config key scene: {scene!r} cannot be used: {str(err).rstrip('.')}. Allowed: an "
+            "MJCF scene that MuJoCo loads, with the iCub arm of Figure 1, its touch sensors and "
+            f"the four objects. {fix}"
         ) from err
     try:
         model = robot.model
