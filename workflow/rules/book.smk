@@ -79,7 +79,9 @@ rule rulegraph:
     output:
         "data/book/rulegraph.dot",
     params:
-        config=settings(config),  # the graph drawn is this config's
+        # the graph drawn is this config's (not `runs`: a run adds no rule, and a new run
+        # reruns nothing of the main run's)
+        config=settings({key: value for key, value in config.items() if key != "runs"}),
     threads: 1
     resources:
         mem_mb=500,
@@ -130,7 +132,9 @@ rule book:
     output:
         "book/_build/html/index.html",
     params:
-        config=settings(config),
+        # the run's provenance; not `runs`, which the book does not show (a new run reruns
+        # nothing of the main run's)
+        config=settings({key: value for key, value in config.items() if key != "runs"}),
         names=list(BOOK_DATA) + list(BOOK_FINDINGS),
     threads: 2  # pages execute side by side (workflow/lib/icub_book/notebooks.py)
     resources:

@@ -7,8 +7,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
-from config_checks import ConfigError, check_config, check_schema  # noqa: E402
-from configs import merged  # noqa: E402
+from configs import check_runs, merged  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
 # The interpreter running Snakemake, for the rare shell command that calls Python tools.
@@ -87,20 +86,8 @@ CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
 
-def check_runs():
-    """Refuse a configured run whose settings, laid over the config, break the schema or a rule
-    between keys, before any job runs, naming the run and the key."""
-    for name in config["runs"]:
-        if name in (MAIN, ABLATION) or name in SWEEP_RUNS:
-            raise ConfigError(
-                f"config key runs.{name}: the name {name!r} is taken (the main run, the cue "
-                "ablation or a sweep point). Allowed: any other name. Fix: rename the run."
-            )
-        check_schema(RUN_CONFIG[name], CONFIG_SCHEMA, prefix=f"runs.{name}.")
-        check_config(RUN_CONFIG[name], prefix=f"runs.{name}.")
-
-
-check_runs()
+# each run of `runs:`, laid over the config: the schema and the rules between keys
+check_runs(config, CONFIG_SCHEMA, taken=[MAIN, ABLATION, *SWEEP_RUNS])
 
 
 def run_dir(run):

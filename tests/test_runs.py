@@ -1,0 +1,104 @@
+"""Runs as data (issue 14): a run is a config entry; bad entries are refused naming run and key."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+import yaml
+from configs import check_runs, merged
+from conftest import REPO, load_test_config, run_snakemake, scratch_workflow
+
+SCHEMA = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
+
+
+def test_overrides_are_laid_over_the_config_key_by_key():
+    base = {"seed": 1, "network": {"hidden": 10, "learning_rate": 0.075}, "soms": {"grid": 10}}
+    run = merged(base, {"network": {"learning_rate": 0.0375}, "seed": 7})
+    assert run == {
+        "seed": 7,
+        "network": {"hidden": 10, "learning_rate": 0.0375},
+        "soms": {"grid": 10},
+    }
+    assert base["network"]["learning_rate"] == 0.075  # the config itself is not changed
+
+
+@pytest.mark.parametrize(
+    ("run", "words"),
+    [
+        ({"objects": ["big_ball"]}, ["runs.bad", "objects"]),  # not a section a run may change
+        ({"network": {"learnin_rate": 0.1}}, ["runs.bad", "network", "learnin_rate"]),
+        ({"network": {"learning_rate": -1}}, ["runs.bad", "network.learning_rate", "-1"]),
+        ({"soms": {"iterations": "many"}}, ["runs.bad", "soms.iterations", "many"]),
+        ({"seed": -3}, ["runs.bad", "seed", "-3"]),
+        ({}, ["runs.bad"]),  # a run that changes nothing
+    ],
+)
+def test_a_bad_run_is_refused_naming_the_run_and_the_key(run, words):
+    config = load_test_config() | {"runs": {"fine": {"seed": 3}, "bad": run}}
+    with pytest.raises(ValueError) as refused:
+        check_runs(config, SCHEMA)
+    for word in words:
+        assert word in str(refused.value), (word, str(refused.value))
+
+
+def test_a_run_may_not_take_a_derived_runs_name():
+    config = load_test_config() | {"runs": {"cue_all_steps": {"seed": 3}}}
+    with pytest.raises(ValueError, match="cue_all_steps.*taken"):
+        check_runs(config, SCHEMA, taken=["main", "cue_all_steps"])
+
+
+def test_good_runs_pass():
+    config = load_test_config() | {
+        "runs": {"half_lr": {"network": {"learning_rate": 0.0375}}, "s7": {"seed": 7}}
+    }
+    check_runs(config, SCHEMA, taken=["main", "cue_all_steps"])
+
+
+def planned(result) -> dict[str, int]:
+    assert result.returncode == 0, result.stderr[-3000:]
+    table = result.stdout.split("Job stats:")[-1]
+    return {m[0]: int(m[1]) for m in re.findall(r"^(\w+)\s+(\d+)$", table, re.M) if m[0] != "total"}
+
+
+@pytest.mark.slow
+def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tmp_path):
+    path = tmp_path / "runs.yaml"
+    path.write_text(
+        yaml.safe_dump(
+            load_test_config() | {"runs": {"half_lr": {"network": {"learning_rate": 0.0375}}}}
+        )
+    )
+    jobs = planned(run_snakemake(built, "-n", config=path))
+    networks = load_test_config()["network"]["networks"]
+    assert jobs == {
+        "run_train": networks,
+        "run_evaluate": 1,
+        "run_stats": 1,
+        "run_figure5": 1,
+        "all": 1,
+    }
+    plan = run_snakemake(built, "-n", config=path).stdout
+    assert "data/runs/half_lr/eval/anova.json" in plan
+
+
+@pytest.mark.slow
+def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tmp_path):
+    path = tmp_path / "runs.yaml"
+    path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
+    jobs = planned(run_snakemake(built, "-n", config=path))
+    assert jobs["run_demos_object"] == 4 and jobs["run_soms"] == jobs["run_demos"] == 1
+    assert "visual_maps" not in jobs  # the scene and the eye do not depend on the seed
+
+
+@pytest.mark.slow
+def test_a_bad_run_stops_snakemake_before_any_job(tmp_path):
+    workdir = scratch_workflow(tmp_path / "w")
+    path = tmp_path / "bad.yaml"
+    bad = {"half_lr": {"network": {"learnin_rate": 0.1}}}
+    path.write_text(yaml.safe_dump(load_test_config() | {"runs": bad}))
+    result = run_snakemake(workdir, "-n", config=path)
+    assert result.returncode != 0
+    message = result.stdout + result.stderr
+    assert "runs.half_lr" in message and "learnin_rate" in message
+    assert not (workdir / "data").exists()
