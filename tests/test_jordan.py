@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 import torch
-from conftest import train_config
+from conftest import REPO, train_config
 
-from icub_affordance.jordan import N_INPUT, OnlineTrainer, Weights, run_closed_loop
+from icub_affordance.jordan import N_INPUT, Weights, run_closed_loop, train_online
 from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
 from icub_affordance.spec import CATEGORISATION, GRASPING
 from icub_affordance.train import (
@@ -49,21 +53,78 @@ def test_network_shapes_and_outputs():
 
 
 def test_fast_trainer_equals_the_plain_torch_loop():
+    """The compiled trainer computes what autograd computes, step by step, to 1e-10."""
     m = synthetic_materials()
     rng = np.random.default_rng(1)
     w0 = Weights.init(10, 0.5, rng)
-    fast = OnlineTrainer(w0, 0.075)
-    net = JordanNet(w0)
-    sgd = torch.optim.SGD(net.parameters(), lr=0.075)
-    for _ in range(300):
-        o, k, g, s = rng.integers(4), rng.integers(2), rng.integers(2), rng.integers(4)
-        ctx, postures = context(m, o, k, "first_step"), m.demos[o, g, s]
-        a = fast.train_sequence(ctx, postures)
-        b = train_sequence_torch(net, sgd, ctx, postures)
-        assert a == pytest.approx(b, abs=1e-9)
-    reference = net.weights()
-    for name in ("W1", "b1", "W2", "b2"):
-        np.testing.assert_allclose(getattr(fast.w, name), getattr(reference, name), atol=1e-6)
+    n = 150  # per variant
+    schedule = rng.integers(0, 2, n), rng.integers(0, 4, n), rng.integers(0, 4, n)
+    for mapping, cue in (("A", "first_step"), ("B", "all_steps")):
+        contexts = np.array([[context(m, o, k, cue) for k in range(2)] for o in range(4)])
+        grips = np.array(
+            [
+                [m.grips.index(target_grip(m.objects[o], k, mapping)) for k in range(2)]
+                for o in range(4)
+            ]
+        )
+        net = JordanNet(w0)
+        sgd = torch.optim.SGD(net.parameters(), lr=0.075)
+        reference = [
+            train_sequence_torch(net, sgd, contexts[o, k], m.demos[o, grips[o, k], s])
+            for k, o, s in zip(*schedule, strict=True)
+        ]
+        fast, rmse = train_online(w0, 0.075, contexts, m.demos, grips, schedule)
+        np.testing.assert_allclose(rmse, reference, rtol=0, atol=1e-10)
+        for name in ("W1", "b1", "W2", "b2"):
+            np.testing.assert_allclose(
+                getattr(fast, name), getattr(net.weights(), name), rtol=0, atol=1e-10
+            )
+    # the initial weights are left as they were
+    np.testing.assert_array_equal(w0.W1, Weights.init(10, 0.5, np.random.default_rng(1)).W1)
+
+
+# Trains one network of the paper's size on the synthetic materials and prints a digest of the
+# weights and the learning curve; with "uncached", from a kernel compiled afresh without a cache.
+KERNEL_RUN = """
+import hashlib, sys
+import numba
+from test_jordan import synthetic_materials
+from conftest import train_config
+import icub_affordance.jordan_kernel as kernel
+from icub_affordance.train import train_network
+if sys.argv[1] == "uncached":  # the same options, less the cache
+    options = {k: v for k, v in kernel.train_schedule.targetoptions.items() if k != "nopython"}
+    kernel.train_schedule = numba.njit(**options)(kernel.train_schedule.py_func)
+weights, curve = train_network(synthetic_materials(), train_config(), "B", seed=7)
+digest = hashlib.sha256(curve["rmse"].tobytes())
+for array in weights.as_dict().values():
+    digest.update(array.tobytes())
+print("digest", digest.hexdigest())
+"""
+
+
+@pytest.mark.slow  # three compilations of the kernel in fresh processes
+def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
+    """A cold compile that fills an empty cache, a load from that cache and a compile without any
+    cache train to the same bits: what ran before cannot change a result."""
+
+    def run(mode: str) -> tuple[str, str]:
+        env = os.environ | {"NUMBA_CACHE_DIR": str(tmp_path / "cache"), "NUMBA_DEBUG_CACHE": "1"}
+        env["PYTHONPATH"] = os.pathsep.join(
+            [str(REPO / "tests"), str(REPO / "src"), str(REPO / "workflow" / "lib")]
+        )
+        result = subprocess.run(
+            [sys.executable, "-c", KERNEL_RUN, mode], env=env, capture_output=True, text=True
+        )
+        assert result.returncode == 0, result.stderr
+        return result.stdout.rsplit("digest ", 1)[1].strip(), result.stdout
+
+    cold, cold_log = run("cached")
+    assert "data saved" in cold_log and "data loaded" not in cold_log
+    warm, warm_log = run("cached")
+    assert "data loaded" in warm_log and "data saved" not in warm_log
+    uncached, _ = run("uncached")
+    assert cold == warm == uncached
 
 
 def test_training_lowers_the_error():

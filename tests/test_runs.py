@@ -70,9 +70,8 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
         )
     )
     jobs = planned(run_snakemake(built, "-n", config=path))
-    networks = load_test_config()["network"]["networks"]
     assert jobs == {
-        "run_train": networks,
+        "run_train": 1,  # the run's networks in one job
         "run_evaluate": 1,
         "run_stats": 1,
         "run_figure5": 1,
@@ -87,7 +86,8 @@ def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tm
     path = tmp_path / "runs.yaml"
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
     jobs = planned(run_snakemake(built, "-n", config=path))
-    assert jobs["run_demos_object"] == 4 and jobs["run_soms"] == jobs["run_demos"] == 1
+    # its four objects' demonstrations in one job
+    assert "run_demos_object" not in jobs and jobs["run_soms"] == jobs["run_demos"] == 1
     assert "visual_maps" not in jobs  # the scene and the eye do not depend on the seed
 
 

@@ -451,3 +451,16 @@ def summary_rows(merged: dict[str, np.ndarray], config: DemoConfig) -> list[dict
                 row |= {f"palm_{a}_m": round(float(v), 4) for a, v in zip("xyz", palm, strict=True)}
                 rows.append(row)
     return rows
+
+
+def summary_csv(merged: dict[str, np.ndarray], config: DemoConfig) -> str:
+    """The summary rows as CSV text (the file ``demos/summary.csv``)."""
+    import csv
+    import io
+
+    rows = summary_rows(merged, config)
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(rows)
+    return buffer.getvalue()

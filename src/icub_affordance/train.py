@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import N_GOAL, N_VISUAL, OnlineTrainer, Weights, equal_runs
+from .jordan import N_GOAL, N_VISUAL, Weights, train_online
 from .spec import CATEGORISATION, CUES, GRASPING, MAPPINGS, OBJECTS, TASKS
 
 
@@ -101,22 +101,22 @@ def train_network(
     rng = np.random.default_rng(seed)
     weights = Weights.init(config.hidden, config.init_scale, rng)
     tasks, objects, sequences = schedule(config, len(m.objects), m.n_train_sequences, rng)
-    trainer = OnlineTrainer(weights, config.learning_rate)
-    contexts = {
-        (o, k): context(m, o, k, config.categorisation_cue)
-        for o in range(len(m.objects))
-        for k in range(len(TASKS))
-    }
-    runs = {key: equal_runs(ctx) for key, ctx in contexts.items()}
-    grips = {
-        (o, k): m.grips.index(target_grip(m.objects[o], k, mapping))
-        for o in range(len(m.objects))
-        for k in range(len(TASKS))
-    }
-    rmse = np.empty(config.iterations)
-    for i, (task, obj, seq) in enumerate(zip(tasks, objects, sequences, strict=True)):
-        key = (obj, task)
-        rmse[i] = trainer.train_sequence(contexts[key], m.demos[obj, grips[key], seq], runs[key])
+    n_objects, n_tasks = len(m.objects), len(TASKS)
+    contexts = np.array(
+        [
+            [context(m, o, k, config.categorisation_cue) for k in range(n_tasks)]
+            for o in range(n_objects)
+        ]
+    )
+    grips = np.array(
+        [
+            [m.grips.index(target_grip(m.objects[o], k, mapping)) for k in range(n_tasks)]
+            for o in range(n_objects)
+        ]
+    )
+    trained, rmse = train_online(
+        weights, config.learning_rate, contexts, m.demos, grips, (tasks, objects, sequences)
+    )
     curve = {
         "iteration": np.arange(1, config.iterations + 1),
         "phase": np.where(np.arange(config.iterations) < config.phase1_iterations, 1, 2),
@@ -125,7 +125,7 @@ def train_network(
         "sequence": sequences,
         "rmse": rmse,
     }
-    return trainer.w, curve
+    return trained, curve
 
 
 def network_seed(seed: int, network: int) -> int:

@@ -5,23 +5,35 @@
 # SOM settings); otherwise it reads that run's (common.smk: stage_run).
 
 
-use rule demos_object as run_demos_object with:
-    output:
-        "data/runs/{run}/demos/parts/{object}.npz",
-    log:
-        "data/logs/runs/{run}/demos_object/{object}.log",
-    benchmark:
-        "data/benchmarks/runs/{run}/demos_object/{object}.tsv"
-
-
-use rule demos as run_demos with:
+# A run that makes its own demonstrations (a sweep point's seed) makes them in one job: the four
+# objects' physics take about 1.5 s each and a robot job about 1 s to start. The main run keeps
+# its job per object (rule demos_object), in parallel at the start of the run.
+rule run_demos:
+    """A run's 4 x 2 x 5 demonstrations, made and checked in physics, in one file, and the
+    summary table: rules demos_object and demos in one job."""
+    input:
+        scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
+        code=script_code("demos_run"),
     output:
         demos="data/runs/{run}/demos/demos.npz",
         summary="data/runs/{run}/demos/summary.csv",
+    params:
+        objects=settings(config["objects"]),
+        object_sizes=settings(config["object_sizes_m"]),
+        demos=settings(config["demos"]),
+        seed=run_section("seed"),
+        posture=settings(config["initial_posture_deg"]),
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=20,
     log:
         "data/logs/runs/{run}/demos.log",
     benchmark:
         "data/benchmarks/runs/{run}/demos.tsv"
+    script:
+        "../scripts/demos_run.py"
 
 
 use rule soms as run_soms with:
@@ -33,15 +45,47 @@ use rule soms as run_soms with:
         "data/benchmarks/runs/{run}/soms.tsv"
 
 
+# A run's networks are trained in one job: a network takes about 0.15 s of arithmetic and a job
+# about 1 s to start (Python, imports, loading the compiled trainer), so one job per network
+# would be mostly start-up. Same arithmetic, same seeds, so the same files as one job each
+# (the main run keeps its one job per network, in parallel). A rule's outputs are fixed when
+# the rules are read, so this rule serves the runs with the main run's number of networks; any
+# run that sets its own `network.networks` gets one job per network (run_train_network).
+GROUPED_RUNS = [run for run in RUNS if run_networks(run) == NETWORKS]
+
+
+def runs_pattern(runs):
+    """A wildcard constraint that matches exactly these runs ((?!) matches nothing)."""
+    return "|".join(map(re.escape, runs)) or "(?!)"
+
+
+def run_train_outputs(name, runs, nets):
+    return [f"data/runs/{{run,{runs_pattern(runs)}}}/train/net{net}/{name}" for net in nets]
+
+
 use rule train as run_train with:
     output:
-        curve="data/runs/{run}/train/net{net}/curve.csv",
-        weights="data/runs/{run}/train/net{net}/weights.npz",
+        curve=run_train_outputs("curve.csv", GROUPED_RUNS, NETWORKS),
+        weights=run_train_outputs("weights.npz", GROUPED_RUNS, NETWORKS),
     priority: 0  # after the main networks: the robot test waits on those
     log:
-        "data/logs/runs/{run}/train/net{net}.log",
+        "data/logs/runs/{run}/train.log",
     benchmark:
-        "data/benchmarks/runs/{run}/train/net{net}.tsv"
+        "data/benchmarks/runs/{run}/train.tsv"
+
+
+if len(GROUPED_RUNS) < len(RUNS):
+    _other_runs = sorted(set(RUNS) - set(GROUPED_RUNS))
+
+    use rule train as run_train_network with:
+        output:
+            curve=run_train_outputs("curve.csv", _other_runs, ["{net}"])[0],
+            weights=run_train_outputs("weights.npz", _other_runs, ["{net}"])[0],
+        priority: 0
+        log:
+            "data/logs/runs/{run}/train/net{net}.log",
+        benchmark:
+            "data/benchmarks/runs/{run}/train/net{net}.tsv"
 
 
 use rule evaluate as run_evaluate with:
@@ -84,14 +128,16 @@ def run_files(run):
     """
 
     def outputs(name, **wildcards):
-        """The rule's output files for this run (the main run's rule, or its `run_` copy)."""
-        if run == MAIN:
-            return expand(list(getattr(rules, name).output), **wildcards)
-        return expand(list(getattr(rules, f"run_{name}").output), run=run, **wildcards)
+        """The main run's rule's output files, at this run's place (common.smk: run_dir)."""
+        files = expand(list(getattr(rules, name).output), **wildcards)
+        return [f"{run_dir(run)}/{f.removeprefix('data/')}" for f in files]
 
     files = []
     if stage_run(run, "demos") == run:
-        files += outputs("demos_object", object=config["objects"]) + outputs("demos")
+        # the main run makes each object's part in a job of its own (another run: one job)
+        if run == MAIN:
+            files += outputs("demos_object", object=config["objects"])
+        files += outputs("demos")
     if stage_run(run, "soms") == run:
         files += outputs("soms")
     files += outputs("train", net=run_networks(run))

@@ -79,7 +79,7 @@ rule sweep_cost:
         rules=sorted(glob.glob("workflow/rules/*.smk")),
         # the measuring, and the code of the rules it times
         code=script_code(
-            "sweep_cost", "demos_object", "demos_merge", "soms", "train", "evaluate", "stats",
+            "sweep_cost", "demos_run", "soms", "train", "evaluate", "stats",
             "sweep_summary", "sweep_figure",
         ),
         # For the order only (ancient: remaking these does not rerun the measurement): the sweep

@@ -1,9 +1,6 @@
 """Join the per-object demonstrations into data/demos/demos.npz and write the summary table."""
 
-import csv
-import io
-
-from icub_affordance.demos import DemoConfig, merge_demos, summary_rows
+from icub_affordance.demos import DemoConfig, merge_demos, summary_csv
 from icub_affordance.io import load_npz, redirect_log, save_npz, write_text
 
 with redirect_log(snakemake.log[0]):
@@ -13,9 +10,4 @@ with redirect_log(snakemake.log[0]):
     }
     merged = merge_demos(parts)
     save_npz(snakemake.output.demos, **merged)
-    rows = summary_rows(merged, DemoConfig(**snakemake.params.demos))
-    buffer = io.StringIO()
-    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(rows)
-    write_text(snakemake.output.summary, buffer.getvalue())
+    write_text(snakemake.output.summary, summary_csv(merged, DemoConfig(**snakemake.params.demos)))

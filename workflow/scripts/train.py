@@ -1,4 +1,6 @@
-"""Train one Jordan network (the wildcard `net`) and save its learning curve and weights."""
+"""Train Jordan networks and save each one's learning curve and weights: the network of the
+wildcard `net` (rule train: one job per network), or every network of the run, one after
+another (rule run_train: the outputs list them in order)."""
 
 import numpy as np
 
@@ -12,33 +14,48 @@ from icub_affordance.train import (
     train_network,
 )
 
-with redirect_log(snakemake.log[0]):
-    settings = dict(snakemake.params.network)
-    n_networks = settings.pop("networks")
-    net = int(snakemake.wildcards.net)
-    if net >= n_networks:
-        raise ValueError(f"network {net} asked for, but config network.networks is {n_networks}")
-    config = TrainConfig(**settings)
-    materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
-    mapping = mapping_of(net, n_networks)
-    weights, curve = train_network(
-        materials, config, mapping, network_seed(snakemake.params.seed, net)
-    )
-    weights.check_finite(f"network {net:02d}")
-    if not np.all(np.isfinite(curve["rmse"])):
-        raise FloatingPointError(
-            f"network {net:02d}: its training error became NaN (the outputs diverged). Lower "
-            "config network.learning_rate or network.init_scale."
-        )
-    columns = ("iteration", "phase", "task", "object", "sequence", "rmse")
-    rows = [
-        dict(zip(columns, (i, phase, TASKS[task], materials.objects[obj], seq, rmse), strict=True))
+COLUMNS = ("iteration", "phase", "task", "object", "sequence", "rmse")
+
+
+def as_list(paths):
+    return [paths] if isinstance(paths, str) else list(paths)
+
+
+def curve_rows(curve, objects):
+    return [
+        dict(zip(COLUMNS, (i, phase, TASKS[task], objects[obj], seq, rmse), strict=True))
         for i, phase, task, obj, seq, rmse in zip(
             curve["iteration"], curve["phase"], curve["task"], curve["object"],
             curve["sequence"], curve["rmse"].tolist(), strict=True,
         )
     ]  # fmt: skip
-    write_csv(snakemake.output.curve, rows)  # not pandas: a training job is short
-    save_npz(snakemake.output.weights, **weights.as_dict())
-    final = curve["rmse"][-500:].mean()
-    print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
+
+
+with redirect_log(snakemake.log[0]):
+    settings = dict(snakemake.params.network)
+    n_networks = settings.pop("networks")
+    if "net" in snakemake.wildcards.keys():
+        nets = [int(snakemake.wildcards.net)]
+    else:
+        nets = list(range(n_networks))
+    curves, weights_files = as_list(snakemake.output.curve), as_list(snakemake.output.weights)
+    if len(curves) != len(nets) or max(nets) >= n_networks:
+        raise ValueError(f"networks {nets} asked for, but config network.networks is {n_networks}")
+    config = TrainConfig(**settings)
+    materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
+    for net, curve_path, weights_path in zip(nets, curves, weights_files, strict=True):
+        mapping = mapping_of(net, n_networks)
+        weights, curve = train_network(
+            materials, config, mapping, network_seed(snakemake.params.seed, net)
+        )
+        weights.check_finite(f"network {net:02d}")
+        if not np.all(np.isfinite(curve["rmse"])):
+            raise FloatingPointError(
+                f"network {net:02d}: its training error became NaN (the outputs diverged). "
+                "Lower config network.learning_rate or network.init_scale."
+            )
+        rows = curve_rows(curve, materials.objects)
+        write_csv(curve_path, rows)  # not pandas: a training job is short
+        save_npz(weights_path, **weights.as_dict())
+        final = curve["rmse"][-500:].mean()
+        print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
