@@ -2,8 +2,10 @@
 #   snakemake -c2                                   reproduce everything with config/config.yaml
 #   snakemake -c2 --configfile .test/config/config.yaml   the small test configuration
 import os
+import sys
+from pathlib import Path
 
-from snakemake.utils import min_version, validate
+from snakemake.utils import min_version, update_config
 
 min_version("9.0")
 
@@ -16,14 +18,26 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 configfile: "config/config.yaml"
 
 
-# `--config robustness=true` reaches Snakemake as the text "true" (only True and False are read
-# as booleans there): say so plainly instead of the schema's bare type error.
-if isinstance(config.get("robustness"), str):
-    raise ValueError(
-        f"config robustness: {config['robustness']!r} is text, not a boolean. On the command line "
-        "write it capitalised, as Snakemake reads booleans: --config robustness=True (or False)."
-    )
-validate(config, "workflow/schemas/config.schema.yaml")
+# The config is checked here, before any job (workflow/lib/config_checks.py): the schema (each key
+# alone, workflow/schemas/config.schema.yaml), the rules between keys, and the scene itself.
+# Nested `--config` values reach here as text (Snakemake reads them with YAML's BaseLoader): they
+# are read again as a config file's would be.
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
+from config_checks import (  # noqa: E402
+    check_command_line,
+    check_config,
+    check_scene,
+    check_schema,
+    load_schema,
+    typed_overrides,
+)
+
+CONFIG_SCHEMA = load_schema(Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
+update_config(config, typed_overrides(workflow.config_settings.config))
+check_command_line(config)
+check_schema(config, CONFIG_SCHEMA)
+check_config(config)
+check_scene(config)
 
 
 
@@ -39,23 +53,36 @@ include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 
 
+# Every file of the default target, the intermediate ones too: Snakemake remakes a missing file
+# only if a job still to run needs it, so a file deleted after a run (as the project's own errors
+# advise for a corrupt one) must be a target itself to be remade.
+DEFAULT_OUTPUTS = [
+    *run_files(MAIN),
+    *(f for run in CONFIGURED_RUNS for f in run_files(run)),
+    *rules.body_figure.output,
+    *rules.visual_maps.output,
+    *rules.figure3.output,
+    *rules.demo_filmstrip.output,
+    *rules.figure2_maps.output,
+    *rules.figure4.output,
+    *rules.representations.output,
+    *rules.figure_hidden.output,
+    *expand(list(rules.embodied.output), net=NETWORKS),
+    *rules.embodied_replay.output,
+    *rules.embodied_summary.output,
+    *rules.embodied_filmstrip.output,
+    *rules.rulegraph.output,
+    *(f for row in READINGS for f in reading_files(row["run"])),
+    *rules.readings.output,
+    *rules.readings_figure.output,
+    *rules.findings.output,
+    *rules.book.output,
+    *([*SWEEP_OUTPUTS, *rules.sweep_cost.output] if config["robustness"] else []),
+]
+
+
 rule all:
-    """Everything: the book and every output it shows."""
+    """Everything: the book and every file it is made from."""
     default_target: True
     input:
-        rules.book.output,
-        rules.body_figure.output,
-        rules.visual_maps.output,
-        rules.figure3.output,
-        rules.demos.output,
-        rules.demo_filmstrip.output,
-        rules.figure2_maps.output,
-        rules.stats.output,
-        rules.figure4.output,
-        rules.figure5.output,
-        rules.figure_hidden.output,
-        run_outputs(CONFIGURED_RUNS),
-        rules.readings.output,
-        rules.readings_figure.output,
-        rules.embodied_summary.output,
-        rules.embodied_filmstrip.output,
+        DEFAULT_OUTPUTS,

@@ -231,7 +231,10 @@ def read_cost_table(path: str | os.PathLike[str]) -> pd.DataFrame:
     table = pd.read_csv(path)
     missing = [c for c in COLUMNS if c not in table]
     if missing or table.empty:
-        raise ValueError(f"{path} lacks {missing or 'rows'}; delete it and rerun the pipeline.")
+        raise ValueError(
+            f"{path} lacks {missing or 'rows'}; delete it and rerun "
+            "`snakemake -c2 --config robustness=True`."
+        )
     return table
 
 

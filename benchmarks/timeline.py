@@ -29,7 +29,10 @@ def jobs(directory: Path) -> list[tuple[float, float, str]]:
         try:
             wall = float(lines[-1].split("\t")[0])
         except (IndexError, ValueError):
-            sys.exit(f"{path} is not a Snakemake benchmark file: delete it and rerun its rule")
+            sys.exit(
+                f"{path} is not a Snakemake benchmark file. Time a complete run from scratch, "
+                "which rewrites every benchmark file: `snakemake -c2 --forceall`"
+            )
         end = path.stat().st_mtime
         rows.append((end - wall, end, name))
     return sorted(rows)

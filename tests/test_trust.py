@@ -117,6 +117,16 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         (lambda c: c["network"].pop("hidden"), ["hidden", "required"]),
         (lambda c: c["network"].update(iterations="many"), ["many", "integer"]),
         (lambda c: c["network"].update(categorisation_cue="sometimes"), ["sometimes", "all_steps"]),
+        # rules between keys (workflow/lib/config_checks.py), checked when the config is read
+        (lambda c: c["network"].update(phase1_iterations=1300), ["phase1_iterations", "1300"]),
+        (lambda c: c["vision"].update(window=300), ["vision.window", "300", "320x240"]),
+        (lambda c: c["initial_posture_deg"].__setitem__(3, 150), ["initial_posture_deg[3]", "150"]),
+        (
+            lambda c: c["figures"].update(filmstrip=[["big_ball", "power", 7]]),
+            ["figures.filmstrip[0]", "7", "0..4"],
+        ),
+        (lambda c: c["runs"].update(x={"network": {"phase1_iterations": 5000}}), ["runs.x."]),
+        (lambda c: c.update(scene="assets/icub_right_arm.xml"), ["config key scene", "Fix"]),
     ],
 )
 def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path, change, words):
@@ -194,3 +204,110 @@ def test_object_sizes_change_the_scene():
     with pytest.raises(ValueError, match="pear"):
         Robot(object_sizes={"pear": 0.05})
     np.testing.assert_allclose(default.model.geom("big_ball").size[0], 0.035)
+
+
+def data_files(workdir: Path) -> dict[str, bytes]:
+    """Every file of a run under data/, logs and benchmarks aside, by path."""
+    return {
+        str(p.relative_to(workdir)): p.read_bytes()
+        for p in sorted((workdir / "data").rglob("*"))
+        if p.is_file() and p.relative_to(workdir / "data").parts[0] not in ("logs", "benchmarks")
+    }
+
+
+@pytest.mark.slow
+def test_every_file_the_default_target_makes_is_itself_a_target(built):
+    """Snakemake remakes a missing file only if a job still to run needs it: so every file of
+    the DAG (the intermediate ones too) must be an input of `all` to be remade when deleted."""
+    summary = run_snakemake(built, "--summary", "-c1")
+    assert summary.returncode == 0, summary.stderr[-2000:]
+    made = {line.split("\t")[0] for line in summary.stdout.splitlines()[1:] if line.strip()}
+    made = {f for f in made if not f.startswith(("data/logs/", "data/benchmarks/"))}
+    plan = run_snakemake(built, "-n", "--force", "all", "-c1")
+    block = plan.stdout.split("rule all:", 1)[1]
+    targets = set(re.search(r"input: (.*)", block)[1].split(", "))
+    assert made - targets == set()
+    assert set(data_files(built)) <= targets  # every file of the finished run is in `all`
+
+
+@pytest.mark.slow
+def test_deleted_intermediate_files_are_remade_byte_identically(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    for name in ("data/soms/soms.npz", "data/eval/trials.csv", "data/train/net01/weights.npz"):
+        (copy / name).unlink()
+    result = run_snakemake(copy, "-c2")
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_following_the_advice_for_a_corrupt_file_restores_the_run(built, tmp_path):
+    """A corrupt file: the job that reads it fails saying "delete it and rerun `snakemake -c2`";
+    doing exactly that gives back every file, byte for byte."""
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    weights = copy / "data/train/net01/weights.npz"
+    weights.write_bytes(weights.read_bytes()[:100])
+    failed = run_snakemake(copy, "-c1", "--forcerun", "evaluate")
+    assert failed.returncode != 0
+    # the first job to read it fails (the evaluation, or the robot test of that network)
+    logs = "".join(p.read_text() for p in sorted((copy / "data/logs").rglob("*.log")))
+    advice = re.search(
+        r"(\S+) is corrupt or truncated .*; delete it and rerun `(snakemake -c2)`", logs
+    )
+    assert advice, failed.stdout[-3000:]
+    (copy / advice[1]).unlink()  # delete it ...
+    rerun = run_snakemake(copy, *advice[2].split()[1:])  # ... and rerun `snakemake -c2`
+    assert rerun.returncode == 0, rerun.stderr[-3000:]
+    assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_a_broken_benchmark_file_advice_followed_literally_makes_the_timeline_work(built, tmp_path):
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    (copy / "data/benchmarks/figure4.tsv").write_text("not a benchmark\n")
+    timeline = [sys.executable, str(REPO / "benchmarks/timeline.py"), "data/benchmarks"]
+    failed = subprocess.run(timeline, cwd=copy, capture_output=True, text=True)
+    advice = re.search(r"`(snakemake -c2 --forceall)`", failed.stderr)
+    assert failed.returncode != 0 and advice, failed.stderr
+    rerun = run_snakemake(copy, *advice[1].split()[1:])
+    assert rerun.returncode == 0, rerun.stderr[-3000:]
+    assert subprocess.run(timeline, cwd=copy, capture_output=True).returncode == 0
+    assert data_files(copy) == data_files(built)
+
+
+@pytest.mark.slow
+def test_the_sweep_and_its_cost_are_targets_with_robustness(built):
+    plan = run_snakemake(built, "-n", "--force", "all", "-c1", "--config", "robustness=True")
+    targets = set(re.search(r"input: (.*)", plan.stdout.split("rule all:", 1)[1])[1].split(", "))
+    assert "data/benchmarks/sweep_cost.csv" in targets
+    assert "data/sweep/points.csv" in targets
+    assert any(t.startswith("data/runs/sweep_seed1_") and "weights.npz" in t for t in targets)
+
+
+@pytest.mark.slow
+def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_path):
+    scene = built / "moved_scene"
+    scene.mkdir(exist_ok=True)
+    for name in ("icub_scene.xml", "icub_right_arm.xml"):
+        shutil.copy(REPO / "assets" / name, scene / name)
+    plan = run_snakemake(built, "-n", "-c1", "--config", "scene=moved_scene/icub_scene.xml")
+    shutil.rmtree(scene)
+    assert plan.returncode == 0, plan.stderr[-2000:]
+    jobs = planned_jobs(plan.stdout)
+    for rule in ("body_figure", "visual_maps", "demos_object", "demo_filmstrip", "embodied"):
+        assert rule in jobs, (rule, jobs)
+
+
+@pytest.mark.slow
+def test_a_nested_command_line_override_means_what_the_config_file_would(tmp_path):
+    workdir = scratch_workflow(tmp_path / "w")
+    for entry in ("network={networks: 6}", "runs={x: {network: {learning_rate: 0.0375}}}"):
+        result = run_snakemake(workdir, "-n", "-c1", "--config", entry)
+        assert result.returncode == 0, (entry, result.stderr[-2000:])
+    assert "run_train" in planned_jobs(result.stdout)
+    result = run_snakemake(workdir, "-n", "-c1", "--config", "network={phase1_iterations: 1300}")
+    message = result.stdout + result.stderr
+    assert result.returncode != 0 and "network.phase1_iterations: 1300" in message, message

@@ -44,6 +44,8 @@ def resize_object(spec: mujoco.MjSpec, name: str, size: float) -> None:
     if not 0.005 <= size <= 0.15:
         raise ValueError(f"object size {size} m for {name} is outside 0.005..0.15 m")
     geom = spec.geom(name)
+    if geom is None or spec.body(name) is None:
+        raise ValueError(f"the scene has no object {name!r} (a body and a geom of that name)")
     half = size / 2.0
     old_half = float(geom.size[0])
     geom.mass = geom.mass * (half / old_half) ** 3

@@ -25,6 +25,11 @@ def evaluate_network(
     for mode in MODES:
         forced = setup.teacher if mode == "teacher_forced" else None
         out, hid = run_closed_loop(weights, setup.context, setup.teacher[:, 0], forced)
+        if not np.all(np.isfinite(out)):
+            raise FloatingPointError(
+                f"network {network:02d} outputs NaN or infinity ({mode}): its results would be "
+                "meaningless. Retrain it with a lower config network.learning_rate or init_scale."
+            )
         hidden[mode] = hid
         rows += [
             trial_row(m, setup, i, out[i], out[i, -1], network, mapping, mode)

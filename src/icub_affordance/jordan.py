@@ -49,6 +49,16 @@ class Weights:
     def copy(self) -> Weights:
         return Weights(self.W1.copy(), self.b1.copy(), self.W2.copy(), self.b2.copy())
 
+    def check_finite(self, name: str) -> None:
+        """Refuse weights holding NaN or infinity (diverged training), naming the network: its
+        outputs would be NaN, and every statistic after them meaningless."""
+        bad = [key for key, value in self.as_dict().items() if not np.all(np.isfinite(value))]
+        if bad:
+            raise FloatingPointError(
+                f"{name}: weights {bad} are not finite (NaN or infinite), so its outputs are NaN: "
+                "the training diverged. Lower config network.learning_rate or network.init_scale."
+            )
+
     def as_dict(self) -> dict[str, np.ndarray]:
         return {"W1": self.W1, "b1": self.b1, "W2": self.W2, "b2": self.b2}
 

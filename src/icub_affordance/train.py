@@ -142,7 +142,10 @@ def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
     maps = load_npz(visual_maps_path, required=objects)
     soms = load_npz(soms_path, required=("goal_act", "objects"))
     if tuple(soms["objects"].tolist()) != objects:
-        raise ValueError(f"{soms_path} and {demos_path} list different objects; rerun the pipeline")
+        raise ValueError(
+            f"{soms_path} and {demos_path} list different objects: delete both and rerun "
+            "`snakemake -c2`."
+        )
     return Materials(
         objects=objects,
         grips=tuple(demos["grips"].tolist()),

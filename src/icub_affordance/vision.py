@@ -8,6 +8,7 @@ every object, so the map carries the object's size as well as its outline.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import combinations
 
 import cv2
 import numpy as np
@@ -84,3 +85,26 @@ def visual_maps(
 ) -> dict[str, VisualStages]:
     """Figure 3's stages for every object, each seen on the spot from the same posture."""
     return {obj: visual_stages(robot, obj, config) for obj in objects}
+
+
+def check_seen(maps: dict[str, np.ndarray], edge_threshold: float) -> None:
+    """Refuse visual maps that would make the rest meaningless: an object the eye does not see
+    (no edge cell: the networks would learn from a blank Object map) or two objects it cannot
+    tell apart (equal maps: size and shape could not matter). Names the objects and the fix."""
+    blind = [obj for obj, m in maps.items() if not np.any(m)]
+    if blind:
+        raise ValueError(
+            f"the eye sees no edge of {blind}: their visual maps have 0 edge cells at config "
+            f"vision.edge_threshold = {edge_threshold:g} (Sobel magnitude, 0-255 image units), "
+            "so the networks would learn from a blank Object map. Lower vision.edge_threshold "
+            "(config/config.yaml has 60), or check the scene and vision.eye."
+        )
+    same = [(a, b) for a, b in combinations(maps, 2) if np.array_equal(maps[a], maps[b])]
+    if same:
+        raise ValueError(
+            f"the visual maps of {same} are identical at config vision.edge_threshold = "
+            f"{edge_threshold:g} (window {next(iter(maps.values())).shape}): the robot cannot "
+            "tell these objects apart, and their size or shape could not affect the results. "
+            "Change vision.edge_threshold, vision.window or vision.grid (config/config.yaml: "
+            "60, 100, 10)."
+        )

@@ -22,23 +22,23 @@ def merged(base: Mapping[str, Any], overrides: Mapping[str, Any]) -> dict[str, A
 def check_runs(
     config: Mapping[str, Any], schema: Mapping[str, Any], taken: Iterable[str] = ()
 ) -> None:
-    """Refuse a run of config `runs` whose overrides, laid over the config, break the schema
-    (an unknown section or key, a bad value), or whose name is `taken`, naming the run and key."""
-    import jsonschema
+    """Refuse a run of config `runs` whose name is `taken`, whose entry changes what a run may
+    not, or whose overrides, laid over the config, break the schema or a rule between keys
+    (workflow/lib/config_checks.py), naming the run and the key."""
+    from config_checks import ConfigError, check_config, check_schema
 
-    validator = jsonschema.Draft202012Validator(schema)
     taken = set(taken)
     for name, overrides in config["runs"].items():
+        prefix = f"runs.{name}."
         if name in taken:
-            raise ValueError(
-                f"config runs: the name {name!r} is taken (the main run, the cue ablation, a "
-                "sweep point or a reading). Give the run another name."
+            raise ConfigError(
+                f"config key runs.{name}: the name {name!r} is taken (the main run, the cue "
+                "ablation, a sweep point or a reading). Allowed: any other name. Fix: rename the "
+                "run."
             )
-        error = jsonschema.exceptions.best_match(validator.iter_errors(merged(config, overrides)))
-        if error is not None:
-            key = ".".join(str(part) for part in error.absolute_path)
-            raise ValueError(
-                f"config runs.{name}: {key or 'the run'}: {error.message}. Fix or remove this "
-                "key in the run's entry under `runs:` (workflow/schemas/config.schema.yaml says "
-                "what is allowed)."
-            )
+        # the entry itself: only the sections a run may change, and at least one
+        check_schema(overrides, schema["properties"]["runs"]["additionalProperties"], prefix)
+        # the run's whole config (its own `runs` aside: the entries are checked one by one)
+        run = merged(config, overrides) | {"runs": {}}
+        check_schema(run, schema, prefix)
+        check_config(run, prefix)

@@ -5,8 +5,6 @@ import re
 import sys
 from pathlib import Path
 
-import yaml
-
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
 from configs import check_runs, merged  # noqa: E402
@@ -120,11 +118,8 @@ CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
 
-check_runs(
-    config,
-    yaml.safe_load((Path(workflow.basedir) / "workflow/schemas/config.schema.yaml").read_text()),
-    taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS],
-)
+# each run of `runs:`, laid over the config: the schema and the rules between keys
+check_runs(config, CONFIG_SCHEMA, taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS])
 
 
 def run_dir(run):

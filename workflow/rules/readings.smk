@@ -81,3 +81,21 @@ rule readings_figure:
         "data/benchmarks/readings/figure.tsv"
     script:
         "../scripts/readings_figure.py"
+
+
+def reading_files(run):
+    """Every file a reading's replication makes (common.smk: reading_runs): its demonstrations,
+    SOMs and networks (runs.smk: run_files), its measures, and, for the main run and the runs of
+    the default target, their tests too; a reading's own run is not tested otherwise (its trials
+    are scored by rule `measures`)."""
+    files = run_files(run)
+    if run != MAIN and run not in CONFIGURED_RUNS:
+        tests = {
+            f"{run_dir(run)}/{f.removeprefix('data/')}"
+            for name in ("evaluate", "stats", "figure5")
+            for f in getattr(rules, name).output
+        }
+        files = [f for f in files if f not in tests]
+    return files + [
+        f"{run_dir(run)}/{f.removeprefix('data/')}" for f in rules.measures.output
+    ]

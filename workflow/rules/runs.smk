@@ -118,10 +118,29 @@ use rule figure5 as run_figure5 with:
         "data/benchmarks/runs/{run}/figure5.tsv"
 
 
-def run_outputs(runs):
-    """What the default target makes of each run: its ANOVAs and its Figure 5."""
-    return [
-        f"data/runs/{run}/{path}"
-        for run in runs
-        for path in ("eval/anova.json", "figures/figure5.png")
-    ]
+def run_files(run):
+    """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
+    common.smk: stage_run), each network's curve and weights, the tests, ANOVAs and Figure 5.
+
+    All of them are inputs of the run's target, not only its last files: Snakemake does not
+    remake a missing file that no job still to run needs, so a deleted (or corrupt, and deleted
+    as the error says) intermediate file would otherwise stay missing after a green run.
+    """
+
+    def outputs(name, **wildcards):
+        """The main run's rule's output files, at this run's place (common.smk: run_dir)."""
+        files = expand(list(getattr(rules, name).output), **wildcards)
+        return [f"{run_dir(run)}/{f.removeprefix('data/')}" for f in files]
+
+    files = []
+    if stage_run(run, "demos") == run:
+        # the main run makes each object's part in a job of its own (another run: one job)
+        if run == MAIN:
+            files += outputs("demos_object", object=config["objects"])
+        files += outputs("demos")
+    if stage_run(run, "soms") == run:
+        files += outputs("soms")
+    files += outputs("train", net=run_networks(run))
+    for name in ("evaluate", "stats", "figure5"):
+        files += outputs(name)
+    return files

@@ -56,11 +56,18 @@ rule sweep_figure:
         "../scripts/sweep_figure.py"
 
 
+# every file of the sweep, each point's too (see run_files)
+SWEEP_OUTPUTS = [
+    *(f for run in SWEEP_RUNS for f in run_files(run)),
+    *rules.sweep_summary.output,
+    *rules.sweep_figure.output,
+]
+
+
 rule sweep:
     """Target: the whole sweep."""
     input:
-        rules.sweep_summary.output,
-        rules.sweep_figure.output,
+        SWEEP_OUTPUTS,
 
 
 rule sweep_cost:

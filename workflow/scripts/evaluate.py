@@ -15,6 +15,7 @@ with redirect_log(snakemake.log[0]):
     rows, hidden = [], {}
     for net, path in enumerate(snakemake.input.weights):
         weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+        weights.check_finite(f"network {net:02d} ({path})")
         net_rows, net_hidden = evaluate_network(
             materials, weights, net, mapping_of(net, n_networks), cue
         )

@@ -2,6 +2,8 @@
 wildcard `net` (rule train: one job per network), or every network of the run, one after
 another (rule run_train: the outputs list them in order)."""
 
+import numpy as np
+
 from icub_affordance.io import redirect_log, save_npz, write_csv
 from icub_affordance.spec import TASKS
 from icub_affordance.train import (
@@ -46,6 +48,12 @@ with redirect_log(snakemake.log[0]):
         weights, curve = train_network(
             materials, config, mapping, network_seed(snakemake.params.seed, net)
         )
+        weights.check_finite(f"network {net:02d}")
+        if not np.all(np.isfinite(curve["rmse"])):
+            raise FloatingPointError(
+                f"network {net:02d}: its training error became NaN (the outputs diverged). "
+                "Lower config network.learning_rate or network.init_scale."
+            )
         rows = curve_rows(curve, materials.objects)
         write_csv(curve_path, rows)  # not pandas: a training job is short
         save_npz(weights_path, **weights.as_dict())

@@ -2,7 +2,7 @@
 
 from icub_affordance.body import Robot, check_posture_deg
 from icub_affordance.io import redirect_log, save_npz
-from icub_affordance.vision import VisionConfig, visual_maps
+from icub_affordance.vision import VisionConfig, check_seen, visual_maps
 
 with redirect_log(snakemake.log[0]):
     config = VisionConfig(**snakemake.params.vision)
@@ -12,6 +12,9 @@ with redirect_log(snakemake.log[0]):
     )
     stages = visual_maps(robot, tuple(snakemake.params.objects), config)
     robot.close()
+    for obj, s in stages.items():
+        print(f"{obj}: {int(s.visual_map.sum())} edge cells")
+    check_seen({obj: s.visual_map for obj, s in stages.items()}, config.edge_threshold)
     save_npz(snakemake.output.maps, **{obj: s.visual_map for obj, s in stages.items()})
     save_npz(
         snakemake.output.stages,
@@ -21,5 +24,3 @@ with redirect_log(snakemake.log[0]):
             for part in ("eye", "sobel", "edges", "visual_map")
         },
     )
-    for obj, s in stages.items():
-        print(f"{obj}: {int(s.visual_map.sum())} edge cells")

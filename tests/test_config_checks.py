@@ -1,0 +1,223 @@
+"""The config's checks beyond the schema (workflow/lib/config_checks.py), tried directly: every
+refusal names the key, the value, what is allowed and the fix."""
+
+from __future__ import annotations
+
+import shutil
+
+import pytest
+import yaml
+from config_checks import (
+    ConfigError,
+    check_command_line,
+    check_config,
+    check_scene,
+    typed_overrides,
+)
+from conftest import REPO, load_config
+
+
+def refusal(change, prefix: str = "") -> str:
+    config = load_config()
+    change(config)
+    with pytest.raises(ConfigError) as info:
+        check_config(config, prefix)
+    return str(info.value)
+
+
+def test_the_default_and_the_test_config_pass():
+    from conftest import load_test_config
+
+    check_config(load_config())
+    check_config(load_test_config())
+
+
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        # phase 1 longer than the training, and an odd phase 2
+        (
+            lambda c: c["network"].update(phase1_iterations=13000),
+            ["network.phase1_iterations", "13000", "0..12000", "Fix"],
+        ),
+        (
+            lambda c: c["network"].update(phase1_iterations=5999),
+            ["network.phase1_iterations", "5999", "odd", "Fix"],
+        ),
+        # the window outside the image, or not a multiple of the grid
+        (
+            lambda c: c["vision"].update(window=300),
+            ["vision.window", "300", "320x240", "at most 240", "Fix"],
+        ),
+        (lambda c: c["vision"].update(window=105), ["vision.window", "105", "multiple of 10"]),
+        # the posture outside Figure 1's ranges
+        (
+            lambda c: c["initial_posture_deg"].__setitem__(3, 150),
+            ["initial_posture_deg[3]", "150", "elbow", "6..106", "Fix"],
+        ),
+        (
+            lambda c: c["initial_posture_deg"].__setitem__(0, -120),
+            ["initial_posture_deg[0]", "-120", "shoulder pitch", "-95..90"],
+        ),
+        # the lift check cannot pass
+        (
+            lambda c: c["demos"].update(min_lift_m=0.08),
+            ["demos.min_lift_m", "0.08", "demos.lift_m", "Fix"],
+        ),
+        # the figures' picks outside the data
+        (
+            lambda c: c["figures"].update(filmstrip=[["big_ball", "power", 99]]),
+            ["figures.filmstrip[0]", "99", "demos.sequences = 5", "0..4", "Fix"],
+        ),
+        (
+            lambda c: c.update(objects=["big_ball", "small_ball"]),
+            ["figures.filmstrip[1]", "small_cube", "objects", "Fix"],
+        ),
+        (
+            lambda c: c["figures"]["embodied"].update(sequence=5),
+            ["figures.embodied.sequence", "5", "0..4"],
+        ),
+        (
+            lambda c: c.update(objects=["small_ball", "big_cube", "small_cube"]),
+            ["figures.embodied.object", "big_ball", "objects"],
+        ),
+    ],
+)
+def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change, words):
+    message = refusal(change)
+    for word in words:
+        assert word in message, (word, message)
+
+
+def test_every_problem_is_listed_at_once_and_a_run_is_named():
+    def change(c):
+        c["network"].update(phase1_iterations=20000)
+        c["vision"].update(window=250)
+
+    message = refusal(change, prefix="runs.half_lr.")
+    assert "2 problems" in message
+    assert "runs.half_lr.network.phase1_iterations" in message
+    assert "runs.half_lr.vision.window" in message
+
+
+@pytest.mark.parametrize(
+    ("given", "meant"),
+    [
+        ({"network": {"networks": "12"}}, {"network": {"networks": 12}}),
+        ({"network": {"learning_rate": "0.0375"}}, {"network": {"learning_rate": 0.0375}}),
+        (
+            {"network": {"categorisation_cue": "all_steps"}},
+            {"network": {"categorisation_cue": "all_steps"}},
+        ),  # noqa: E501
+        (
+            {"runs": {"x": {"network": {"hidden": "5"}}}},
+            {"runs": {"x": {"network": {"hidden": 5}}}},
+        ),  # noqa: E501
+        ({"initial_posture_deg": ["-50", "30"]}, {"initial_posture_deg": [-50, 30]}),
+        ({"sweep": {"seeds": ["1", "2"]}}, {"sweep": {"seeds": [1, 2]}}),
+        # top-level values are Snakemake's own reading, kept as they are
+        ({"seed": 7, "robustness": True}, {"seed": 7, "robustness": True}),
+        ({"scene": "assets/x.xml"}, {"scene": "assets/x.xml"}),
+    ],
+)
+def test_nested_command_line_values_are_read_as_in_a_config_file(given, meant):
+    assert typed_overrides(given) == meant
+
+
+def test_robustness_as_text_is_refused_with_the_spelling_that_works():
+    with pytest.raises(ConfigError, match="robustness=True"):
+        check_command_line({"robustness": "true"})
+    check_command_line({"robustness": True})
+
+
+def test_the_scene_is_loaded_and_checked(tmp_path):
+    config = load_config()
+    config["scene"] = str(REPO / "assets" / "icub_scene.xml")
+    check_scene(config)
+
+    config["scene"] = str(tmp_path / "nope.xml")
+    with pytest.raises(ConfigError, match=r"config key scene: .*nope\.xml.*Fix"):
+        check_scene(config)
+
+    broken = tmp_path / "broken.xml"
+    broken.write_text("<mujoco><worldbody><body></mujoco>")
+    config["scene"] = str(broken)
+    with pytest.raises(ConfigError, match=r"config key scene: .*broken\.xml.*cannot be used"):
+        check_scene(config)
+
+    # well-formed XML, but not the iCub scene
+    empty = tmp_path / "empty.xml"
+    empty.write_text("<mujoco><worldbody/></mujoco>")
+    config["scene"] = str(empty)
+    with pytest.raises(ConfigError, match=r"config key scene: .*empty\.xml.*Figure 1"):
+        check_scene(config)
+
+    # the scene without a camera the rules render from
+    for name in ("icub_scene.xml", "icub_right_arm.xml"):
+        shutil.copy(REPO / "assets" / name, tmp_path / name)
+    scene = tmp_path / "icub_scene.xml"
+    scene.write_text(scene.read_text().replace('name="closeup"', 'name="elsewhere"'))
+    config["scene"] = str(scene)
+    with pytest.raises(ConfigError, match=r"lacks the camera\(s\) \['closeup'\]"):
+        check_scene(config)
+
+
+def test_the_schema_bounds_every_number():
+    """No number in the schema is left without both bounds (a range, an enum or a rule here)."""
+    schema = yaml.safe_load((REPO / "workflow/schemas/config.schema.yaml").read_text())
+    unbounded = []
+
+    def visit(node, path):
+        if isinstance(node, dict):
+            if node.get("type") in ("number", "integer"):
+                low = "minimum" in node or "exclusiveMinimum" in node
+                high = "maximum" in node or "exclusiveMaximum" in node
+                if not (low and high):
+                    unbounded.append(path)
+            for key, value in node.items():
+                visit(value, f"{path}.{key}")
+        elif isinstance(node, list):
+            for i, value in enumerate(node):
+                visit(value, f"{path}[{i}]")
+
+    visit(schema, "schema")
+    assert not unbounded, unbounded
+
+
+SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
+
+
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        (lambda c: c["network"].update(hidden=0), ["network.hidden", "0", "1 <= x <= 1000", "Fix"]),
+        (lambda c: c["network"].update(networks=7), ["network.networks", "7", "multiple of 2"]),
+        (lambda c: c.update(seed="abc"), ["config key seed", "'abc'", "whole number", "Fix"]),
+        (lambda c: c["vision"].update(eye="nose_eye"), ["vision.eye", "nose_eye", "left_eye"]),
+        (lambda c: c.update(learningrate=0.1), ["learningrate", "no such key", "network", "Fix"]),
+        (lambda c: c["network"].pop("hidden"), ["config key network", "hidden", "required", "Fix"]),
+        (
+            lambda c: c["initial_posture_deg"].__setitem__(0, 400),
+            ["initial_posture_deg.0", "400", "-180 <= x <= 180"],
+        ),
+        (lambda c: c["demos"].update(touch_threshold=50), ["demos.touch_threshold", "50", "10"]),
+        (
+            lambda c: c["sweep"].update(seeds=[5_000_000_000]),
+            ["sweep.seeds.0", "5000000000", "4294967295"],
+        ),
+        (
+            lambda c: c["runs"].update(x={"vision": {"window": 50}}),
+            ["runs.x.vision", "no such key", "seed, network, soms"],
+        ),
+    ],
+)
+def test_a_schema_refusal_names_key_value_allowed_and_fix(change, words):
+    from config_checks import check_schema, load_schema
+
+    config = load_config()
+    check_schema(config, load_schema(SCHEMA))
+    change(config)
+    with pytest.raises(ConfigError) as info:
+        check_schema(config, load_schema(SCHEMA))
+    for word in words:
+        assert word in str(info.value), (word, str(info.value))

@@ -1,0 +1,61 @@
+"""The DAG drawing: the same bytes on every run, and the run's own config."""
+
+from __future__ import annotations
+
+import os
+import random
+import re
+import subprocess
+import sys
+
+import pytest
+from conftest import TEST_CONFIG, scratch_workflow
+from rulegraph import canonical_dot
+
+DOT = """digraph snakemake_dag {
+    graph[bgcolor=white, margin=0];
+\t0[label = "all", color = "0.00 0.6 0.85", style="rounded"];
+\t1[label = "train", color = "0.63 0.6 0.85", style="rounded"];
+\t2[label = "book", color = "0.04 0.6 0.85", style="rounded"];
+\t1 -> 0
+\t2 -> 0
+\t1 -> 2
+}            
+"""  # noqa: W291 (Snakemake's own trailing blanks)
+
+
+def test_the_same_graph_in_another_order_gives_the_same_bytes():
+    lines = DOT.splitlines()
+    number = {"0": "7", "1": "3", "2": "5"}  # the same rules under other numbers
+    renumbered = [re.sub(r"^\t(\d+)\[", lambda m: f"\t{number[m[1]]}[", n) for n in lines[2:5]]
+    moved = [re.sub(r"\d+", lambda m: number[m[0]], e) for e in lines[5:8]]
+    random.Random(1).shuffle(renumbered)
+    random.Random(2).shuffle(moved)
+    other = "\n".join([*lines[:2], *renumbered, *moved, "}"])
+    assert canonical_dot(other) == canonical_dot(DOT)
+    assert canonical_dot(canonical_dot(DOT)) == canonical_dot(DOT)
+    assert '\t0[label = "all"' in canonical_dot(DOT) and "\t2 -> 1" in canonical_dot(DOT)
+
+
+def test_a_text_that_is_no_rule_graph_is_refused():
+    with pytest.raises(ValueError, match="no rules"):
+        canonical_dot("Building DAG of jobs...\n")
+
+
+@pytest.mark.slow
+def test_the_drawing_is_byte_identical_across_runs_and_follows_the_config(tmp_path):
+    workdir = scratch_workflow(tmp_path / "w")
+    out = workdir / "data/book/rulegraph.dot"
+
+    def draw(*args, seed):
+        env = os.environ | {"PYTHONHASHSEED": str(seed)}
+        cmd = [sys.executable, "-m", "snakemake", "-c1", str(out.relative_to(workdir))]
+        cmd += ["--forcerun", "rulegraph", *args, "--configfile", str(TEST_CONFIG)]
+        result = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, env=env)
+        assert result.returncode == 0, result.stderr[-3000:]
+        return out.read_bytes()
+
+    first, second = draw(seed=1), draw(seed=2)
+    assert first == second
+    assert b"sweep_summary" not in first
+    assert b"sweep_summary" in draw("--config", "robustness=True", seed=3)

@@ -1,0 +1,308 @@
+"""The config's checks beyond the schema, in one place: run when the workflow reads the config,
+before any job (the Snakefile calls them; tests/test_config_checks.py tries them directly).
+
+The schema (workflow/schemas/config.schema.yaml) checks each key alone: its type and range. What
+it cannot say is checked here: rules between keys (the phases of training, the window inside the
+image, the posture inside Figure 1's ranges, the figures' picks inside the data), the values of a
+nested `--config` override (which Snakemake hands over as text), and the scene itself (loaded
+once, with MuJoCo). Every refusal names the config key, the value, what is allowed and the fix.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from icub_affordance.spec import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
+
+#: Where a user changes a value (named in every fix).
+WHERE = "config/config.yaml (or your --configfile / --config)"
+
+#: The cameras the rules render from: the eyes (config vision.eye), Figure 1's overview and the
+#: filmstrips' close-up.
+CAMERAS = ("left_eye", "right_eye", "overview", "closeup")
+#: The filmstrips' frames (workflow/scripts/demo_filmstrip.py, embodied_filmstrip.py), pixels.
+FILMSTRIP_SIZE = (320, 240)
+
+
+class ConfigError(ValueError):
+    """A config the pipeline refuses, before any job: the message says what to change."""
+
+
+# ---- --config on the command line ---------------------------------------------------------------
+
+
+def typed_overrides(overrides: Mapping[str, Any]) -> dict[str, Any]:
+    """The nested values of `--config` overrides read as YAML, as a config file would give them.
+
+    Snakemake reads a top-level `--config key=value` as a number or True/False, but a nested one
+    (`--config 'network={networks: 12}'`, its documented form for a section) with YAML's
+    BaseLoader, which keeps every value as text: `networks` would be the string '12'. Here each
+    such text is read again as YAML (`12` -> 12, `0.0375` -> 0.0375, `true` -> True), so a nested
+    override means what the same line means in config/config.yaml. Top-level values are kept as
+    Snakemake read them.
+    """
+
+    def typed(value: Any) -> Any:
+        if isinstance(value, Mapping):
+            return {key: typed(item) for key, item in value.items()}
+        if isinstance(value, list):
+            return [typed(item) for item in value]
+        if isinstance(value, str):
+            try:
+                return yaml.safe_load(value) if value.strip() else value
+            except yaml.YAMLError:
+                return value
+        return value
+
+    return {
+        key: typed(value) if isinstance(value, Mapping | list) else value
+        for key, value in overrides.items()
+    }
+
+
+def check_command_line(overrides: Mapping[str, Any]) -> None:
+    """Refuse top-level `--config` values that Snakemake read as text but are meant otherwise."""
+    value = overrides.get("robustness")
+    if isinstance(value, str):
+        raise ConfigError(
+            f"config key robustness: {value!r} is text, not a boolean. On the command line write "
+            "it capitalised, as Snakemake reads booleans: --config robustness=True (or False)."
+        )
+
+
+# ---- the schema ---------------------------------------------------------------------------------
+
+
+def _allowed(schema: Mapping[str, Any]) -> str:
+    """What a schema node allows, in words."""
+    if "enum" in schema:
+        return "one of " + ", ".join(map(str, schema["enum"]))
+    parts = []
+    kind = schema.get("type")
+    if kind:
+        names = {"integer": "a whole number", "number": "a number", "array": "a list"}
+        parts.append(names.get(kind, f"a {kind}"))
+    low = schema.get("minimum", schema.get("exclusiveMinimum"))
+    high = schema.get("maximum", schema.get("exclusiveMaximum"))
+    if low is not None or high is not None:
+        below = "<" if "exclusiveMinimum" in schema else "<="
+        above = "<" if "exclusiveMaximum" in schema else "<="
+        parts.append(
+            " ".join(
+                [*([f"{low} {below}"] if low is not None else []), "x"]
+                + ([f"{above} {high}"] if high is not None else [])
+            )
+        )
+    if "multipleOf" in schema:
+        parts.append(f"a multiple of {schema['multipleOf']}")
+    if "minItems" in schema or "maxItems" in schema:
+        parts.append(
+            f"{schema.get('minItems', 0)} to {schema.get('maxItems', 'any number of')} items"
+        )
+    if schema.get("uniqueItems"):
+        parts.append("no repeats")
+    if "pattern" in schema:
+        parts.append(f"matching {schema['pattern']}")
+    if isinstance(schema.get("properties"), Mapping):
+        parts.append("the keys " + ", ".join(schema["properties"]))
+    text = ", ".join(parts) or "see the schema"
+    if schema.get("description"):
+        text += f" ({' '.join(str(schema['description']).split())})"
+    return text
+
+
+def load_schema(path: str | Path) -> dict[str, Any]:
+    """The config's JSON schema (workflow/schemas/config.schema.yaml)."""
+    return yaml.safe_load(Path(path).read_text())
+
+
+def schema_problem(
+    config: Mapping[str, Any], schema: Mapping[str, Any], prefix: str = ""
+) -> str | None:
+    """The schema's most relevant complaint about `config`, as a refusal that names the key, the
+    value, what is allowed and the fix (None: the config is valid)."""
+    import jsonschema
+
+    validator = jsonschema.Draft202012Validator(schema)
+    error = jsonschema.exceptions.best_match(validator.iter_errors(config))
+    if error is None:
+        return None
+    path = [str(p) for p in error.absolute_path]
+    key = prefix + ".".join(path) if path else prefix.rstrip(".") or "(the whole config)"
+    schema_file = "workflow/schemas/config.schema.yaml"
+    if error.validator == "additionalProperties":
+        extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+        where = f"{key}." if path or prefix else ""
+        return (
+            f"config key {where}{extra[0] if extra else '?'}: there is no such key here. Allowed: "
+            f"{', '.join(error.schema.get('properties', {}))}. Fix: correct its spelling or "
+            f"remove it ({schema_file} describes every key)."
+        )
+    if error.validator == "required":
+        return (
+            f"config key {key}: {error.message}. Fix: add it (config/config.yaml has every key "
+            f"with its default; {schema_file} describes it)."
+        )
+    return (
+        f"config key {key}: {error.instance!r} is refused ({error.message}). Allowed: "
+        f"{_allowed(error.schema)}. Fix: set {key} to an allowed value in {WHERE}."
+    )
+
+
+def check_schema(config: Mapping[str, Any], schema: Mapping[str, Any], prefix: str = "") -> None:
+    """Refuse a config that the schema refuses (see :func:`schema_problem`)."""
+    problem = schema_problem(config, schema, prefix)
+    if problem:
+        raise ConfigError(problem)
+
+
+# ---- rules between keys -------------------------------------------------------------------------
+
+
+def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
+    """Every rule between keys that `config` breaks, one message each."""
+
+    def key(name: str) -> str:
+        return f"config key {prefix}{name}"
+
+    network = config["network"]
+    iterations, phase1 = network["iterations"], network["phase1_iterations"]
+    if phase1 > iterations:
+        yield (
+            f"{key('network.phase1_iterations')}: {phase1} is more than network.iterations "
+            f"({iterations}); phase 1 (grasping only) is part of the training. Allowed: "
+            f"0..{iterations}. Fix: lower phase1_iterations or raise iterations."
+        )
+    elif (iterations - phase1) % 2:
+        yield (
+            f"{key('network.phase1_iterations')}: {phase1} leaves {iterations - phase1} "
+            f"iterations for phase 2 (network.iterations = {iterations}), an odd number; phase 2 "
+            "is half grasping, half categorisation. Allowed: iterations - phase1_iterations even. "
+            "Fix: change either by one."
+        )
+
+    vision = config["vision"]
+    window, grid = vision["window"], vision["grid"]
+    width, height = vision["width"], vision["height"]
+    if window > min(width, height):
+        yield (
+            f"{key('vision.window')}: {window} pixels does not fit in the {width}x{height} eye "
+            f"image (vision.width x vision.height). Allowed: at most {min(width, height)}. Fix: "
+            "lower vision.window or enlarge the image."
+        )
+    if window % grid:
+        yield (
+            f"{key('vision.window')}: {window} is not a multiple of vision.grid ({grid}); each "
+            f"map cell averages a whole block of pixels. Allowed: a multiple of {grid}, e.g. "
+            f"{max(grid, window - window % grid)}. Fix: change vision.window or vision.grid."
+        )
+
+    posture = config["initial_posture_deg"]
+    for k, angle in enumerate(posture):
+        if not DOF_MIN_DEG[k] <= angle <= DOF_MAX_DEG[k]:
+            yield (
+                f"{key(f'initial_posture_deg[{k}]')}: {angle:g} degrees for {FIGURE1[k][1]} is "
+                f"outside Figure 1's range for that joint. Allowed: {DOF_MIN_DEG[k]:g}.."
+                f"{DOF_MAX_DEG[k]:g}. Fix: change item {k} (counting from 0) of "
+                "initial_posture_deg."
+            )
+
+    demos = config["demos"]
+    if demos["min_lift_m"] > demos["lift_m"]:
+        yield (
+            f"{key('demos.min_lift_m')}: {demos['min_lift_m']} m is more than demos.lift_m "
+            f"({demos['lift_m']} m); the object cannot rise further than the hand lifts it. "
+            f"Allowed: at most {demos['lift_m']}. Fix: lower min_lift_m or raise lift_m."
+        )
+
+    objects, sequences = list(config["objects"]), demos["sequences"]
+    for i, pick in enumerate(config["figures"]["filmstrip"]):
+        obj, grip, seq = pick
+        here = key(f"figures.filmstrip[{i}]")
+        if obj not in objects:
+            yield (
+                f"{here}: {pick} shows {obj!r}, which this run does not demonstrate (config "
+                f"objects: {objects}). Allowed: one of {objects}. Fix: pick one of them or add "
+                f"{obj!r} to objects."
+            )
+        if grip not in GRIPS:
+            yield f"{here}: {pick}: grip {grip!r}. Allowed: one of {list(GRIPS)}."
+        if not 0 <= seq < sequences:
+            yield (
+                f"{here}: {pick}: sequence {seq} does not exist; there are demos.sequences = "
+                f"{sequences} per object and grip. Allowed: 0..{sequences - 1}. Fix: pick a "
+                "sequence in that range."
+            )
+    embodied = config["figures"]["embodied"]
+    if embodied["object"] not in objects:
+        yield (
+            f"{key('figures.embodied.object')}: {embodied['object']!r} is not tested in this "
+            f"run (config objects: {objects}). Allowed: one of {objects}. Fix: pick one of them."
+        )
+    if not 0 <= embodied["sequence"] < sequences:
+        yield (
+            f"{key('figures.embodied.sequence')}: {embodied['sequence']} does not exist; there "
+            f"are demos.sequences = {sequences} per object and grip. Allowed: "
+            f"0..{sequences - 1}. Fix: pick a sequence in that range."
+        )
+
+
+def check_config(config: Mapping[str, Any], prefix: str = "") -> None:
+    """Refuse a config (already valid against the schema) that breaks a rule between its keys.
+
+    `prefix` is put before every key named (`runs.half_lr.` for a run's config).
+    """
+    problems = list(_problems(config, prefix))
+    if len(problems) == 1:
+        raise ConfigError(problems[0])
+    if problems:
+        raise ConfigError(f"{len(problems)} problems:\n  - " + "\n  - ".join(problems))
+
+
+# ---- the scene ----------------------------------------------------------------------------------
+
+
+def check_scene(config: Mapping[str, Any]) -> None:
+    """Load the scene once, as every rule that uses it will (with the config's object sizes), and
+    check that it has what the rules use: Figure 1's 16 actuators, the touch sensors, the four
+    objects, the cameras, and an offscreen buffer as large as the largest image rendered."""
+    scene = config["scene"]
+    fix = (
+        f"Fix: point `scene` in {WHERE} back at assets/icub_scene.xml (restore it with "
+        "`git checkout -- assets/`), or repair the file."
+    )
+    try:
+        from icub_affordance.body import Robot
+
+        robot = Robot(scene, dict(config["object_sizes_m"]))
+    except Exception as err:  # whatever MuJoCo or the model indexing raise: the scene is unusable
+        raise ConfigError(
+            f"config key scene: {scene!r} cannot be used: {str(err).rstrip('.')}. Allowed: an "
+            "MJCF scene that MuJoCo loads, with the iCub arm of Figure 1, its touch sensors and "
+            f"the four objects. {fix}"
+        ) from err
+    try:
+        model = robot.model
+        cameras = {model.camera(i).name for i in range(model.ncam)}
+        missing = [c for c in CAMERAS if c not in cameras]
+        if missing:
+            raise ConfigError(
+                f"config key scene: {scene!r} lacks the camera(s) {missing} that the rules "
+                f"render from. Allowed: a scene with the cameras {list(CAMERAS)}. {fix}"
+            )
+        need_w = max(config["vision"]["width"], config["body_figure"]["width"], FILMSTRIP_SIZE[0])
+        need_h = max(config["vision"]["height"], config["body_figure"]["height"], FILMSTRIP_SIZE[1])
+        have_w, have_h = int(model.vis.global_.offwidth), int(model.vis.global_.offheight)
+        if need_w > have_w or need_h > have_h:
+            raise ConfigError(
+                f"config keys vision.width/height, body_figure.width/height: images up to "
+                f"{need_w}x{need_h} pixels are rendered, but the scene {scene!r} allows at most "
+                f"{have_w}x{have_h} (its <visual><global offwidth offheight>). Fix: render "
+                "smaller images, or raise offwidth/offheight in the scene."
+            )
+    finally:
+        robot.close()
