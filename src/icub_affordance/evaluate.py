@@ -62,6 +62,29 @@ class TrialSet:
         return cls(trials, grips, ctx, teacher)
 
 
+def describe_trial(
+    m: Materials, setup: TrialSet, i: int, network: int, mapping: str, mode: str
+) -> dict[str, object]:
+    """What a trial was: the network, the test mode, the task, the object and the grip asked for.
+    The first columns of every table of trials (evaluation, measures, robot test)."""
+    task, o, s = setup.trials[i]
+    obj, grip = m.objects[o], m.grips[setup.grips[i]]
+    info = OBJECTS[obj]
+    return {
+        "network": network,
+        "mapping": mapping,
+        "mode": mode,
+        "task": TASKS[task],
+        "object": obj,
+        "size": info.size,
+        "category": info.category,
+        "natural_grip": info.natural_grip,
+        "target_grip": grip,
+        "congruent": "" if task == GRASPING else str(grip == info.natural_grip),
+        "sequence": s,
+    }
+
+
 def trial_row(
     m: Materials,
     setup: TrialSet,
@@ -77,23 +100,10 @@ def trial_row(
     ``final_grip`` is the grip whose demonstrated final posture (same object and sequence) is
     nearer to ``final_posture``.
     """
-    task, o, s = setup.trials[i]
-    obj, grip = m.objects[o], m.grips[setup.grips[i]]
-    info = OBJECTS[obj]
+    _task, o, s = setup.trials[i]
     sq = (outputs - setup.teacher[i, 1:]) ** 2  # (steps-1, 16)
     nearest = int(np.argmin(np.linalg.norm(m.demos[o, :, s, -1] - final_posture, axis=1)))
-    row = {
-        "network": network,
-        "mapping": mapping,
-        "mode": mode,
-        "task": TASKS[task],
-        "object": obj,
-        "size": info.size,
-        "category": info.category,
-        "natural_grip": info.natural_grip,
-        "target_grip": grip,
-        "congruent": "" if task == GRASPING else str(grip == info.natural_grip),
-        "sequence": s,
+    row = describe_trial(m, setup, i, network, mapping, mode) | {
         "held_out": s == m.demos.shape[2] - 1,
         "rmse": float(np.sqrt(sq.mean())),
         "final_grip": m.grips[nearest],

@@ -19,9 +19,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .evaluate import TrialSet
+from .evaluate import TrialSet, describe_trial
 from .jordan import Weights, run_closed_loop
-from .spec import GRASPING, MODES, OBJECTS, TASKS
+from .spec import MODES
 from .train import Materials
 
 #: The measures, in the order of the tables; config ``readings.measures`` declares which are used.
@@ -62,23 +62,13 @@ def measure_network(
     for mode in MODES:
         forced = setup.teacher if mode == "teacher_forced" else None
         out, _ = run_closed_loop(weights, setup.context, setup.teacher[:, 0], forced)
-        for i, (task, o, s) in enumerate(setup.trials):
+        for i, (_task, o, s) in enumerate(setup.trials):
             g = setup.grips[i]
             required, other = m.demos[o, g, s], m.demos[o, 1 - g, s]
-            obj, info = m.objects[o], OBJECTS[m.objects[o]]
             rmse = float(np.sqrt(((out[i] - required[1:]) ** 2).mean()))
             rows.append(
-                {
-                    "network": network,
-                    "mapping": mapping,
-                    "mode": mode,
-                    "task": TASKS[task],
-                    "object": obj,
-                    "size": info.size,
-                    "category": info.category,
-                    "target_grip": m.grips[g],
-                    "congruent": "" if task == GRASPING else str(m.grips[g] == info.natural_grip),
-                    "sequence": s,
+                describe_trial(m, setup, i, network, mapping, mode)
+                | {
                     "rmse": rmse,
                     "time_to_commit": time_to_commit(out[i], required, other),
                     "rmse_per_grip_distance": rmse / grip_distance(required, other),
