@@ -23,7 +23,9 @@ import numpy as np
 import torch
 import yaml
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+# the tests' synthetic materials (tests/), and what their conftest imports (workflow/lib)
+REPO = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(REPO / "tests"), str(REPO / "workflow" / "lib")]
 
 from test_jordan import synthetic_materials  # noqa: E402
 
