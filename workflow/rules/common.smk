@@ -10,8 +10,6 @@ from code_deps import CodeGraph, page_code  # noqa: E402
 from configs import check_runs, merged  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
-# The interpreter running Snakemake, for the rare shell command that calls Python tools.
-PYTHON = sys.executable
 
 # the project's own code: the package, the workflow's and the book's machinery, the benchmarks
 _CODE = CodeGraph(
@@ -54,7 +52,6 @@ def settings(value):
 # readings (those not already among the others).
 
 MAIN = "main"
-RUN_SECTIONS = ("seed", "network", "soms")  # what a run may override
 
 
 def ablation_run():
