@@ -40,6 +40,7 @@ def synthetic_materials(seed: int = 0) -> Materials:
         visual=rng.integers(0, 2, (4, 100)).astype(float),
         goal=rng.uniform(0, 1, (4, 2, 100)),
         demos=demos,
+        commands=np.clip(demos + 0.05, 0, 1),
     )
 
 

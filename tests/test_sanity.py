@@ -54,4 +54,4 @@ def test_a_network_that_outputs_nan_fails_its_evaluation_naming_it(monkeypatch):
         evaluate, "run_closed_loop", lambda *a: (np.full((1, 3, 16), np.nan), np.zeros((1, 3, 2)))
     )
     with pytest.raises(FloatingPointError, match="network 07 outputs NaN"):
-        evaluate_network(None, None, 7, "B", "first_step")
+        evaluate_network(None, None, 7, "B", "first_step", "sensed")

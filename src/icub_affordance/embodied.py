@@ -10,6 +10,10 @@ section 4): the required grip's fingers touch the object, and the object rises w
 Two replays bound what a network could achieve with this controller: the demonstrator's own
 servo targets at the ten recorded moments (a correct plan), and the postures proprioception
 recorded at those moments (what the networks were taught).
+
+The reaction time on the body is the contact time: from the trial's start until the touch
+sensors of every finger the required grip uses first read contact, at the physics step's
+resolution (2 ms).
 """
 
 from __future__ import annotations
@@ -40,6 +44,20 @@ class Outcome:
     touch: np.ndarray  # (6,) N, at the end of the last step
     lift_m: float  # how far the object rose with the lifted hand; NaN when not lifted
     qpos: np.ndarray  # (steps + 1, nq) the state at every step and after the lift, for pictures
+    contact_time: float  # s from the start until the required grip's fingers all touch; NaN: never
+
+
+class _ContactClock:
+    """Watches the touch sensors at every physics step for the first moment the required grip's
+    fingers all read contact."""
+
+    def __init__(self, robot: Robot, grip: str, threshold: float) -> None:
+        self.start, self.grip, self.threshold = robot.data.time, grip, threshold
+        self.time = float("nan")
+
+    def __call__(self, robot: Robot) -> None:
+        if np.isnan(self.time) and grip_in_contact(self.grip, robot.touch(), self.threshold):
+            self.time = float(robot.data.time - self.start)
 
 
 def sensed_posture(robot: Robot) -> np.ndarray:
@@ -55,8 +73,10 @@ def run_trial(
     steps: int,
     grip: str,
     config: DemoConfig,
+    watch: Callable[[Robot], None] | None = None,
 ) -> Outcome:
-    """One trial in physics from the posture ``start`` (0-1), ``steps`` postures long.
+    """One trial in physics from the posture ``start`` (0-1), ``steps`` postures long;
+    ``watch``, if given, sees the robot after every physics step of the movement (pictures).
 
     The arm is lifted only if the required grip's fingers touch the object: without that the
     trial has failed whatever the lift would show, and the lift is the costliest part.
@@ -67,9 +87,11 @@ def run_trial(
     height = robot.object_position(obj)[2]
     step_s = DEMO_S / (steps - 1)  # the demonstrations' time between recorded steps
     sensed, commands, states = [sensed_posture(robot)], [], [robot.data.qpos.copy()]
+    clock = _ContactClock(robot, grip, config.touch_threshold)
+    record = clock if watch is None else lambda r: (clock(r), watch(r))
     for t in range(steps - 1):
         command = np.asarray(policy(t, sensed[-1]), dtype=float)
-        move(robot, to_degrees(command), step_s)
+        move(robot, to_degrees(command), step_s, record=record)
         commands.append(command)
         sensed.append(sensed_posture(robot))
         states.append(robot.data.qpos.copy())
@@ -79,7 +101,7 @@ def run_trial(
         lift_arm(robot, config.lift_m)
         lift = float(robot.object_position(obj)[2] - height)
     states.append(robot.data.qpos.copy())
-    return Outcome(np.array(commands), np.array(sensed), touch, lift, np.array(states))
+    return Outcome(np.array(commands), np.array(sensed), touch, lift, np.array(states), clock.time)
 
 
 def network_policy(weights: Weights, context: np.ndarray) -> Policy:
@@ -105,6 +127,7 @@ def outcome_columns(out: Outcome, grip: str, target_final: np.ndarray, config: D
         "grip_used": grip_used(out.touch, config.touch_threshold),
         "final_error": float(np.sqrt(np.mean((out.sensed[-1] - target_final) ** 2))),
         "lift_m": out.lift_m,
+        "contact_time": out.contact_time,
     } | {name: float(v) for name, v in zip(TOUCH_NAMES, out.touch, strict=True)}
 
 
@@ -115,24 +138,34 @@ def embodied_network(
     network: int,
     mapping: str,
     cue: str,
+    target: str,
     config: DemoConfig,
 ) -> tuple[list[dict[str, object]], np.ndarray]:
     """Every test trial of one network on the robot: rows with the columns of the evaluation's
-    trials (mode ``embodied``) plus the physical outcome, and the states for pictures."""
-    setup = TrialSet.of(m, mapping, cue)
-    rows, states = [], []
+    trials (mode ``embodied``) plus the physical outcome, and the states for pictures.
+
+    A trial is decided by its object, grip, maps' input and start posture: the test sequences of
+    one object and task differ only in the demonstration their result is compared with, so the
+    network drives the same movement in each. Physics runs once per distinct trial (MuJoCo is
+    deterministic from a reset), and the others reuse it.
+    """
+    setup = TrialSet.of(m, mapping, cue, target)
+    rows, states, done = [], [], {}
     for i, (_task, o, _s) in enumerate(setup.trials):
         grip = m.grips[setup.grips[i]]
         start = setup.teacher[i, 0]
-        out = run_trial(
-            robot,
-            m.objects[o],
-            network_policy(weights, setup.context[i]),
-            start,
-            len(setup.teacher[i]),
-            grip,
-            config,
-        )
+        key = (o, grip, setup.context[i].tobytes(), start.tobytes())
+        if key not in done:
+            done[key] = run_trial(
+                robot,
+                m.objects[o],
+                network_policy(weights, setup.context[i]),
+                start,
+                len(setup.teacher[i]),
+                grip,
+                config,
+            )
+        out = done[key]
         row = trial_row(m, setup, i, out.commands, out.sensed[-1], network, mapping, "embodied")
         rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], config))
         states.append(out.qpos)

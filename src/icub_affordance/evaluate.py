@@ -3,6 +3,12 @@
 Closed loop: the network's own output is its next proprioceptive input, as the robot would move;
 teacher forced: the demonstrated posture is. One trial's RMSE is over its steps and the 16 DoF,
 and stands for the reaction time (paper section 3).
+
+A network that learned the servo targets (config ``network.target: commands``) is compared with
+the servo targets it learned. Its in-silico closed loop feeds each command back as if the arm had
+reached it: true in free space, not where the fingers meet the object and a command lies beyond
+the posture reached. That loop is therefore the plan the network would send unopposed; its own
+closed loop runs through the body, in the robot test (``embodied``).
 """
 
 from __future__ import annotations
@@ -17,10 +23,10 @@ from .train import Materials, context, target_grip
 
 
 def evaluate_network(
-    m: Materials, weights: Weights, network: int, mapping: str, cue: str
+    m: Materials, weights: Weights, network: int, mapping: str, cue: str, target: str
 ) -> tuple[list[dict[str, object]], dict[str, np.ndarray]]:
     """One row per trial, and the hidden activity of every trial for later analysis."""
-    setup = TrialSet.of(m, mapping, cue)
+    setup = TrialSet.of(m, mapping, cue, target)
     rows, hidden = [], {}
     for mode in MODES:
         forced = setup.teacher if mode == "teacher_forced" else None
@@ -45,10 +51,11 @@ class TrialSet:
     trials: list[tuple[int, int, int]]  # (task, object, sequence)
     grips: list[int]  # the grip each trial requires, as an index into Materials.grips
     context: np.ndarray  # (trials, steps-1, 200) the maps' input at every step
-    teacher: np.ndarray  # (trials, steps, 16) the demonstration of the required grip
+    teacher: np.ndarray  # (trials, steps, 16) the demonstration of the required grip (sensed)
+    targets: np.ndarray  # (trials, steps, 16) what the outputs are compared with (network.target)
 
     @classmethod
-    def of(cls, m: Materials, mapping: str, cue: str) -> TrialSet:
+    def of(cls, m: Materials, mapping: str, cue: str, target: str) -> TrialSet:
         n_seq = m.demos.shape[2]
         trials = [
             (task, o, s)
@@ -58,8 +65,15 @@ class TrialSet:
         ]
         grips = [m.grips.index(target_grip(m.objects[o], task, mapping)) for task, o, _ in trials]
         ctx = np.array([context(m, o, task, cue) for task, o, _ in trials])
-        teacher = np.array([m.demos[o, g, s] for (_, o, s), g in zip(trials, grips, strict=True)])
-        return cls(trials, grips, ctx, teacher)
+        pairs = list(zip(trials, grips, strict=True))
+        teacher = np.array([m.demos[o, g, s] for (_, o, s), g in pairs])
+        learned = m.targets(target)
+        targets = (
+            teacher
+            if learned is m.demos
+            else np.array([learned[o, g, s] for (_, o, s), g in pairs])
+        )
+        return cls(trials, grips, ctx, teacher, targets)
 
 
 def describe_trial(
@@ -95,13 +109,13 @@ def trial_row(
     mapping: str,
     mode: str,
 ) -> dict[str, object]:
-    """One trial's row: what it was, its RMSE against the demonstration, and per step.
+    """One trial's row: what it was, its RMSE against what it learned, and per step.
 
     ``final_grip`` is the grip whose demonstrated final posture (same object and sequence) is
     nearer to ``final_posture``.
     """
     _task, o, s = setup.trials[i]
-    sq = (outputs - setup.teacher[i, 1:]) ** 2  # (steps-1, 16)
+    sq = (outputs - setup.targets[i, 1:]) ** 2  # (steps-1, 16)
     nearest = int(np.argmin(np.linalg.norm(m.demos[o, :, s, -1] - final_posture, axis=1)))
     row = describe_trial(m, setup, i, network, mapping, mode) | {
         "held_out": s == m.demos.shape[2] - 1,

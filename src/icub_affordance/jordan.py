@@ -74,11 +74,14 @@ def train_online(
     demos: np.ndarray,
     grips: np.ndarray,
     schedule: tuple[np.ndarray, np.ndarray, np.ndarray],
+    targets: np.ndarray | None = None,
 ) -> tuple[Weights, np.ndarray]:
     """Online back-propagation over a whole schedule, one update per time step (teacher forced).
 
     ``contexts`` (objects, tasks, steps-1, 200): the visual and goal input at each transition;
-    ``demos`` (objects, grips, sequences, steps, 16): the demonstrated postures; ``grips``
+    ``demos`` (objects, grips, sequences, steps, 16): the demonstrated postures, fed back as
+    proprioception; ``targets`` (the same shape): what the motor outputs learn, ``demos``
+    itself when None (the paper: the network outputs the next posture); ``grips``
     (objects, tasks): the target grip of each trial kind; ``schedule``: the (tasks, objects,
     sequences) of every iteration. Returns the trained weights (``weights`` is left as it was)
     and each iteration's RMSE, measured before that sequence's updates.
@@ -101,9 +104,15 @@ def train_online(
         for start, end in equal_runs(contexts[key]):
             run_ends[key][start:end] = end
     rmse = np.empty(len(tasks))
+    demos = np.ascontiguousarray(demos, dtype=np.float64)
+    if targets is None:
+        targets = demos
+    elif targets.shape != demos.shape:
+        raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
+    targets = np.ascontiguousarray(targets, dtype=np.float64)
+    grips = np.ascontiguousarray(grips, dtype=np.int64)
     train_schedule(
-        W1cT, W1pT, b1, W2T, b2, float(learning_rate), contexts, run_ends,
-        np.ascontiguousarray(demos, dtype=np.float64), np.ascontiguousarray(grips, dtype=np.int64),
+        W1cT, W1pT, b1, W2T, b2, float(learning_rate), contexts, run_ends, demos, targets, grips,
         tasks, objects, sequences, rmse,
     )  # fmt: skip
     W1 = np.empty_like(weights.W1)

@@ -33,8 +33,9 @@ import numpy as np
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def train_schedule(
-    W1cT, W1pT, b1, W2T, b2, lr, contexts, run_ends, demos, grips, tasks, objects, sequences, rmse
-):
+    W1cT, W1pT, b1, W2T, b2, lr, contexts, run_ends, demos, targets, grips, tasks, objects,
+    sequences, rmse,
+):  # fmt: skip
     """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
 
     Weights, transposed so that the inner loops run over contiguous rows: ``W1cT`` (200, hidden)
@@ -42,8 +43,10 @@ def train_schedule(
     ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,). ``contexts`` (objects, tasks, steps-1,
     200) the context at each transition; ``run_ends`` (objects, tasks, steps-1) the end of the
     run of equal contexts that starts at each step; ``demos`` (objects, grips, sequences, steps,
-    16) the postures; ``grips`` (objects, tasks) the target grip; ``tasks``, ``objects``,
-    ``sequences`` (iterations,) the schedule.
+    16) the postures fed back as proprioception; ``targets`` (the same shape) what the motor
+    output learns at each next step (``demos`` itself in the paper's reading); ``grips``
+    (objects, tasks) the target grip; ``tasks``, ``objects``, ``sequences`` (iterations,) the
+    schedule.
     """
     n_ctx, n_hid = W1cT.shape
     n_pro = W1pT.shape[0]
@@ -60,6 +63,7 @@ def train_schedule(
         ctx = contexts[o, k]
         ends = run_ends[o, k]
         post = demos[o, grips[o, k], sequences[it]]
+        goal = targets[o, grips[o, k], sequences[it]]
         steps = post.shape[0] - 1
         sq = 0.0
         t = 0
@@ -96,7 +100,7 @@ def train_schedule(
                 # backward: deltas of 0.5 * squared error, with the weights before the update
                 for m in range(n_out):
                     ym = 1.0 / (1.0 + np.exp(-y[m]))
-                    err = ym - post[s + 1, m]
+                    err = ym - goal[s + 1, m]
                     sq += err * err
                     d_out[m] = err * ym * (1.0 - ym)
                 for j in range(n_hid):

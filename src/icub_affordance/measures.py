@@ -53,18 +53,19 @@ def grip_distance(required: np.ndarray, other: np.ndarray) -> float:
 
 
 def measure_network(
-    m: Materials, weights: Weights, network: int, mapping: str, cue: str
+    m: Materials, weights: Weights, network: int, mapping: str, cue: str, target: str
 ) -> list[dict[str, object]]:
     """One row per test trial of one network (both tasks and modes, as ``evaluate``), with every
     measure."""
-    setup = TrialSet.of(m, mapping, cue)
+    setup = TrialSet.of(m, mapping, cue, target)
+    learned = m.targets(target)
     rows = []
     for mode in MODES:
         forced = setup.teacher if mode == "teacher_forced" else None
         out, _ = run_closed_loop(weights, setup.context, setup.teacher[:, 0], forced)
         for i, (_task, o, s) in enumerate(setup.trials):
             g = setup.grips[i]
-            required, other = m.demos[o, g, s], m.demos[o, 1 - g, s]
+            required, other = learned[o, g, s], learned[o, 1 - g, s]
             rmse = float(np.sqrt(((out[i] - required[1:]) ** 2).mean()))
             rows.append(
                 describe_trial(m, setup, i, network, mapping, mode)

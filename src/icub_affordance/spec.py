@@ -88,6 +88,11 @@ CUES: tuple[str, ...] = ("first_step", "all_steps")
 #: that widens with its input's activity, as the Object map's does.
 GOAL_RESPONSES: tuple[str, ...] = ("fixed", "grows")
 
+#: What the motor outputs learn (a reading beyond the paper, the issue "The robot grasps with
+#: what it learned"): the next *sensed* posture, as the paper's networks do, or the servo targets
+#: (*commands*) the demonstrator sent, which press a grasp home where the fingers meet the object.
+TARGETS: tuple[str, ...] = ("sensed", "commands")
+
 #: The two ways the trained networks are tested (paper section 3; MODEL.md section 6).
 MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import N_GOAL, N_VISUAL, Weights, train_online
-from .spec import CATEGORISATION, CUES, GRASPING, MAPPINGS, OBJECTS, TASKS
+from .spec import CATEGORISATION, CUES, GRASPING, MAPPINGS, OBJECTS, TARGETS, TASKS, to_normalised
 
 
 @dataclass(frozen=True)
@@ -26,8 +26,11 @@ class TrainConfig:
     phase1_iterations: int
     init_scale: float  # initial weights uniform in +- this
     categorisation_cue: str  # one of CUES
+    target: str  # one of TARGETS: what the motor outputs learn
 
     def __post_init__(self) -> None:
+        if self.target not in TARGETS:
+            raise ValueError(f"network.target must be one of {TARGETS}, not {self.target!r}")
         if self.categorisation_cue not in CUES:
             raise ValueError(
                 f"categorisation_cue must be one of {CUES}, not {self.categorisation_cue!r}"
@@ -47,6 +50,14 @@ class Materials:
     visual: np.ndarray  # (objects, 100) the visual maps
     goal: np.ndarray  # (objects, tasks, 100) the Goal map's activations
     demos: np.ndarray  # (objects, grips, sequences, steps, 16) normalised postures
+    commands: np.ndarray  # the same shape: the servo targets the demonstrator sent, 0-1
+
+    def targets(self, target: str) -> np.ndarray:
+        """What the motor outputs learn and are compared with (config ``network.target``): the
+        sensed postures (the paper) or the servo targets."""
+        if target not in TARGETS:
+            raise ValueError(f"network.target must be one of {TARGETS}, not {target!r}")
+        return self.demos if target == "sensed" else self.commands
 
     @property
     def n_train_sequences(self) -> int:
@@ -114,9 +125,11 @@ def train_network(
             for o in range(n_objects)
         ]
     )
+    targets = None if config.target == "sensed" else m.targets(config.target)
     trained, rmse = train_online(
-        weights, config.learning_rate, contexts, m.demos, grips, (tasks, objects, sequences)
-    )
+        weights, config.learning_rate, contexts, m.demos, grips, (tasks, objects, sequences),
+        targets,
+    )  # fmt: skip
     curve = {
         "iteration": np.arange(1, config.iterations + 1),
         "phase": np.where(np.arange(config.iterations) < config.phase1_iterations, 1, 2),
@@ -137,7 +150,7 @@ def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
     """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle."""
     from .io import load_npz
 
-    demos = load_npz(demos_path, required=("angles", "objects", "grips"))
+    demos = load_npz(demos_path, required=("angles", "commands_deg", "objects", "grips"))
     objects = tuple(demos["objects"].tolist())
     maps = load_npz(visual_maps_path, required=objects)
     soms = load_npz(soms_path, required=("goal_act", "objects"))
@@ -152,4 +165,7 @@ def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
         visual=np.array([maps[o].ravel() for o in objects], dtype=float),
         goal=soms["goal_act"].reshape(len(objects), len(TASKS), -1),
         demos=demos["angles"],
+        # a servo target may lie beyond a joint's range (pressing against the stop); the
+        # sigmoid outputs cannot, so they learn the range's end
+        commands=np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0),
     )

@@ -1,4 +1,6 @@
-"""One network (the wildcard `net`) drives the simulated arm through every test trial."""
+"""Networks drive the simulated arm through every test trial: the network of the wildcard `net`
+(rule embodied: one job per network), or every network of a run, one after another (rule
+run_embodied: the outputs list them in order)."""
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
@@ -7,23 +9,39 @@ from icub_affordance.io import load_npz, redirect_log, save_npz, write_csv
 from icub_affordance.jordan import Weights
 from icub_affordance.train import load_materials, mapping_of
 
+
+def as_list(paths):
+    return [paths] if isinstance(paths, str) else list(paths)
+
+
 with redirect_log(snakemake.log[0]):
     settings = snakemake.params.network
-    net = int(snakemake.wildcards.net)
+    weights_files = as_list(snakemake.input.weights)
+    trials_files, states_files = as_list(snakemake.output.trials), as_list(snakemake.output.states)
+    if "net" in snakemake.wildcards.keys():
+        nets = [int(snakemake.wildcards.net)]
+    else:
+        nets = list(range(settings["networks"]))
+    if not len(nets) == len(weights_files) == len(trials_files) == len(states_files):
+        raise ValueError(f"networks {nets}, but {len(weights_files)} weights files")
     materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
-    stored = load_npz(snakemake.input.weights, required=("W1", "b1", "W2", "b2"))
-    weights = Weights(**{k: stored[k] for k in ("W1", "b1", "W2", "b2")})
     robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
-    rows, states = embodied_network(
-        robot,
-        materials,
-        weights,
-        net,
-        mapping_of(net, settings["networks"]),
-        settings["categorisation_cue"],
-        DemoConfig(**snakemake.params.demos),
-    )
-    write_csv(snakemake.output.trials, rows)
-    save_npz(snakemake.output.states, qpos=states)
-    rate = sum(row["success"] for row in rows) / len(rows)
-    print(f"network {net}: {rate:.0%} of {len(rows)} trials succeed")
+    for net, weights_path, trials_path, states_path in zip(
+        nets, weights_files, trials_files, states_files, strict=True
+    ):
+        stored = load_npz(weights_path, required=("W1", "b1", "W2", "b2"))
+        weights = Weights(**{k: stored[k] for k in ("W1", "b1", "W2", "b2")})
+        rows, states = embodied_network(
+            robot,
+            materials,
+            weights,
+            net,
+            mapping_of(net, settings["networks"]),
+            settings["categorisation_cue"],
+            settings["target"],
+            DemoConfig(**snakemake.params.demos),
+        )
+        write_csv(trials_path, rows)
+        save_npz(states_path, qpos=states)
+        rate = sum(row["success"] for row in rows) / len(rows)
+        print(f"network {net}: {rate:.0%} of {len(rows)} trials succeed")

@@ -12,12 +12,13 @@ with redirect_log(snakemake.log[0]):
     materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
     n_networks = snakemake.params.network["networks"]
     cue = snakemake.params.network["categorisation_cue"]
+    target = snakemake.params.network["target"]
     rows, hidden = [], {}
     for net, path in enumerate(snakemake.input.weights):
         weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
         weights.check_finite(f"network {net:02d} ({path})")
         net_rows, net_hidden = evaluate_network(
-            materials, weights, net, mapping_of(net, n_networks), cue
+            materials, weights, net, mapping_of(net, n_networks), cue, target
         )
         rows += net_rows
         for mode, h in net_hidden.items():

@@ -15,10 +15,12 @@ with redirect_log(snakemake.log[0]):
     materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
     n_networks = snakemake.params.network["networks"]
     cue = snakemake.params.network["categorisation_cue"]
+    target = snakemake.params.network["target"]
     rows = []
     for net, path in enumerate(snakemake.input.weights):
         weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
-        rows += measure_network(materials, weights, net, mapping_of(net, n_networks), cue)
+        mapping = mapping_of(net, n_networks)
+        rows += measure_network(materials, weights, net, mapping, cue, target)
     trials = pd.DataFrame(rows)
     with atomic_path(snakemake.output.trials) as tmp:
         trials.to_csv(tmp, index=False, float_format="%.6f")
