@@ -68,6 +68,7 @@ DEFAULT_OUTPUTS = [
     *rules.representations.output,
     *rules.figure_hidden.output,
     *expand(list(rules.embodied.output), net=NETWORKS),
+    *(f for row in ROBOT_TESTED if row["run"] != MAIN for f in run_files(row["run"])),
     *rules.embodied_replay.output,
     *rules.embodied_summary.output,
     *rules.embodied_filmstrip.output,

@@ -263,3 +263,109 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
             for plan, group in replay.groupby("plan")
         },
     }
+
+
+# -- the variants (target x hidden units x iterations) ------------------------------------------
+
+#: What tells the robot test's variants apart, the first columns of data/embodied/trials.csv.
+VARIANT_COLUMNS = ("run", "target", "hidden", "iterations")
+
+
+def variant_table(trials: pd.DataFrame) -> pd.DataFrame:
+    """One row per variant: its success on each task, how often the required grip's fingers
+    touched, and how soon (contact time over the trials that touched)."""
+    import pandas as pd
+
+    rows = []
+    for key, df in trials.groupby(list(VARIANT_COLUMNS), sort=False):
+        row = dict(zip(VARIANT_COLUMNS, key, strict=True))
+        row |= {"networks": int(df["network"].nunique()), "trials": len(df)}
+        for task in ("grasping", "categorisation"):
+            mine = df[df["task"] == task]
+            touched = mine["contact_time"].notna()
+            row |= {
+                f"{task}_success": float(mine["success"].astype(float).mean()),
+                f"{task}_contact": float(touched.mean()),
+                f"{task}_contact_time": float(mine.loc[touched, "contact_time"].mean())
+                if touched.any()
+                else float("nan"),
+            }
+        row["success"] = float(df["success"].astype(float).mean())
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def _counts(df: pd.DataFrame, factor: str, measure: str) -> dict[str, dict[str, float]]:
+    return {
+        str(level): {
+            "trials": len(g),
+            "n": int(g[measure].notna().sum()),
+            "mean": float(g[measure].mean()),
+        }
+        for level, g in df.groupby(factor, sort=True)
+    }
+
+
+def _exact_tests(df: pd.DataFrame) -> dict[str, dict[str, float]]:
+    """Fisher's exact test of success against congruency and against size, over trials."""
+    from scipy.stats import fisher_exact
+
+    tests = {}
+    for factor, (first, second) in (
+        ("congruency", ("congruent", "incongruent")),
+        ("size", ("large", "small")),
+    ):
+        table = [
+            [int(g["success"].sum()), int((~g["success"]).sum())]
+            for g in (df[df[factor] == first], df[df[factor] == second])
+        ]
+        odds, p = fisher_exact(table)
+        tests[factor] = {"table": table, "odds_ratio": float(odds), "p": float(p)}
+    return tests
+
+
+def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
+    """Congruency and size effects on the robot's categorisation, per variant: on success (the
+    mixed model of the main analysis over network x object rates, or Fisher's exact test over
+    trials where a congruency x size cell's rate is 0 or 1 and the model has nothing to fit) and
+    on contact time (the mixed model over the network x object means of the trials that touched;
+    none where fewer than two network x object means exist in a congruency x size cell)."""
+    from .stats import mixed_model
+
+    out = {}
+    for run, df in trials.groupby("run", sort=False):
+        df = df[(df["task"] == "categorisation")].copy()
+        df["congruency"] = np.where(
+            df["congruent"].astype(str) == "True", "congruent", "incongruent"
+        )
+        df["success"] = df["success"].astype(bool)
+        cells = df.groupby(["congruency", "size"])["success"].mean()
+        success: dict[str, object] = {
+            "congruency": _counts(df.assign(s=df["success"].astype(float)), "congruency", "s"),
+            "size": _counts(df.assign(s=df["success"].astype(float)), "size", "s"),
+        }
+        if len(cells) < 4 or ((cells == 0) | (cells == 1)).any():
+            success |= {"method": "exact", "tests": _exact_tests(df)}
+        else:
+            success |= {
+                "method": "mixed",
+                "mixed": mixed_model(df.assign(success=df["success"].astype(float)), "success"),
+            }
+        touched = df[df["contact_time"].notna()]
+        contact: dict[str, object] = {
+            "congruency": _counts(df, "congruency", "contact_time"),
+            "size": _counts(df, "size", "contact_time"),
+        }
+        per_cell = touched.groupby(["congruency", "size"])[["network", "object"]].apply(
+            lambda g: len(g.drop_duplicates())
+        )
+        if len(per_cell) < 4 or (per_cell < 2).any():
+            contact |= {
+                "method": "none",
+                "reason": "fewer than two network x object means with contact in a congruency x "
+                "size cell",
+            }
+        else:
+            contact |= {"method": "mixed", "mixed": mixed_model(touched, "contact_time")}
+        out[str(run)] = {"success": success, "contact_time": contact}
+    return out

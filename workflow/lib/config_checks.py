@@ -237,6 +237,36 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
                 f"{sequences} per object and grip. Allowed: 0..{sequences - 1}. Fix: pick a "
                 "sequence in that range."
             )
+    robot = config["robot"]
+    grid = [
+        (t, h, i) for t in robot["target"] for h in robot["hidden"] for i in robot["iterations"]
+    ]
+    network = config["network"]
+    own = (network["target"], network["hidden"], network["iterations"])
+    listed = [own]
+    for i, variant in enumerate(robot["default"]):
+        triple = (variant["target"], variant["hidden"], variant["iterations"])
+        listed.append(triple)
+        if triple not in grid:
+            yield (
+                f"{key(f'robot.default[{i}]')}: {variant} is not a variant of the grid robot.target"
+                f" x robot.hidden x robot.iterations. Allowed: a combination of {robot['target']},"
+                f" {robot['hidden']} and {robot['iterations']}. Fix: add its values to the grid "
+                "or change the entry."
+            )
+    animated = robot["animation"]["variant"]
+    if (animated["target"], animated["hidden"], animated["iterations"]) not in listed:
+        yield (
+            f"{key('robot.animation.variant')}: {animated} is not tested in the default run. "
+            f"Allowed: the config's own networks (target {own[0]}, hidden {own[1]}, iterations "
+            f"{own[2]}) or an entry of robot.default. Fix: pick one of them or add it to "
+            "robot.default."
+        )
+    if robot["animation"]["object"] not in objects:
+        yield (
+            f"{key('robot.animation.object')}: {robot['animation']['object']!r} is not tested in "
+            f"this run (config objects: {objects}). Allowed: one of {objects}. Fix: pick one."
+        )
     embodied = config["figures"]["embodied"]
     if embodied["object"] not in objects:
         yield (

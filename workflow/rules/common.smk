@@ -103,20 +103,61 @@ def reading_runs(known):
     return new, table
 
 
+def robot_variant(target, hidden, iterations):
+    """The network settings of a robot variant: the config's, with phase 1 keeping its share of
+    the iterations (rounded so that phase 2 splits evenly between the tasks)."""
+    network = config["network"]
+    phase1 = round(iterations * network["phase1_iterations"] / network["iterations"])
+    phase1 += (iterations - phase1) % 2
+    return {"target": target, "hidden": hidden, "iterations": iterations, "phase1_iterations": phase1}
+
+
+def robot_runs(known):
+    """The robot test's variants (config `robot`): every combination of target x hidden x
+    iterations, plus the config's own networks (the reference row, the main run). A variant is
+    the run whose config equals the config with its network settings laid over it: an existing
+    run if one has them (the main run for the config's own), else a new one. Returns the new runs
+    (name -> overrides) and the variants table: run, target, hidden, iterations, default (run
+    without robustness)."""
+    robot, network = config["robot"], config["network"]
+    own = (network["target"], network["hidden"], network["iterations"])
+    chosen = {own} | {(v["target"], v["hidden"], v["iterations"]) for v in robot["default"]}
+    grid = itertools.product(robot["target"], robot["hidden"], robot["iterations"])
+    known, new, table = dict(known), {}, []
+    for target, hidden, iterations in dict.fromkeys([own, *grid]):
+        overrides = {"network": robot_variant(target, hidden, iterations)}
+        run_config = merged(config, overrides)
+        run = next((name for name, c in known.items() if c == run_config), None)
+        if run is None:
+            run = f"robot_{target}_h{hidden}_it{iterations}"
+            new[run], known[run] = overrides, run_config
+        default = (target, hidden, iterations) in chosen
+        row = {"run": run, "target": target, "hidden": hidden, "iterations": iterations}
+        table.append(row | {"default": default})
+    return new, table
+
+
 ABLATION, _ablation_overrides = ablation_run()
 SWEEP_RUNS = sweep_runs()
 _EARLIER = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
 READING_RUNS, READINGS = reading_runs(
     {MAIN: config} | {name: merged(config, o) for name, o in _EARLIER.items()}
 )
+ROBOT_RUNS, ROBOT_VARIANTS = robot_runs(
+    {MAIN: config} | {name: merged(config, o) for name, o in {**_EARLIER, **READING_RUNS}.items()}
+)
+# the variants the robot test runs: those of the default run, or every one with robustness
+ROBOT_TESTED = [row for row in ROBOT_VARIANTS if row["default"] or config["robustness"]]
 # in this order, which decides whose demonstrations and SOMs a run shares (stage_run)
-RUNS = {**_EARLIER, **READING_RUNS}
+RUNS = {**_EARLIER, **READING_RUNS, **ROBOT_RUNS}
 CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
 
 # each run of `runs:`, laid over the config: the schema and the rules between keys
-check_runs(config, CONFIG_SCHEMA, taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS])
+check_runs(
+    config, CONFIG_SCHEMA, taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS, *ROBOT_RUNS]
+)
 
 
 def run_dir(run):

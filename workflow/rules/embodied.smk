@@ -6,13 +6,25 @@
 EMBODIED_FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
 
 
+def embodied_weights(wildcards):
+    """The weights the robot test of a run drives with: the wildcard `net`'s (rule embodied, the
+    main run), or every network's of the run (rule run_embodied, one job)."""
+    run = run_of(wildcards)
+    nets = [wildcards.net] if "net" in wildcards.keys() else run_networks(run)
+    return [f"{run_dir(run)}/train/net{net}/weights.npz" for net in nets]
+
+
+def embodied_files(run, name):
+    """A tested variant's per-network robot-test files (`name`: trials.csv or states.npz)."""
+    folder = "data/embodied" if run == MAIN else f"data/runs/{run}/embodied"
+    return [f"{folder}/net{net}/{name}" for net in run_networks(run)]
+
+
 rule embodied:
     """One network drives the MuJoCo arm through every test trial, closed loop on its senses."""
     input:
-        maps=rules.visual_maps.output.maps,
-        soms=rules.soms.output[0],
-        demos=rules.demos.output.demos,
-        weights="data/train/net{net}/weights.npz",
+        unpack(model_inputs),
+        weights=embodied_weights,
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied"),
@@ -20,7 +32,7 @@ rule embodied:
         trials="data/embodied/net{net}/trials.csv",
         states="data/embodied/net{net}/states.npz",
     params:
-        network=settings(config["network"]),
+        network=run_section("network"),
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
     wildcard_constraints:
@@ -36,6 +48,27 @@ rule embodied:
         "data/benchmarks/embodied/net{net}.tsv"
     script:
         "../scripts/embodied.py"
+
+
+# A robot variant's networks drive the robot in one job, one network after another (the main
+# run keeps a job per network, in parallel).
+ROBOT_RUN_NAMES = [row["run"] for row in ROBOT_VARIANTS if row["run"] != MAIN]
+
+
+use rule embodied as run_embodied with:
+    output:
+        trials=[
+            f"data/runs/{{run,{runs_pattern(ROBOT_RUN_NAMES)}}}/embodied/net{net}/trials.csv"
+            for net in NETWORKS
+        ],
+        states=[
+            f"data/runs/{{run,{runs_pattern(ROBOT_RUN_NAMES)}}}/embodied/net{net}/states.npz"
+            for net in NETWORKS
+        ],
+    log:
+        "data/logs/runs/{run}/embodied.log",
+    benchmark:
+        "data/benchmarks/runs/{run}/embodied.tsv"
 
 
 rule embodied_replay:
@@ -65,15 +98,23 @@ rule embodied_replay:
 
 
 rule embodied_summary:
-    """All networks' embodied trials in one table; success rates; the effect of congruency."""
+    """Every tested variant's robot trials in one table; the config's own networks' success by
+    condition and the effect of congruency; each variant's success and contact time, and their
+    congruency and size effects."""
     input:
-        trials=expand("data/embodied/net{net}/trials.csv", net=NETWORKS),
+        trials=[f for row in ROBOT_TESTED for f in embodied_files(row["run"], "trials.csv")],
         replay=rules.embodied_replay.output[0],
         code=script_code("embodied_summary"),
     output:
         trials="data/embodied/trials.csv",
         success="data/embodied/success.csv",
         analysis="data/embodied/analysis.json",
+        variants="data/embodied/variants.csv",
+        effects="data/embodied/effects.json",
+    params:
+        variants=ROBOT_TESTED,
+        networks=len(NETWORKS),
+        main=MAIN,
     threads: 1
     resources:
         mem_mb=500,

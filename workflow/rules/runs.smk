@@ -121,6 +121,9 @@ use rule figure5 as run_figure5 with:
 def run_files(run):
     """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
     common.smk: stage_run), each network's curve and weights, the tests, ANOVAs and Figure 5.
+    A robot variant is tested on the robot only: its in-silico closed loop would feed a servo
+    target back as the posture reached (icub_affordance.evaluate), and the robot test is what it
+    is for.
 
     All of them are inputs of the run's target, not only its last files: Snakemake does not
     remake a missing file that no job still to run needs, so a deleted (or corrupt, and deleted
@@ -141,6 +144,8 @@ def run_files(run):
     if stage_run(run, "soms") == run:
         files += outputs("soms")
     files += outputs("train", net=run_networks(run))
+    if run in ROBOT_RUNS:  # a robot variant: trained, then tested on the robot (see below)
+        return files + embodied_files(run, "trials.csv") + embodied_files(run, "states.npz")
     for name in ("evaluate", "stats", "figure5"):
         files += outputs(name)
     return files

@@ -1,19 +1,44 @@
-"""Join the networks' embodied trials; success by task, congruency and size; its statistics."""
+"""Join every tested variant's robot trials; the config's own networks' success by condition and
+congruency effect; each variant's success and contact time, and their effects."""
 
 import json
 
 import pandas as pd
 
-from icub_affordance.embodied import success_analysis, success_table
+from icub_affordance.embodied import (
+    VARIANT_COLUMNS,
+    success_analysis,
+    success_table,
+    variant_effects,
+    variant_table,
+)
 from icub_affordance.io import atomic_path, redirect_log, write_text
 
 with redirect_log(snakemake.log[0]):
-    trials = pd.concat([pd.read_csv(p) for p in snakemake.input.trials], ignore_index=True)
-    replay = pd.read_csv(snakemake.input.replay)
+    files, n_networks = list(snakemake.input.trials), snakemake.params.networks
+    variants = snakemake.params.variants
+    if len(files) != n_networks * len(variants):
+        raise ValueError(f"{len(files)} trial files for {len(variants)} variants")
+    tables = []
+    for k, variant in enumerate(variants):
+        for path in files[k * n_networks : (k + 1) * n_networks]:
+            table = pd.read_csv(path)
+            for column in reversed(VARIANT_COLUMNS):
+                table.insert(0, column, variant[column])
+            tables.append(table)
+    trials = pd.concat(tables, ignore_index=True)
     with atomic_path(snakemake.output.trials) as tmp:
         trials.to_csv(tmp, index=False, float_format="%.6f")
+    trials = pd.read_csv(snakemake.output.trials)  # as readers see it
+    own = trials[trials["run"] == snakemake.params.main].drop(columns=list(VARIANT_COLUMNS))
+    replay = pd.read_csv(snakemake.input.replay)
     with atomic_path(snakemake.output.success) as tmp:
-        success_table(trials).to_csv(tmp, index=False, float_format="%.4f")
-    analysis = success_analysis(trials, replay)
+        success_table(own).to_csv(tmp, index=False, float_format="%.4f")
+    analysis = success_analysis(own, replay)
     write_text(snakemake.output.analysis, json.dumps(analysis, indent=2) + "\n")
-    print(json.dumps(analysis, indent=2))
+    table = variant_table(trials)
+    with atomic_path(snakemake.output.variants) as tmp:
+        table.to_csv(tmp, index=False, float_format="%.4f")
+    effects = variant_effects(trials)
+    write_text(snakemake.output.effects, json.dumps(effects, indent=2) + "\n")
+    print(table.to_string())
