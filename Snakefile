@@ -72,6 +72,7 @@ DEFAULT_OUTPUTS = [
     *rules.embodied_replay.output,
     *rules.embodied_summary.output,
     *rules.embodied_filmstrip.output,
+    *rules.robot_variants_figure.output,
     *rules.rulegraph.output,
     *(f for row in READINGS for f in reading_files(row["run"])),
     *rules.readings.output,

@@ -296,6 +296,8 @@ def variant_table(trials: pd.DataFrame) -> pd.DataFrame:
 
 
 def _counts(df: pd.DataFrame, factor: str, measure: str) -> dict[str, dict[str, float]]:
+    """Per level of ``factor``: the trials, how many have ``measure`` (contact time: those that
+    touched), and its mean over them."""
     return {
         str(level): {
             "trials": len(g),
@@ -320,7 +322,9 @@ def _exact_tests(df: pd.DataFrame) -> dict[str, dict[str, float]]:
             for g in (df[df[factor] == first], df[df[factor] == second])
         ]
         odds, p = fisher_exact(table)
-        tests[factor] = {"table": table, "odds_ratio": float(odds), "p": float(p)}
+        # an odds ratio of 0 or infinity (a rate of 0 or 1) has no JSON number: None
+        odds = float(odds) if np.isfinite(odds) and odds > 0 else None
+        tests[factor] = {"table": table, "odds_ratio": odds, "p": float(p)}
     return tests
 
 

@@ -309,3 +309,29 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
     right.legend(fontsize=8, frameon=False)
     fig.tight_layout()
     save(fig, path)
+
+
+def robot_variants(variants, path) -> None:
+    """The robot's grasping success (and categorisation success) against training iterations,
+    one line per target and number of hidden units: the learning curve measured on the body."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
+    styles = {"sensed": "--", "commands": "-"}
+    hiddens = sorted(variants["hidden"].unique())
+    colours = {h: f"C{k}" for k, h in enumerate(hiddens)}
+    for ax, task in zip(axes, ("grasping", "categorisation"), strict=True):
+        for (target, hidden), g in variants.groupby(["target", "hidden"], sort=True):
+            g = g.sort_values("iterations")
+            ax.plot(
+                g["iterations"], g[f"{task}_success"], styles.get(target, ":"), marker="o",
+                color=colours[hidden], label=f"{target}, {hidden} hidden",
+            )  # fmt: skip
+        ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
+        ax.set_xscale("log")
+        ax.set_xlabel("training iterations")
+        ax.set_title(f"{task} trials: object held")
+        ax.set_ylim(-0.02, 1.02)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("success (share of trials)")
+    axes[1].legend(fontsize=7, loc="upper left")
+    fig.tight_layout()
+    save(fig, path)

@@ -150,3 +150,46 @@ def interval_direction(replications: int, mean: float, low: float, high: float) 
     if high < 0:
         return "against"
     return "unclear"
+
+
+#: The issue's bar for a controller that grasps: the object held in this share of the grasping
+#: trials, over all four objects.
+GRASPS = 0.9
+
+
+def best_robot_variant(variants) -> dict[str, object]:
+    """The robot variant (a row of ``data/embodied/variants.csv``) that grasps most often; among
+    equals the cheapest (fewest hidden units, then fewest iterations)."""
+    ranked = variants.sort_values(
+        ["grasping_success", "hidden", "iterations"], ascending=[False, True, True], kind="stable"
+    )
+    return ranked.iloc[0].to_dict()
+
+
+def smallest_that_grasps(variants, bar: float = GRASPS) -> dict[str, object] | None:
+    """The cheapest variant (fewest hidden units, then iterations) that holds the object in at
+    least ``bar`` of its grasping trials, or None."""
+    good = variants[variants["grasping_success"] >= bar]
+    if good.empty:
+        return None
+    return good.sort_values(["hidden", "iterations"], kind="stable").iloc[0].to_dict()
+
+
+def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float = ALPHA):
+    """The verdict on ``factor`` (congruency or size) of one variant's robot ``measure``
+    (``effects.json``: success or contact_time), from its mixed model, or its exact test where
+    the model could not be fitted; None where neither exists. The paper's direction: congruent
+    and large objects faster (shorter contact time) and more often held (higher success)."""
+    if effect["method"] == "mixed":
+        term = effect["mixed"][factor]
+        faster_when_paper = term["estimate"] > 0  # incongruent / small minus the other, coded +-1/2
+        direction = faster_when_paper if measure == "contact_time" else term["estimate"] < 0
+        return Verdict(paper_direction=bool(direction), significant=bool(term["p"] < alpha))
+    if effect["method"] == "exact":
+        (a_yes, a_no), (b_yes, b_no) = effect["tests"][factor]["table"]
+        rate_a, rate_b = a_yes / max(a_yes + a_no, 1), b_yes / max(b_yes + b_no, 1)
+        return Verdict(
+            paper_direction=bool(rate_a > rate_b),
+            significant=bool(effect["tests"][factor]["p"] < alpha),
+        )
+    return None

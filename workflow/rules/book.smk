@@ -31,6 +31,9 @@ BOOK_DATA = {
     "readings_summary.csv": "data/readings/summary.csv",
     "readings_replications.csv": "data/readings/replications.csv",
     "readings_effects.png": "data/readings/effects.png",
+    "robot_variants.csv": "data/embodied/variants.csv",
+    "robot_effects.json": "data/embodied/effects.json",
+    "robot_variants.png": "data/figures/robot_variants.png",
 } | {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
@@ -67,6 +70,8 @@ FINDINGS_READS = [
     "soms.npz",
     "readings_summary.csv",
     "measures.json",
+    "robot_variants.csv",
+    "robot_effects.json",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
@@ -80,12 +85,15 @@ FINDINGS_TABLES = [
     "cue_anova",
     "readings_matrix",
     "readings_summary",
+    "robot_variants",
+    "robot_effects",
 ]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
     FINDINGS_TABLES += ["sweep"]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
+    "robot",
 ]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES

@@ -158,3 +158,22 @@ rule embodied_filmstrip:
         "data/benchmarks/embodied_filmstrip.tsv"
     script:
         "../scripts/embodied_filmstrip.py"
+
+
+rule robot_variants_figure:
+    """The robot variants' success against training iterations (plot only)."""
+    input:
+        variants=rules.embodied_summary.output.variants,
+        code=script_code("robot_variants_figure"),
+    output:
+        "data/figures/robot_variants.png",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/embodied/variants_figure.log",
+    benchmark:
+        "data/benchmarks/robot_variants_figure.tsv"
+    script:
+        "../scripts/robot_variants_figure.py"

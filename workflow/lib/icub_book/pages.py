@@ -331,6 +331,100 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     return out, pd.DataFrame(rows)
 
 
+def _variant_label(row: Mapping) -> str:
+    return f"{row['target']}, {int(row['hidden'])} hidden, {int(row['iterations']):,} iterations"
+
+
+def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
+    """One variant's effect of ``factor`` on a robot ``measure``, in words and numbers."""
+    verdict = science.robot_effect_verdict(effect, measure, factor)
+    if verdict is None:
+        return f"not estimated ({effect['reason']})"
+    if effect["method"] == "mixed":
+        term = effect["mixed"][factor]
+        unit = " s" if measure == "contact_time" else ""
+        numbers = f"{term['estimate']:+.3f}{unit}, {text.fmt_ci(term)}, {text.fmt_p(term['p'])}"
+    else:
+        test = effect["tests"][factor]
+        (a, a_no), (b, b_no) = test["table"]
+        if a * (b + b_no) == b * (a + a_no):  # the same rate in both conditions
+            return f"no difference (held {a}/{a + a_no} in both)"
+        numbers = f"held {test['table'][0][0]}/{sum(test['table'][0])} vs "
+        numbers += f"{test['table'][1][0]}/{sum(test['table'][1])}, Fisher's exact "
+        numbers += text.fmt_p(test["p"])
+    return f"{text.paper_agreement(verdict)} ({numbers})"
+
+
+def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """The robot grasps with what it learned: the variants' success, the best and the smallest
+    that grasps, and the congruency and size effects on success and contact time."""
+    variants = pd.read_csv(inputs["robot_variants.csv"])
+    effects = _json(inputs["robot_effects.json"])
+    anova = _json(inputs["anova.json"])
+    own = variants[variants["run"] == "main"].iloc[0]
+    best = science.best_robot_variant(variants)
+    smallest = science.smallest_that_grasps(variants)
+    animated = config["robot"]["animation"]["variant"]
+    out = {
+        "bar": text.pct(science.GRASPS),
+        "n_variants": len(variants),
+        "n_networks": int(own["networks"]),
+        "own_label": _variant_label(own),
+        "own_grasping": text.pct(own["grasping_success"]),
+        "own_categorisation": text.pct(own["categorisation_success"]),
+        "best_label": _variant_label(best),
+        "best_grasping": text.pct(best["grasping_success"]),
+        "best_categorisation": text.pct(best["categorisation_success"]),
+        "best_contact": text.pct(best["grasping_contact"]),
+        "smallest_sentence": (
+            f"The smallest variant that holds the object in at least {text.pct(science.GRASPS)} "
+            f"of its grasping trials is {_variant_label(smallest)} "
+            f"({text.pct(smallest['grasping_success'])})."
+            if smallest is not None
+            else f"No variant tested in this build holds the object in "
+            f"{text.pct(science.GRASPS)} of its grasping trials: the issue's bar is not met."
+        ),
+        "grid_sentence": (
+            "This build tested the whole grid (robustness)."
+            if config["robustness"]
+            else "This build tested only the variants of config `robot.default` besides the "
+            "config's own; `snakemake -c2 --config robustness=True` tests the whole grid."
+        ),
+        "animated_label": _variant_label(animated),
+        "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
+        "rmse_size": text.fmt_mixed(anova["mixed"]["closed_loop"]["size"]),
+    }
+    rows = []
+    for _, row in variants.iterrows():
+        effect = effects[row["run"]]
+        for measure in ("success", "contact_time"):
+            for factor in ("congruency", "size"):
+                rows.append(
+                    {
+                        "variant": _variant_label(row),
+                        "measure": measure.replace("_", " "),
+                        "factor": factor,
+                        "method": effect[measure]["method"],
+                        "result": _robot_effect_text(effect[measure], measure, factor),
+                    }
+                )
+    for key, row in (("own", own), ("best", best)):
+        for measure in ("success", "contact_time"):
+            for factor in ("congruency", "size"):
+                effect = effects[row["run"]][measure]
+                out[f"{key}_{measure}_{factor}"] = _robot_effect_text(effect, measure, factor)
+    table = variants.assign(
+        variant=[_variant_label(r) for _, r in variants.iterrows()],
+        grasping=[text.pct(v) for v in variants["grasping_success"]],
+        categorisation=[text.pct(v) for v in variants["categorisation_success"]],
+        touched=[text.pct(v) for v in variants["grasping_contact"]],
+        contact_time=[
+            f"{v:.2f} s" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
+        ],
+    )[["variant", "networks", "grasping", "categorisation", "touched", "contact_time"]]
+    return out, {"robot_variants": table, "robot_effects": pd.DataFrame(rows)}
+
+
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
     """The sweep's sentences and table, or what the page says when this build did not run it."""
     if not config["robustness"]:
@@ -434,11 +528,13 @@ def page_findings(
     beyond_values, cue_table = beyond(inputs, config, ablation_cue)
     robustness_values, sweep_table = robustness(inputs, config)
     readings_values, readings_tables = readings(inputs, config)
+    grasping_values, grasping_tables = grasping(inputs, config)
     pages = {
         "intro": intro(anova),
         "results": results(anova, curve, config["network"]["categorisation_cue"]),
         "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
         "beyond": beyond_values,
+        "grasping": grasping_values,
         "robustness": robustness_values,
         "readings": readings_values,
         "training": training(inputs, config),
@@ -456,6 +552,7 @@ def page_findings(
             "cue_anova": cue_table,
         }
         | readings_tables
+        | grasping_tables
     )
     if sweep_table is not None:
         tables["sweep"] = sweep_table
