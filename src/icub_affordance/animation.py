@@ -1,0 +1,177 @@
+"""Animations of the robot test: a trial re-run in physics and filmed, then written as a GIF.
+
+A filmstrip shows a few recorded postures; an animation shows the movement itself (the approach,
+the fingers closing, the object lifted or left behind). The states between the ten recorded
+steps are not stored, so the trial is run again and filmed as it runs. MuJoCo is deterministic
+from a reset and rendering only reads the state, so the re-run is the trial that was recorded:
+the pipeline's script checks its outcome against the recorded one.
+
+No science here: only the camera and the file.
+"""
+
+from __future__ import annotations
+
+import os
+import textwrap
+from collections.abc import Sequence
+
+import numpy as np
+
+from .body import Robot
+from .demos import DemoConfig
+from .embodied import Outcome, Policy, run_trial
+from .io import atomic_path
+
+
+def trial_frames(
+    robot: Robot,
+    obj: str,
+    policy: Policy,
+    start: np.ndarray,
+    steps: int,
+    grip: str,
+    config: DemoConfig,
+    camera: str = "closeup",
+    width: int = 240,
+    height: int = 180,
+    every: int = 20,
+) -> tuple[list[np.ndarray], Outcome]:
+    """One trial as ``embodied.run_trial`` runs it, filmed: a frame (height, width, 3, uint8)
+    after the first physics step and every ``every`` steps after it (2 ms each), and one of the
+    state after the lift test; and the trial's Outcome, the same as a run without the camera."""
+    if every < 1:
+        raise ValueError(f"every must be a positive number of physics steps, not {every}")
+    frames: list[np.ndarray] = []
+    count = 0
+
+    def film(r: Robot) -> None:
+        nonlocal count
+        if count % every == 0:
+            frames.append(r.render(camera, width, height))
+        count += 1
+
+    out = run_trial(robot, obj, policy, start, steps, grip, config, watch=film)
+    frames.append(robot.render(camera, width, height))  # after the lift test (or none)
+    return frames, out
+
+
+def _font(size: int):
+    from PIL import ImageFont
+
+    try:
+        return ImageFont.load_default(size=size)
+    except (TypeError, OSError):  # Pillow without FreeType: the fixed bitmap font
+        return ImageFont.load_default()
+
+
+def _wrap(text: str, font, width: int) -> list[str]:
+    """Lines of ``text`` that fit ``width`` pixels in ``font`` (word wrap)."""
+    from PIL import Image, ImageDraw
+
+    draw = ImageDraw.Draw(Image.new("RGB", (1, 1)))
+    lines: list[str] = []
+    for paragraph in text.split("\n"):
+        line = ""
+        for word in paragraph.split():
+            trial = f"{line} {word}".strip()
+            if line and draw.textlength(trial, font=font) > width:
+                lines.append(line)
+                line = word
+            else:
+                line = trial
+        lines.append(line)
+    return lines
+
+
+def compose(
+    panels: dict[str, Sequence[np.ndarray]], font_size: int = 11, gap: int = 4
+) -> list[np.ndarray]:
+    """The panels side by side, each titled, as RGB frames (uint8): frame k shows each panel's
+    frame k, or its last frame when the panel's sequence is shorter."""
+    from PIL import Image, ImageDraw
+
+    if not panels:
+        raise ValueError("no panels to lay out")
+    sequences = {}
+    for title, frames in panels.items():
+        arrays = [np.asarray(f) for f in frames]
+        if not arrays:
+            raise ValueError(f"panel {title!r} has no frames")
+        for f in arrays:
+            if f.ndim != 3 or f.shape[2] != 3 or f.dtype != np.uint8:
+                raise ValueError(
+                    f"panel {title!r}: frames must be RGB uint8 (height, width, 3), not "
+                    f"{f.dtype} {f.shape}"
+                )
+        if len({f.shape for f in arrays}) != 1:
+            raise ValueError(f"panel {title!r}: frames of different sizes")
+        sequences[title] = arrays
+    font = _font(font_size)
+    line_h = font_size + 3
+    sizes = [frames[0].shape[:2] for frames in sequences.values()]
+    titles = [textwrap.dedent(t).strip() for t in sequences]
+    lines = [_wrap(t, font, w - 4) for t, (_h, w) in zip(titles, sizes, strict=True)]
+    top = max(len(ls) for ls in lines) * line_h + 4
+    width = sum(w for _h, w in sizes) + gap * (len(sizes) + 1)
+    height = top + max(h for h, _w in sizes) + gap
+    header = Image.new("RGB", (width, height), "white")
+    draw = ImageDraw.Draw(header)
+    x0 = []
+    x = gap
+    for panel_lines, (_h, w) in zip(lines, sizes, strict=True):
+        x0.append(x)
+        for k, line in enumerate(panel_lines):
+            draw.text((x + 2, 2 + k * line_h), line, fill="black", font=font)
+        x += w + gap
+    background = np.asarray(header)
+    n = max(len(frames) for frames in sequences.values())
+    out = []
+    for k in range(n):
+        canvas = background.copy()
+        for x, frames in zip(x0, sequences.values(), strict=True):
+            f = frames[min(k, len(frames) - 1)]
+            canvas[top : top + f.shape[0], x : x + f.shape[1]] = f
+        out.append(canvas)
+    return out
+
+
+def write_gif(
+    panels: dict[str, Sequence[np.ndarray]],
+    path: str | os.PathLike[str],
+    fps: float = 12.5,
+    hold_s: float = 1.5,
+    colours: int = 128,
+    font_size: int = 11,
+) -> int:
+    """Write the titled panels side by side as an animated GIF that loops forever, atomically
+    (a failed write leaves no file); return the number of frames composed (Pillow stores two
+    identical consecutive frames as one, their times added).
+
+    One palette of ``colours`` for the whole film, from a sample of its frames, so colours do
+    not flicker between frames and the file stays small; the last frame is held ``hold_s``
+    seconds so the outcome can be read. GIF times are in hundredths of a second: ``fps`` is
+    best a divisor of 100 (12.5 or 10, say).
+    """
+    from PIL import Image
+
+    frames = compose(panels, font_size=font_size)
+    images = [Image.fromarray(f) for f in frames]
+    sample_idx = np.unique(np.linspace(0, len(images) - 1, min(len(images), 8)).astype(int))
+    sample = np.concatenate([frames[k] for k in sample_idx], axis=0)
+    palette = Image.fromarray(sample).quantize(colours, method=Image.Quantize.MEDIANCUT)
+    quantised = [im.quantize(palette=palette, dither=Image.Dither.NONE) for im in images]
+    frame_ms = round(1000 / fps)
+    durations = [frame_ms] * len(quantised)
+    durations[-1] += round(1000 * hold_s)
+    with atomic_path(path) as tmp:
+        quantised[0].save(
+            tmp,
+            format="GIF",
+            save_all=True,
+            append_images=quantised[1:],
+            duration=durations,
+            loop=0,
+            optimize=False,
+            disposal=1,
+        )
+    return len(quantised)
