@@ -73,6 +73,7 @@ DEFAULT_OUTPUTS = [
     *rules.embodied_summary.output,
     *rules.embodied_filmstrip.output,
     *rules.robot_variants_figure.output,
+    *rules.robot_animation.output,
     *rules.rulegraph.output,
     *(f for row in READINGS for f in reading_files(row["run"])),
     *rules.readings.output,

@@ -34,6 +34,8 @@ BOOK_DATA = {
     "robot_variants.csv": "data/embodied/variants.csv",
     "robot_effects.json": "data/embodied/effects.json",
     "robot_variants.png": "data/figures/robot_variants.png",
+    "robot_grasps.gif": "data/figures/robot_grasps.gif",
+    "robot_categorise.gif": "data/figures/robot_categorise.gif",
 } | {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }

@@ -177,3 +177,49 @@ rule robot_variants_figure:
         "data/benchmarks/robot_variants_figure.tsv"
     script:
         "../scripts/robot_variants_figure.py"
+
+
+# The variant the book animates (config robot.animation.variant): the config's own networks or
+# one of robot.default, so its robot test is part of the default run.
+_animated = config["robot"]["animation"]["variant"]
+ANIMATED_RUN = next(
+    row["run"]
+    for row in ROBOT_VARIANTS
+    if (row["target"], row["hidden"], row["iterations"])
+    == (_animated["target"], _animated["hidden"], _animated["iterations"])
+)
+
+
+rule robot_animation:
+    """Films of the animated variant's first network of each mapping on the robot: grasping each
+    object, and one object's congruent and incongruent categorisation (render only; each
+    re-run trial is checked against the recorded one)."""
+    input:
+        unpack(lambda w: model_inputs({"run": ANIMATED_RUN})),
+        weights=[
+            f"{run_dir(ANIMATED_RUN)}/train/net{net}/weights.npz" for net in EMBODIED_FILM_NETWORKS
+        ],
+        trials=[embodied_files(ANIMATED_RUN, "trials.csv")[int(net)] for net in EMBODIED_FILM_NETWORKS],
+        scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
+        code=script_code("embodied_animation"),
+    output:
+        grasps="data/figures/robot_grasps.gif",
+        categorise="data/figures/robot_categorise.gif",
+    params:
+        network=settings(RUN_CONFIG[ANIMATED_RUN]["network"]),
+        networks=[int(net) for net in EMBODIED_FILM_NETWORKS],
+        demos=settings(config["demos"]),
+        object_sizes=settings(config["object_sizes_m"]),
+        object=config["robot"]["animation"]["object"],
+        fps=config["robot"]["animation"]["fps"],
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    log:
+        "data/logs/embodied/animation.log",
+    benchmark:
+        "data/benchmarks/robot_animation.tsv"
+    script:
+        "../scripts/embodied_animation.py"
