@@ -81,6 +81,23 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c.update(objects=["small_ball", "big_cube", "small_cube"]),
             ["figures.embodied.object", "big_ball", "objects"],
         ),
+        # a robot variant of the default run outside the grid; an animation of an untested one
+        (
+            lambda c: c["robot"]["default"].append(
+                {"target": "commands", "hidden": 80, "iterations": 12000}
+            ),
+            ["robot.default[1]", "'hidden': 80", "grid", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["animation"].update(
+                variant={"target": "sensed", "hidden": 40, "iterations": 12000}
+            ),
+            ["robot.animation.variant", "'hidden': 40", "robot.default", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["animation"].update(object="pear"),
+            ["robot.animation.object", "pear", "objects"],
+        ),
     ],
 )
 def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change, words):

@@ -82,6 +82,23 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
 
 
 @pytest.mark.slow
+def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, tmp_path):
+    """A variant added to robot.default trains its networks and drives the robot (a job each),
+    then only the summaries and pages that show the variants rerun: nothing of the main run."""
+    config = load_test_config()
+    config["robot"]["hidden"] = [10, 20]
+    config["robot"]["default"].append({"target": "sensed", "hidden": 20, "iterations": 1200})
+    path = tmp_path / "robot.yaml"
+    path.write_text(yaml.safe_dump(config))
+    result = run_snakemake(built, "-n", config=path)
+    jobs = planned(result)
+    assert jobs.pop("run_train") == jobs.pop("run_embodied") == 1
+    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    assert set(jobs) <= shown, jobs
+    assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
+
+
+@pytest.mark.slow
 def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tmp_path):
     path = tmp_path / "runs.yaml"
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))

@@ -1,0 +1,130 @@
+"""The robot variants' summary: success and contact per variant, and the congruency and size
+effects on success (mixed model, or Fisher's exact test where a rate sits at 0 or 1) and contact
+time, recomputed by hand on made-up trials."""
+
+from math import comb
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from icub_affordance.embodied import variant_effects, variant_table
+from icub_affordance.findings import (
+    best_robot_variant,
+    robot_effect_verdict,
+    smallest_that_grasps,
+)
+
+OBJECTS = {  # object: (size, congruent under mapping A)
+    "big_ball": ("large", True),
+    "small_ball": ("small", False),
+    "big_cube": ("large", False),
+    "small_cube": ("small", True),
+}
+
+
+def trials(run: str, success, contact, networks: int = 4) -> pd.DataFrame:
+    """Categorisation and grasping trials of one variant; ``success(net, obj)`` and
+    ``contact(net, obj)`` give each network x object's outcome (contact: seconds or NaN)."""
+    rows = []
+    for net in range(networks):
+        mapping = "A" if net < networks // 2 else "B"
+        for task in ("grasping", "categorisation"):
+            for obj, (size, congruent_a) in OBJECTS.items():
+                congruent = congruent_a if mapping == "A" else not congruent_a
+                for seq in range(2):
+                    rows.append(
+                        {
+                            "run": run, "target": "commands", "hidden": 10, "iterations": 1200,
+                            "network": net, "mapping": mapping, "task": task, "object": obj,
+                            "size": size, "sequence": seq,
+                            "congruent": "" if task == "grasping" else str(congruent),
+                            "success": bool(success(net, obj)),
+                            "contact_time": contact(net, obj),
+                        }
+                    )  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def fisher_two_sided(table) -> float:
+    """Fisher's exact test by the hypergeometric sum: every table with the same margins that is
+    no more likely than the one observed."""
+    (a, b), (c, d) = table
+    row1, col1, n = a + b, a + c, a + b + c + d
+
+    def prob(x):
+        return comb(col1, x) * comb(n - col1, row1 - x) / comb(n, row1)
+
+    observed = prob(a)
+    lo, hi = max(0, row1 - (n - col1)), min(row1, col1)
+    return sum(prob(x) for x in range(lo, hi + 1) if prob(x) <= observed * (1 + 1e-7))
+
+
+def test_the_variant_table_counts_success_and_contact_by_task():
+    df = trials(
+        "v",
+        success=lambda net, obj: obj == "big_ball",
+        contact=lambda net, obj: 1.5 if obj.startswith("big") else np.nan,
+    )
+    row = variant_table(df).iloc[0]
+    assert row["networks"] == 4 and row["trials"] == 4 * 2 * 4 * 2
+    assert row["grasping_success"] == pytest.approx(0.25)
+    assert row["categorisation_success"] == pytest.approx(0.25)
+    assert row["grasping_contact"] == pytest.approx(0.5)
+    assert row["grasping_contact_time"] == pytest.approx(1.5)
+
+
+def test_a_rate_at_zero_gives_the_exact_test_recomputed_by_hand():
+    # only congruent big objects are held: the incongruent small cells sit at 0
+    df = trials(
+        "v",
+        success=lambda net, obj: obj == "big_ball" and net < 2 or obj == "big_cube" and net >= 2,
+        contact=lambda net, obj: np.nan,
+    )
+    effect = variant_effects(df)["v"]
+    success = effect["success"]
+    assert success["method"] == "exact"
+    cat = df[df["task"] == "categorisation"]
+    for factor, first in (("congruency", "True"), ("size", "large")):
+        column = cat["congruent"] if factor == "congruency" else cat["size"]
+        a = cat[column == first]["success"]
+        b = cat[column != first]["success"]
+        table = [[int(a.sum()), int((~a).sum())], [int(b.sum()), int((~b).sum())]]
+        assert success["tests"][factor]["table"] == table
+        assert success["tests"][factor]["p"] == pytest.approx(fisher_two_sided(table), rel=1e-9)
+    assert robot_effect_verdict(success, "success", "congruency").paper_direction
+    assert effect["contact_time"]["method"] == "none"  # nothing touched
+
+
+def test_rates_between_zero_and_one_give_the_mixed_model_and_contact_time_its_own():
+    # every congruency x size cell has networks that hold the object and networks that do not
+    order = list(OBJECTS)
+    held = {(n, o): (n + order.index(o)) % 2 == 0 for n in range(6) for o in OBJECTS}
+
+    def contact(net, obj):  # incongruent 0.2 s slower, small 0.1 s slower, plus jitter
+        congruent = OBJECTS[obj][1] if net < 3 else not OBJECTS[obj][1]
+        return 1.5 + 0.2 * (not congruent) + 0.1 * (OBJECTS[obj][0] == "small") + 0.01 * net
+
+    df = trials("v", success=lambda n, o: held[(n, o)], contact=contact, networks=6)
+    effect = variant_effects(df)["v"]
+    assert effect["success"]["method"] == "mixed"
+    times = effect["contact_time"]
+    assert times["method"] == "mixed"
+    assert times["mixed"]["congruency"]["estimate"] == pytest.approx(0.2, abs=1e-6)
+    assert times["mixed"]["size"]["estimate"] == pytest.approx(0.1, abs=1e-6)
+    verdict = robot_effect_verdict(times, "contact_time", "congruency")
+    assert verdict.paper_direction and verdict.significant
+
+
+def test_the_best_and_the_smallest_variant_that_grasps():
+    variants = pd.DataFrame(
+        {
+            "run": ["a", "b", "c", "d"],
+            "hidden": [10, 40, 20, 40],
+            "iterations": [12000, 12000, 48000, 48000],
+            "grasping_success": [0.1, 0.95, 0.95, 0.5],
+        }
+    )
+    assert best_robot_variant(variants)["run"] == "c"  # ties: fewer hidden units
+    assert smallest_that_grasps(variants)["run"] == "c"
+    assert smallest_that_grasps(variants, bar=0.99) is None
