@@ -7,7 +7,7 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import demo_config
+from conftest import demo_config, load_test_config
 
 from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
 from icub_affordance.demos import grip_in_contact, grip_used
@@ -110,9 +110,21 @@ def test_embodied_trials_have_the_evaluation_columns_and_the_physical_outcome(bu
     missing = set(evaluation.columns) - set(embodied.columns)
     assert not missing, missing
     assert {"success", "grip_used", "final_error"} <= set(embodied.columns)
-    # one embodied trial per closed-loop trial of the evaluation
+    # the contract: which variant each row is, and its contact time
+    assert {"run", "target", "hidden", "iterations", "contact_time"} <= set(embodied.columns)
+    variants = pd.read_csv(data / "embodied" / "variants.csv")
+    assert list(embodied["run"].unique()) == list(variants["run"]) and "main" in set(
+        variants["run"]
+    )
+    # for every tested variant, one robot trial per closed-loop trial of the evaluation
     closed = evaluation[evaluation["mode"] == "closed_loop"]
-    assert len(embodied) == len(closed)
+    assert (embodied.groupby("run").size() == len(closed)).all()
+    main = embodied[embodied["run"] == "main"]
+    own = load_test_config()["network"]
+    assert set(main["target"]) == {own["target"]} and set(main["hidden"]) == {own["hidden"]}
+    assert set(main["iterations"]) == {own["iterations"]}
+    # contact before the end of the trial, and none where the required fingers never all touched
+    assert embodied["contact_time"].dropna().between(0, 2.6).all()
     assert set(embodied["mode"]) == {"embodied"}
     assert set(embodied["grip_used"]) <= {"power", "precision", "none"}
     assert embodied["final_error"].between(0, 1).all()
