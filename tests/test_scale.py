@@ -178,7 +178,14 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         and config["soms"]["goal_response"] in readings["goal_response"]
         and (lr, hidden) == (net["learning_rate"], net["hidden"])
     )
-    assert counts["run_train"] == counts["run_measures"] + points - shared
+    # and every robot variant but the config's own: trained, then tested on the robot only
+    robot = config["robot"]
+    variants = len(robot["target"]) * len(robot["hidden"]) * len(robot["iterations"])
+    own = (net["target"], net["hidden"], net["iterations"]) in itertools.product(
+        robot["target"], robot["hidden"], robot["iterations"]
+    )
+    assert counts["run_embodied"] == variants - own
+    assert counts["run_train"] == counts["run_measures"] + points - shared + variants - own
     assert counts["run_evaluate"] - 1 == counts["run_stats"] - 1 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
     assert counts["book"] == 1

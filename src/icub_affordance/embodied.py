@@ -328,14 +328,23 @@ def _exact_tests(df: pd.DataFrame) -> dict[str, dict[str, float]]:
     return tests
 
 
+def _mixed_or_none(df: pd.DataFrame, measure: str) -> dict | None:
+    """The mixed model of ``measure``, or None where its design is singular (a mapping x
+    congruency x size combination with no network x object mean, say)."""
+    from .stats import mixed_model
+
+    try:
+        return mixed_model(df, measure)
+    except (np.linalg.LinAlgError, ValueError):
+        return None
+
+
 def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     """Congruency and size effects on the robot's categorisation, per variant: on success (the
     mixed model of the main analysis over network x object rates, or Fisher's exact test over
     trials where a congruency x size cell's rate is 0 or 1 and the model has nothing to fit) and
     on contact time (the mixed model over the network x object means of the trials that touched;
     none where fewer than two network x object means exist in a congruency x size cell)."""
-    from .stats import mixed_model
-
     out = {}
     for run, df in trials.groupby("run", sort=False):
         df = df[(df["task"] == "categorisation")].copy()
@@ -348,13 +357,13 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
             "congruency": _counts(df.assign(s=df["success"].astype(float)), "congruency", "s"),
             "size": _counts(df.assign(s=df["success"].astype(float)), "size", "s"),
         }
-        if len(cells) < 4 or ((cells == 0) | (cells == 1)).any():
+        mixed = None
+        if len(cells) == 4 and not ((cells == 0) | (cells == 1)).any():
+            mixed = _mixed_or_none(df.assign(success=df["success"].astype(float)), "success")
+        if mixed is None:
             success |= {"method": "exact", "tests": _exact_tests(df)}
         else:
-            success |= {
-                "method": "mixed",
-                "mixed": mixed_model(df.assign(success=df["success"].astype(float)), "success"),
-            }
+            success |= {"method": "mixed", "mixed": mixed}
         touched = df[df["contact_time"].notna()]
         contact: dict[str, object] = {
             "congruency": _counts(df, "congruency", "contact_time"),
@@ -363,13 +372,16 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
         per_cell = touched.groupby(["congruency", "size"])[["network", "object"]].apply(
             lambda g: len(g.drop_duplicates())
         )
-        if len(per_cell) < 4 or (per_cell < 2).any():
+        mixed = None
+        if len(per_cell) == 4 and (per_cell >= 2).all():
+            mixed = _mixed_or_none(touched, "contact_time")
+        if mixed is None:
             contact |= {
                 "method": "none",
-                "reason": "fewer than two network x object means with contact in a congruency x "
-                "size cell",
+                "reason": "too few trials with contact to fit the mixed model (fewer than two "
+                "network x object means in a congruency x size cell, or a singular design)",
             }
         else:
-            contact |= {"method": "mixed", "mixed": mixed_model(touched, "contact_time")}
+            contact |= {"method": "mixed", "mixed": mixed}
         out[str(run)] = {"success": success, "contact_time": contact}
     return out

@@ -387,8 +387,8 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "grid_sentence": (
             "This build tested the whole grid (robustness)."
             if config["robustness"]
-            else "This build tested only the variants of config `robot.default` besides the "
-            "config's own; `snakemake -c2 --config robustness=True` tests the whole grid."
+            else "This build tested only the config's own networks and the variants that config "
+            "robot.default lists; a build with robustness=True tests the whole grid."
         ),
         "animated_label": _variant_label(animated),
         "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
