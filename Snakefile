@@ -70,6 +70,7 @@ DEFAULT_OUTPUTS = [
     *expand(list(rules.embodied.output), net=NETWORKS),
     *(f for row in ROBOT_TESTED if row["run"] != MAIN for f in run_files(row["run"])),
     *rules.embodied_replay.output,
+    *rules.embodied_tolerance.output,
     *rules.embodied_summary.output,
     *rules.embodied_filmstrip.output,
     *rules.robot_variants_figure.output,

@@ -128,6 +128,15 @@ def test_embodied_trials_have_the_evaluation_columns_and_the_physical_outcome(bu
     assert set(embodied["mode"]) == {"embodied"}
     assert set(embodied["grip_used"]) <= {"power", "precision", "none"}
     assert embodied["final_error"].between(0, 1).all()
+    # the palm's distance from the demonstrator's: measured in every trial, metres not mm apart
+    assert embodied["palm_error_mm"].between(0, 500).all()
+    # the body's tolerance: every object's unshifted mean plan holds it, each level's trials
+    tolerance = pd.read_csv(data / "embodied" / "tolerance.csv")
+    settings = load_test_config()["robot"]["tolerance"]
+    assert tolerance.groupby("noise").size().to_dict() == {
+        noise: 4 * (settings["repeats"] if noise else 1) for noise in settings["noise"]
+    }
+    assert tolerance.loc[tolerance["noise"] == 0, "success"].all()
     # success is exactly: the required grip's fingers touch, and the object rose with the hand
     config = demo_config()
     touch = embodied[[f"touch_{n}" for n in ("thumb", "index", "middle", "ring", "little", "palm")]]

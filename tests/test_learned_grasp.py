@@ -27,9 +27,13 @@ from icub_affordance.body import (
 )
 from icub_affordance.demos import DEMO_S, merge_demos, move, object_demos
 from icub_affordance.embodied import (
+    body_tolerance,
+    demo_palms,
     embodied_network,
     network_policy,
     outcome_columns,
+    reference_palms,
+    replay_policy,
     run_trial,
 )
 from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
@@ -197,10 +201,9 @@ def scene() -> Robot:
 
 
 @pytest.fixture(scope="module")
-def materials(scene, tmp_path_factory) -> Materials:
+def demos(scene) -> dict[str, np.ndarray]:
     """The pipeline's demonstrations (the config's seed and demo settings; the small test config
-    changes neither), made here in a few seconds, read by ``load_materials`` beside stand-in
-    visual and Goal maps (the robot tests never look at those)."""
+    changes neither), made here in a few seconds."""
     config = load_config()
     parts = {
         obj: object_demos(
@@ -208,8 +211,15 @@ def materials(scene, tmp_path_factory) -> Materials:
         )  # fmt: skip
         for obj in OBJECT_NAMES
     }
+    return merge_demos(parts)
+
+
+@pytest.fixture(scope="module")
+def materials(demos, tmp_path_factory) -> Materials:
+    """The demonstrations read by ``load_materials`` beside stand-in visual and Goal maps (the
+    robot tests never look at those)."""
     folder = tmp_path_factory.mktemp("materials")
-    save_npz(folder / "demos.npz", **merge_demos(parts))
+    save_npz(folder / "demos.npz", **demos)
     rng = np.random.default_rng(0)
     save_npz(folder / "maps.npz", **{o: rng.integers(0, 2, (10, 10)) for o in OBJECT_NAMES})
     save_npz(
@@ -243,7 +253,7 @@ def test_a_network_that_outputs_the_servo_targets_grasps(scene, materials):
                 return plan[t + 1]
 
             out = run_trial(scene, obj, perfect, m.demos[o, g, s, 0], len(plan), grip, config)
-            columns = outcome_columns(out, grip, m.demos[o, g, s, -1], config)
+            columns = outcome_columns(out, grip, m.demos[o, g, s, -1], None, config)
             success[kind][obj, grip, s] = columns["success"]
             if kind == "commands":
                 np.testing.assert_array_equal(out.commands, plan[1:])  # what it sent
@@ -306,7 +316,7 @@ def test_a_trial_that_never_touches_has_no_contact_time(robot):
     start = to_normalised(initial_posture_deg())
     out = run_trial(robot, "big_ball", lambda t, _p: start, start, 10, "power", demo_config())
     assert np.isnan(out.contact_time)
-    assert np.isnan(outcome_columns(out, "power", start, demo_config())["contact_time"])
+    assert np.isnan(outcome_columns(out, "power", start, None, demo_config())["contact_time"])
 
 
 @pytest.mark.slow
@@ -329,6 +339,7 @@ def test_the_memo_of_identical_trials_changes_no_result(scene, materials):
     rows, states = embodied_network(scene, small, weights, 3, mapping, CUE, target, config)
     setup = TrialSet.of(small, mapping, CUE, target)
     assert len(rows) == len(setup.trials) == len(TASKS) * 2 * 5
+    palms = reference_palms(demo_palms(scene, small.demos, small.objects))
     expected_rows, expected_states = [], []
     for i, (_task, o, _s) in enumerate(setup.trials):
         grip = small.grips[setup.grips[i]]
@@ -342,7 +353,8 @@ def test_the_memo_of_identical_trials_changes_no_result(scene, materials):
             config,
         )
         row = trial_row(small, setup, i, out.commands, out.sensed[-1], 3, mapping, "embodied")
-        expected_rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], config))
+        ref = palms[o, setup.grips[i]]
+        expected_rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], ref, config))
         expected_states.append(out.qpos)
     pd.testing.assert_frame_equal(pd.DataFrame(rows), pd.DataFrame(expected_rows), check_exact=True)
     np.testing.assert_array_equal(states, np.array(expected_states))
@@ -350,3 +362,48 @@ def test_the_memo_of_identical_trials_changes_no_result(scene, materials):
     table = pd.DataFrame(rows)
     assert table["contact_time"].notna().any()
     assert (table["task"] == TASKS[GRASPING]).sum() == 10
+
+
+# -- how precisely the arm must move -----------------------------------------------------------
+
+
+@pytest.mark.slow
+def test_the_palm_measure_is_where_the_replayed_demo_put_the_palm(scene, materials):
+    """``demo_palms`` (forward kinematics of a demonstration's final sensed posture) agrees with
+    the palm the physics reached when the demonstration's servo targets are replayed, within a
+    millimetre; and the reference is the mean over the training sequences only."""
+    m, config = materials, demo_config()
+    palms = demo_palms(scene, m.demos, m.objects)
+    assert palms.shape == (4, 2, 5, 3)
+    for o, obj in enumerate(m.objects):
+        g = m.grips.index(OBJECTS[obj].natural_grip)
+        for s in (0, 4):
+            plan = m.commands[o, g, s]
+            out = run_trial(scene, obj, replay_policy(plan), m.demos[o, g, s, 0], 10, m.grips[g],
+                            config)  # fmt: skip
+            assert np.linalg.norm(out.palm - palms[o, g, s]) < 1e-3, (obj, s)
+    np.testing.assert_allclose(reference_palms(palms), palms[:, :, :4].mean(axis=2))
+    # the demonstrations of one grasp differ in their palms by millimetres, not centimetres
+    spread = np.linalg.norm(palms - palms.mean(axis=2, keepdims=True), axis=-1)
+    assert spread.max() < 0.01
+
+
+@pytest.mark.slow
+def test_the_mean_plan_grasps_and_offsets_are_seeded(scene, demos):
+    """The body's tolerance test: unshifted, the demonstrations' mean plan of each object's
+    natural grasp holds the object, its palm within millimetres of the demonstrator's; every
+    offset comes from the seed (the same call gives the same rows) and moves the palm."""
+    config = demo_config()
+    rows = pd.DataFrame(body_tolerance(scene, demos, [0.0, 0.02], 2, 7, config))
+    assert len(rows) == 4 * (1 + 2)
+    exact = rows[rows["noise"] == 0.0]
+    assert exact["success"].all() and (exact["offset"] == 0).all()
+    assert (exact["grip"] == [OBJECTS[o].natural_grip for o in exact["object"]]).all()
+    assert exact["palm_error_mm"].max() < 5.0
+    shifted = rows[rows["noise"] == 0.02]
+    assert (shifted["offset"] > 0).all() and shifted["offset"].nunique() == len(shifted)
+    assert (shifted["palm_error_mm"].to_numpy() != np.repeat(exact["palm_error_mm"], 2)).all()
+    again = pd.DataFrame(body_tolerance(scene, demos, [0.0, 0.02], 2, 7, config))
+    pd.testing.assert_frame_equal(rows, again, check_exact=True)
+    other = pd.DataFrame(body_tolerance(scene, demos, [0.02], 1, 8, config))
+    assert not np.isin(other["offset"], shifted["offset"]).any()

@@ -8,11 +8,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from icub_affordance.embodied import variant_effects, variant_table
+from icub_affordance.embodied import tolerance_table, variant_effects, variant_table
 from icub_affordance.findings import (
     best_robot_variant,
     robot_effect_verdict,
     smallest_that_grasps,
+    tolerated_noise,
 )
 
 OBJECTS = {  # object: (size, congruent under mapping A)
@@ -41,6 +42,7 @@ def trials(run: str, success, contact, networks: int = 4) -> pd.DataFrame:
                             "congruent": "" if task == "grasping" else str(congruent),
                             "success": bool(success(net, obj)),
                             "contact_time": contact(net, obj),
+                            "palm_error_mm": 2.0 + net + (10.0 if task == "categorisation" else 0),
                         }
                     )  # fmt: skip
     return pd.DataFrame(rows)
@@ -72,6 +74,8 @@ def test_the_variant_table_counts_success_and_contact_by_task():
     assert row["categorisation_success"] == pytest.approx(0.25)
     assert row["grasping_contact"] == pytest.approx(0.5)
     assert row["grasping_contact_time"] == pytest.approx(1.5)
+    # the median palm error of the grasping trials only: networks at 2, 3, 4, 5 mm
+    assert row["grasping_palm_error_mm"] == pytest.approx(3.5)
 
 
 def test_a_rate_at_zero_gives_the_exact_test_recomputed_by_hand():
@@ -128,3 +132,23 @@ def test_the_best_and_the_smallest_variant_that_grasps():
     assert best_robot_variant(variants)["run"] == "c"  # ties: fewer hidden units
     assert smallest_that_grasps(variants)["run"] == "c"
     assert smallest_that_grasps(variants, bar=0.99) is None
+
+
+def test_the_tolerance_table_and_the_largest_noise_the_body_forgives():
+    """Made-up tolerance trials: per noise level the share held, the median palm error and each
+    object's share; the tolerated noise is the largest level held in at least 90%."""
+    held = {0.0: [1, 1, 1, 1], 0.005: [1, 1, 1, 1, 1, 1, 1, 1, 1, 0], 0.01: [1, 0, 0, 0]}
+    rows = []
+    for noise, outcomes in held.items():
+        for k, ok in enumerate(outcomes):
+            rows.append({"object": ["big_ball", "small_ball"][k % 2], "noise": noise,
+                         "success": bool(ok), "palm_error_mm": 1000 * noise + k})  # fmt: skip
+    table = tolerance_table(pd.DataFrame(rows))
+    assert table["noise"].tolist() == [0.0, 0.005, 0.01]
+    assert table["trials"].tolist() == [4, 10, 4]
+    assert table["success"].tolist() == pytest.approx([1.0, 0.9, 0.25])
+    assert table["palm_error_mm"].tolist() == pytest.approx([1.5, 9.5, 11.5])
+    assert table["small_ball_success"].tolist() == pytest.approx([1.0, 0.8, 0.0])
+    assert tolerated_noise(table)["noise"] == 0.005
+    assert tolerated_noise(table, bar=0.95)["noise"] == 0.0
+    assert tolerated_noise(table, bar=1.01) is None

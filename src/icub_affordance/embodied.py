@@ -24,7 +24,16 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .body import DOF_MAX_DEG, DOF_MIN_DEG, TOUCH_NAMES, Robot, to_degrees, to_normalised
+from .body import (
+    DOF_MAX_DEG,
+    DOF_MIN_DEG,
+    N_ARM_DOF,
+    OBJECTS,
+    TOUCH_NAMES,
+    Robot,
+    to_degrees,
+    to_normalised,
+)
 from .demos import DEMO_S, DemoConfig, grip_in_contact, grip_used, lift_arm, move
 from .evaluate import TrialSet, trial_row
 from .jordan import Weights, network_step
@@ -45,6 +54,7 @@ class Outcome:
     lift_m: float  # how far the object rose with the lifted hand; NaN when not lifted
     qpos: np.ndarray  # (steps + 1, nq) the state at every step and after the lift, for pictures
     contact_time: float  # s from the start until the required grip's fingers all touch; NaN: never
+    palm: np.ndarray  # (3,) m, the palm at the end of the movement, from the object's start
 
 
 class _ContactClock:
@@ -84,7 +94,8 @@ def run_trial(
     robot.reset()
     robot.place_object(obj)
     robot.set_posture_deg(to_degrees(start))
-    height = robot.object_position(obj)[2]
+    origin = robot.object_position(obj).copy()
+    height = origin[2]
     step_s = DEMO_S / (steps - 1)  # the demonstrations' time between recorded steps
     sensed, commands, states = [sensed_posture(robot)], [], [robot.data.qpos.copy()]
     clock = _ContactClock(robot, grip, config.touch_threshold)
@@ -96,12 +107,15 @@ def run_trial(
         sensed.append(sensed_posture(robot))
         states.append(robot.data.qpos.copy())
     touch = robot.touch()
+    palm = robot.palm_pose()[0] - origin
     lift = float("nan")
     if grip_in_contact(grip, touch, config.touch_threshold):
         lift_arm(robot, config.lift_m)
         lift = float(robot.object_position(obj)[2] - height)
     states.append(robot.data.qpos.copy())
-    return Outcome(np.array(commands), np.array(sensed), touch, lift, np.array(states), clock.time)
+    return Outcome(
+        np.array(commands), np.array(sensed), touch, lift, np.array(states), clock.time, palm
+    )
 
 
 def network_policy(weights: Weights, context: np.ndarray) -> Policy:
@@ -119,13 +133,48 @@ def replay_policy(plan: np.ndarray) -> Policy:
     return lambda t, _proprio: plan[t + 1]
 
 
-def outcome_columns(out: Outcome, grip: str, target_final: np.ndarray, config: DemoConfig):
-    """What a roboticist measures of one trial."""
+def demo_palms(robot: Robot, demos: np.ndarray, objects: tuple[str, ...]) -> np.ndarray:
+    """Where each demonstration put the palm, from the object's start (objects, grips,
+    sequences, 3; m): its final sensed posture through the forward kinematics.
+
+    Measured in the task's space, not in joint angles: the arm has 7 joints for a 6-dof palm pose,
+    and the demonstrations of one grasp differ by several degrees per joint while their palms lie
+    within millimetres of each other.
+    """
+    palms = np.empty(demos.shape[:3] + (3,))
+    for o, obj in enumerate(objects):
+        robot.reset()
+        robot.place_object(obj)
+        origin = robot.object_position(obj).copy()
+        for key in np.ndindex(*demos.shape[1:3]):
+            robot.set_posture_deg(to_degrees(demos[(o, *key, -1)]))
+            palms[(o, *key)] = robot.palm_pose()[0] - origin
+    return palms
+
+
+def reference_palms(palms: np.ndarray) -> np.ndarray:
+    """Per object and grip the demonstrator's palm position: the mean over the training
+    sequences (the last is held out)."""
+    return palms[:, :, :-1].mean(axis=2)
+
+
+def outcome_columns(
+    out: Outcome,
+    grip: str,
+    target_final: np.ndarray,
+    palm_ref: np.ndarray | None,
+    config: DemoConfig,
+):
+    """What a roboticist measures of one trial; ``palm_ref`` (3,) is where the demonstrator put
+    the palm for this object and grip (``reference_palms``), None where nobody asks."""
     held = bool(out.lift_m >= config.min_lift_m)  # NaN (not lifted) compares False
     return {
         "success": bool(grip_in_contact(grip, out.touch, config.touch_threshold) and held),
         "grip_used": grip_used(out.touch, config.touch_threshold),
         "final_error": float(np.sqrt(np.mean((out.sensed[-1] - target_final) ** 2))),
+        "palm_error_mm": float("nan")
+        if palm_ref is None
+        else float(1000 * np.linalg.norm(out.palm - palm_ref)),
         "lift_m": out.lift_m,
         "contact_time": out.contact_time,
     } | {name: float(v) for name, v in zip(TOUCH_NAMES, out.touch, strict=True)}
@@ -150,6 +199,7 @@ def embodied_network(
     deterministic from a reset), and the others reuse it.
     """
     setup = TrialSet.of(m, mapping, cue, target)
+    palms = reference_palms(demo_palms(robot, m.demos, m.objects))
     rows, states, done = [], [], {}
     for i, (_task, o, _s) in enumerate(setup.trials):
         grip = m.grips[setup.grips[i]]
@@ -167,7 +217,8 @@ def embodied_network(
             )
         out = done[key]
         row = trial_row(m, setup, i, out.commands, out.sensed[-1], network, mapping, "embodied")
-        rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], config))
+        ref = palms[o, setup.grips[i]]
+        rows.append(row | outcome_columns(out, grip, setup.teacher[i, -1], ref, config))
         states.append(out.qpos)
     return rows, np.array(states)
 
@@ -183,6 +234,7 @@ def replay_demos(
         "sensed_postures": demos["angles"],
     }
     objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
+    palms = reference_palms(demo_palms(robot, demos["angles"], tuple(objects)))
     for o, obj in enumerate(objects):
         for g, grip in enumerate(grips):
             for s in range(demos["angles"].shape[2]):
@@ -193,9 +245,48 @@ def replay_demos(
                         grip, config,
                     )  # fmt: skip
                     row = {"object": obj, "grip": grip, "sequence": s, "plan": plan_name}
-                    rows.append(
-                        row | outcome_columns(out, grip, demos["angles"][o, g, s, -1], config)
-                    )
+                    final = demos["angles"][o, g, s, -1]
+                    rows.append(row | outcome_columns(out, grip, final, palms[o, g], config))
+    return rows
+
+
+def body_tolerance(
+    robot: Robot,
+    demos: dict[str, np.ndarray],
+    noise: list[float],
+    repeats: int,
+    seed: int,
+    config: DemoConfig,
+) -> list[dict[str, object]]:
+    """How precise must a learned arm be? Each object's natural grasp replayed as the mean plan
+    of its training demonstrations (the servo targets a network fits, clipped to 0-1 as its
+    sigmoid outputs are), with the 7 arm joints' targets shifted by a constant Gaussian offset of
+    standard deviation ``noise`` (0-1 units) over the whole trial: success against arm error.
+
+    The offset stays the same at every step, like a network's error that persists through a
+    trial. Noise 0 is run once (physics is deterministic); every offset draws from its own seed,
+    derived from ``seed``, the object, the noise level and the repeat.
+    """
+    rows = []
+    objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
+    commands = np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0)
+    train = slice(0, demos["angles"].shape[2] - 1)  # the last sequence is held out
+    palms = reference_palms(demo_palms(robot, demos["angles"], tuple(objects)))
+    for o, obj in enumerate(objects):
+        grip = OBJECTS[obj].natural_grip
+        g = grips.index(grip)
+        start, final = demos["angles"][o, g, 0, 0], demos["angles"][o, g, -1, -1]
+        plan = np.vstack([start, commands[o, g, train, 1:].mean(axis=0)])
+        for level, sigma in enumerate(noise):
+            for repeat in range(repeats if sigma > 0 else 1):
+                rng = np.random.default_rng([seed, o, level, repeat])
+                offset = rng.normal(0.0, sigma, N_ARM_DOF) if sigma > 0 else np.zeros(N_ARM_DOF)
+                shifted = plan.copy()
+                shifted[1:, :N_ARM_DOF] = np.clip(shifted[1:, :N_ARM_DOF] + offset, 0.0, 1.0)
+                out = run_trial(robot, obj, replay_policy(shifted), start, len(plan), grip, config)
+                row = {"object": obj, "grip": grip, "noise": float(sigma), "repeat": repeat,
+                       "offset": float(np.sqrt(np.mean(offset**2)))}  # fmt: skip
+                rows.append(row | outcome_columns(out, grip, final, palms[o, g], config))
     return rows
 
 
@@ -291,6 +382,24 @@ def variant_table(trials: pd.DataFrame) -> pd.DataFrame:
                 else float("nan"),
             }
         row["success"] = float(df["success"].astype(float).mean())
+        grasping = df[df["task"] == "grasping"]
+        row["grasping_palm_error_mm"] = float(grasping["palm_error_mm"].median())
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def tolerance_table(tolerance: pd.DataFrame) -> pd.DataFrame:
+    """Per noise level of the body's tolerance test: how often the mean plan still grasps, and
+    how far the palm ended from the demonstrator's (median, mm); success per object too."""
+    import pandas as pd
+
+    rows = []
+    for noise, df in tolerance.groupby("noise", sort=True):
+        row = {"noise": float(noise), "trials": len(df)}
+        row["success"] = float(df["success"].astype(float).mean())
+        row["palm_error_mm"] = float(df["palm_error_mm"].median())
+        for obj, mine in df.groupby("object", sort=False):
+            row[f"{obj}_success"] = float(mine["success"].astype(float).mean())
         rows.append(row)
     return pd.DataFrame(rows)
 

@@ -335,3 +335,41 @@ def robot_variants(variants, path) -> None:
     axes[1].legend(fontsize=7, loc="upper left")
     fig.tight_layout()
     save(fig, path)
+
+
+def robot_tolerance(tolerance, variants, path) -> None:
+    """Success against the palm's distance from where the demonstrator put it: the body's
+    tolerance (the demonstrations' mean plan with its arm targets offset; each trial a dot, and
+    the success rate in bins of palm error) beside each robot variant's grasping trials (median
+    palm error, success)."""
+    fig, ax = plt.subplots(figsize=(7, 4))
+    errors = tolerance["palm_error_mm"].to_numpy(dtype=float)
+    held = tolerance["success"].astype(bool).to_numpy()
+    jitter = np.random.default_rng(0).uniform(-0.03, 0.03, len(held))  # only to see the dots
+    ax.scatter(errors, held + jitter, s=8, color="0.5", alpha=0.5,
+               label="mean plan with its arm offset: one trial (held 1, not 0)")  # fmt: skip
+    edges = np.array([0, 2, 4, 6, 8, 10, 15, 20, 30, 50, np.inf])
+    centres, rates = [], []
+    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+        inside = (errors >= lo) & (errors < hi)
+        if inside.sum() >= 3:
+            centres.append(np.median(errors[inside]))
+            rates.append(held[inside].mean())
+    ax.plot(centres, rates, "-", color="k", lw=1.5, label="its success rate, in bins of palm error")
+    for target, marker in (("sensed", "s"), ("commands", "o")):
+        mine = variants[variants["target"] == target]
+        colour = "tab:red" if target == "commands" else "tab:blue"
+        label = f"robot variant ({target}): median palm error, grasping success"
+        ax.scatter(mine["grasping_palm_error_mm"], mine["grasping_success"], marker=marker,
+                   s=36, color=colour, zorder=3, label=label)  # fmt: skip
+    ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
+    ax.set_xscale("log")
+    ticks = [t for t in (0.5, 1, 2, 5, 10, 20, 50, 100, 200) if t <= max(errors.max(), 1) * 1.5]
+    ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
+    ax.set_xlabel("palm's distance from the demonstrator's at the end of the movement (mm, log)")
+    ax.set_ylabel("object held (share of trials)")
+    ax.set_ylim(-0.08, 1.08)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="center right", bbox_to_anchor=(1.0, 0.7))
+    fig.tight_layout()
+    save(fig, path)

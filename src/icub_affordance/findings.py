@@ -9,8 +9,12 @@ reproduced" has a single definition here, and a test.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: The significance level of every verdict.
 ALPHA = 0.05
@@ -193,3 +197,11 @@ def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float =
             significant=bool(effect["tests"][factor]["p"] < alpha),
         )
     return None
+
+
+def tolerated_noise(table: pd.DataFrame, bar: float = GRASPS) -> pd.Series | None:
+    """The body's tolerance (``embodied.tolerance_table``): the row of the largest arm noise at
+    which the demonstrations' mean plan still holds the object in ``bar`` of the trials, if any.
+    """
+    ok = table[table["success"] >= bar]
+    return None if ok.empty else ok.sort_values("noise").iloc[-1]

@@ -34,6 +34,8 @@ BOOK_DATA = {
     "robot_variants.csv": "data/embodied/variants.csv",
     "robot_effects.json": "data/embodied/effects.json",
     "robot_variants.png": "data/figures/robot_variants.png",
+    "robot_tolerance.png": "data/figures/robot_tolerance.png",
+    "robot_tolerance.csv": "data/embodied/tolerance.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
 } | {
@@ -74,6 +76,7 @@ FINDINGS_READS = [
     "measures.json",
     "robot_variants.csv",
     "robot_effects.json",
+    "robot_tolerance.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
@@ -89,6 +92,7 @@ FINDINGS_TABLES = [
     "readings_summary",
     "robot_variants",
     "robot_effects",
+    "robot_tolerance",
 ]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]

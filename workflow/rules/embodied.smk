@@ -97,6 +97,35 @@ rule embodied_replay:
         "../scripts/embodied_replay.py"
 
 
+rule embodied_tolerance:
+    """How precisely must a learned arm move? Each object's natural grasp, the mean plan of its
+    demonstrations, replayed with its arm targets offset by Gaussian noise: success against the
+    palm's distance from where the demonstrator put it (config robot.tolerance)."""
+    input:
+        demos=rules.demos.output.demos,
+        scene=config["scene"],
+        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
+        code=script_code("embodied_tolerance"),
+    output:
+        "data/embodied/tolerance.csv",
+    params:
+        demos=settings(config["demos"]),
+        object_sizes=settings(config["object_sizes_m"]),
+        tolerance=settings(config["robot"]["tolerance"]),
+        seed=config["seed"],
+    threads: 1
+    priority: 1
+    resources:
+        mem_mb=500,
+        runtime=10,
+    log:
+        "data/logs/embodied/tolerance.log",
+    benchmark:
+        "data/benchmarks/embodied_tolerance.tsv"
+    script:
+        "../scripts/embodied_tolerance.py"
+
+
 rule embodied_summary:
     """Every tested variant's robot trials in one table; the config's own networks' success by
     condition and the effect of congruency; each variant's success and contact time, and their
@@ -161,12 +190,15 @@ rule embodied_filmstrip:
 
 
 rule robot_variants_figure:
-    """The robot variants' success against training iterations (plot only)."""
+    """The robot variants' success against training iterations, and against the palm's error
+    beside the body's tolerance (plot only)."""
     input:
         variants=rules.embodied_summary.output.variants,
+        tolerance=rules.embodied_tolerance.output[0],
         code=script_code("robot_variants_figure"),
     output:
-        "data/figures/robot_variants.png",
+        variants="data/figures/robot_variants.png",
+        tolerance="data/figures/robot_tolerance.png",
     threads: 1
     resources:
         mem_mb=500,

@@ -53,7 +53,7 @@ def film(robot, m, setup, i, weights, net, mapping, recorded, config):
                 f"sequence {row['sequence']}, not {trial['task']} {trial['object']} sequence "
                 f"{trial['sequence']}: the trials file is not in the test's order, or stale"
             )
-    outcome = outcome_columns(out, grip, setup.teacher[i, -1], config)
+    outcome = outcome_columns(out, grip, setup.teacher[i, -1], None, config)
     seen = {"success": str(outcome["success"]), "grip_used": outcome["grip_used"]}
     was = {"success": row["success"], "grip_used": row["grip_used"]}
     if seen != was:

@@ -17,6 +17,7 @@ import pandas as pd
 
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
+from icub_affordance.embodied import tolerance_table
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
@@ -335,6 +336,24 @@ def _variant_label(row: Mapping) -> str:
     return f"{row['target']}, {int(row['hidden'])} hidden, {int(row['iterations']):,} iterations"
 
 
+def _palm_gap_sentence(best: Mapping, own: Mapping, tolerated: Mapping | None) -> str:
+    """Where the learned networks' palms end, against what the body forgives."""
+    palms = (
+        f"in their grasping trials the best variant's palm ends a median "
+        f"{best['grasping_palm_error_mm']:.1f} mm from the demonstrator's, the config's own "
+        f"networks' {own['grasping_palm_error_mm']:.1f} mm"
+    )
+    if tolerated is None:
+        return f"The body forgives no tested offset; {palms}."
+    limit = float(tolerated["palm_error_mm"])
+    side = "beyond" if best["grasping_palm_error_mm"] > limit else "within"
+    return (
+        f"Against that, {palms}: the best variant's median lies {side} the "
+        f"{limit:.1f} mm at which the plan still holds the object in "
+        f"{text.pct(science.GRASPS)} of the trials."
+    )
+
+
 def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
     """One variant's effect of ``factor`` on a robot ``measure``, in words and numbers."""
     verdict = science.robot_effect_verdict(effect, measure, factor)
@@ -361,6 +380,8 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     variants = pd.read_csv(inputs["robot_variants.csv"])
     effects = _json(inputs["robot_effects.json"])
     anova = _json(inputs["anova.json"])
+    tolerance = tolerance_table(pd.read_csv(inputs["robot_tolerance.csv"]))
+    exact, tolerated = tolerance.iloc[0], science.tolerated_noise(tolerance)
     own = variants[variants["run"] == "main"].iloc[0]
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
@@ -391,6 +412,23 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             "robot.default lists; a build with robustness=True tests the whole grid."
         ),
         "animated_label": _variant_label(animated),
+        "best_palm_error": f"{best['grasping_palm_error_mm']:.0f} mm",
+        "own_palm_error": f"{own['grasping_palm_error_mm']:.0f} mm",
+        "tolerance_exact": (
+            f"with no offset (arm noise {exact['noise']:g}) it holds the object in "
+            f"{text.pct(exact['success'])} of its {int(exact['trials'])} trials, the palm "
+            f"{exact['palm_error_mm']:.1f} mm (median) from the demonstrator's"
+        ),
+        "tolerance_sentence": (
+            f"The largest arm noise at which the plan still holds the object in at least "
+            f"{text.pct(science.GRASPS)} of the trials is {tolerated['noise']:g} (0-1 units), "
+            f"where the palm ends {tolerated['palm_error_mm']:.1f} mm (median) from the "
+            f"demonstrator's ({text.pct(tolerated['success'])} held)."
+            if tolerated is not None
+            else f"At no arm noise tested does the plan hold the object in "
+            f"{text.pct(science.GRASPS)} of the trials."
+        ),
+        "gap_sentence": _palm_gap_sentence(best, own, tolerated),
         "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
         "rmse_size": text.fmt_mixed(anova["mixed"]["closed_loop"]["size"]),
     }
@@ -421,8 +459,28 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         contact_time=[
             f"{v:.2f} s" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
         ],
-    )[["variant", "networks", "grasping", "categorisation", "touched", "contact_time"]]
-    return out, {"robot_variants": table, "robot_effects": pd.DataFrame(rows)}
+        palm_error=[f"{v:.0f} mm" for v in variants["grasping_palm_error_mm"]],
+    )
+    shown = ["variant", "networks", "grasping", "categorisation", "touched", "contact_time"]
+    table = table[[*shown, "palm_error"]]
+    objects = [c.removesuffix("_success") for c in tolerance.columns if c.endswith("_success")]
+    tolerance_shown = pd.DataFrame(
+        {
+            "arm noise (0-1)": [f"{v:g}" for v in tolerance["noise"]],
+            "trials": tolerance["trials"].astype(int),
+            "held": [text.pct(v) for v in tolerance["success"]],
+            "palm error (median)": [f"{v:.1f} mm" for v in tolerance["palm_error_mm"]],
+        }
+        | {
+            obj.replace("_", " "): [text.pct(v) for v in tolerance[f"{obj}_success"]]
+            for obj in objects
+        }
+    )
+    return out, {
+        "robot_variants": table,
+        "robot_effects": pd.DataFrame(rows),
+        "robot_tolerance": tolerance_shown,
+    }
 
 
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:

@@ -1,0 +1,20 @@
+"""The body's tolerance: each object's natural grasp replayed as the demonstrations' mean plan
+with its arm targets offset, success against the palm's error."""
+
+from icub_affordance.body import Robot
+from icub_affordance.demos import DemoConfig
+from icub_affordance.embodied import body_tolerance, tolerance_table
+from icub_affordance.io import load_npz, redirect_log, write_csv
+
+with redirect_log(snakemake.log[0]):
+    demos = load_npz(snakemake.input.demos, required=("angles", "commands_deg", "objects", "grips"))
+    robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
+    tolerance = snakemake.params.tolerance
+    rows = body_tolerance(
+        robot, demos, list(tolerance["noise"]), int(tolerance["repeats"]), snakemake.params.seed,
+        DemoConfig(**snakemake.params.demos),
+    )  # fmt: skip
+    write_csv(snakemake.output[0], rows)
+    import pandas as pd
+
+    print(tolerance_table(pd.DataFrame(rows)).to_string())
