@@ -86,13 +86,18 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["default"].append(
                 {"target": "commands", "hidden": 80, "iterations": 12000}
             ),
-            ["robot.default[1]", "'hidden': 80", "grid", "Fix"],
+            ["robot.default[2]", "'hidden': 80", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["animation"].update(
                 variant={"target": "sensed", "hidden": 40, "iterations": 12000}
             ),
             ["robot.animation.variant", "'hidden': 40", "robot.default", "Fix"],
+        ),
+        # a cue timing outside the grid's
+        (
+            lambda c: c["robot"].update(categorisation_cue=["all_steps"]),
+            ["robot.default[1]", "categorisation_cue first_step", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["animation"].update(object="pear"),

@@ -36,7 +36,8 @@ def trials(run: str, success, contact, networks: int = 4) -> pd.DataFrame:
                 for seq in range(2):
                     rows.append(
                         {
-                            "run": run, "target": "commands", "hidden": 10, "iterations": 1200,
+                            "run": run, "categorisation_cue": "first_step",
+                            "target": "commands", "hidden": 10, "iterations": 1200,
                             "network": net, "mapping": mapping, "task": task, "object": obj,
                             "size": size, "sequence": seq,
                             "congruent": "" if task == "grasping" else str(congruent),

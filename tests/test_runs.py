@@ -99,6 +99,29 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
 
 
 @pytest.mark.slow
+def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, tmp_path):
+    """The cue timing is a dimension of the robot grid: the variant with the config's network
+    settings under the other cue is the cue ablation's run (tested on the robot, not retrained);
+    any other is a new run named by its cue timing."""
+    config = load_test_config()
+    config["robot"]["categorisation_cue"] = ["first_step", "all_steps"]
+    own = {k: config["network"][k] for k in ("target", "hidden", "iterations")}
+    config["robot"]["default"] += [
+        {"categorisation_cue": "all_steps"} | own,
+        {"categorisation_cue": "all_steps", "target": "commands", "hidden": 10, "iterations": 1200},
+    ]
+    path = tmp_path / "robot.yaml"
+    path.write_text(yaml.safe_dump(config))
+    result = run_snakemake(built, "-n", config=path)
+    jobs = planned(result)
+    assert jobs.pop("run_train") == 1 and jobs.pop("run_embodied") == 2
+    assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
+    assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
+    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    assert set(jobs) <= shown, jobs
+
+
+@pytest.mark.slow
 def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tmp_path):
     path = tmp_path / "runs.yaml"
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))

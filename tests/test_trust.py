@@ -85,7 +85,13 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
 
 @pytest.mark.slow
 def test_the_cue_timing_reruns_training_too(built, tmp_path):
-    path = changed_config(tmp_path, lambda c: c["network"].update(categorisation_cue="all_steps"))
+    def change(c):
+        c["network"].update(categorisation_cue="all_steps")
+        # the robot grid and the animated variant follow (the test config names its cue timing)
+        c["robot"].update(categorisation_cue=["all_steps"])
+        c["robot"]["animation"]["variant"].update(categorisation_cue="all_steps")
+
+    path = changed_config(tmp_path, change)
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
     assert "train" in jobs and "demos_object" not in jobs and "soms" not in jobs
 

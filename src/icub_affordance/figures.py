@@ -313,17 +313,21 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
 
 def robot_variants(variants, path) -> None:
     """The robot's grasping success (and categorisation success) against training iterations,
-    one line per target and number of hidden units: the learning curve measured on the body."""
+    one line per cue timing, target and number of hidden units: the learning curve measured on
+    the body."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
     styles = {"sensed": "--", "commands": "-"}
+    markers = {"first_step": "o", "all_steps": "^"}
     hiddens = sorted(variants["hidden"].unique())
     colours = {h: f"C{k}" for k, h in enumerate(hiddens)}
+    keys = ["categorisation_cue", "target", "hidden"]
     for ax, task in zip(axes, ("grasping", "categorisation"), strict=True):
-        for (target, hidden), g in variants.groupby(["target", "hidden"], sort=True):
+        for (cue, target, hidden), g in variants.groupby(keys, sort=True):
             g = g.sort_values("iterations")
             ax.plot(
-                g["iterations"], g[f"{task}_success"], styles.get(target, ":"), marker="o",
-                color=colours[hidden], label=f"{target}, {hidden} hidden",
+                g["iterations"], g[f"{task}_success"], styles.get(target, ":"),
+                marker=markers.get(cue, "s"), color=colours[hidden],
+                label=f"{cue.replace('_', ' ')}, {target}, {hidden} hidden",
             )  # fmt: skip
         ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
         ax.set_xscale("log")
@@ -332,7 +336,7 @@ def robot_variants(variants, path) -> None:
         ax.set_ylim(-0.02, 1.02)
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("success (share of trials)")
-    axes[1].legend(fontsize=7, loc="upper left")
+    axes[1].legend(fontsize=6, loc="upper left")
     fig.tight_layout()
     save(fig, path)
 

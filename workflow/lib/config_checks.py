@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import yaml
+from configs import robot_grid, robot_key
 
 from icub_affordance.spec import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
 
@@ -237,30 +238,29 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
                 f"{sequences} per object and grip. Allowed: 0..{sequences - 1}. Fix: pick a "
                 "sequence in that range."
             )
-    robot = config["robot"]
-    grid = [
-        (t, h, i) for t in robot["target"] for h in robot["hidden"] for i in robot["iterations"]
-    ]
-    network = config["network"]
-    own = (network["target"], network["hidden"], network["iterations"])
+    robot, network = config["robot"], config["network"]
+    grid = robot_grid(robot)
+    own = robot_key(network, network)
     listed = [own]
     for i, variant in enumerate(robot["default"]):
-        triple = (variant["target"], variant["hidden"], variant["iterations"])
-        listed.append(triple)
-        if triple not in grid:
+        listed.append(robot_key(variant, network))
+        if listed[-1] not in grid:
             yield (
-                f"{key(f'robot.default[{i}]')}: {variant} is not a variant of the grid robot.target"
-                f" x robot.hidden x robot.iterations. Allowed: a combination of {robot['target']},"
-                f" {robot['hidden']} and {robot['iterations']}. Fix: add its values to the grid "
+                f"{key(f'robot.default[{i}]')}: {variant} (categorisation_cue {listed[-1][0]}) is "
+                "not a variant of the grid robot.categorisation_cue x robot.target x robot.hidden"
+                " x robot.iterations (an entry without categorisation_cue has "
+                "network.categorisation_cue). Allowed: a "
+                f"combination of {robot['categorisation_cue']}, {robot['target']}, "
+                f"{robot['hidden']} and {robot['iterations']}. Fix: add its values to the grid "
                 "or change the entry."
             )
     animated = robot["animation"]["variant"]
-    if (animated["target"], animated["hidden"], animated["iterations"]) not in listed:
+    if robot_key(animated, network) not in listed:
         yield (
             f"{key('robot.animation.variant')}: {animated} is not tested in the default run. "
-            f"Allowed: the config's own networks (target {own[0]}, hidden {own[1]}, iterations "
-            f"{own[2]}) or an entry of robot.default. Fix: pick one of them or add it to "
-            "robot.default."
+            f"Allowed: the config's own networks (categorisation_cue {own[0]}, target {own[1]}, "
+            f"hidden {own[2]}, iterations {own[3]}) or an entry of robot.default. Fix: pick one "
+            "of them or add it to robot.default."
         )
     if robot["animation"]["object"] not in objects:
         yield (

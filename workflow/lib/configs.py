@@ -42,3 +42,21 @@ def check_runs(
         run = merged(config, overrides) | {"runs": {}}
         check_schema(run, schema, prefix)
         check_config(run, prefix)
+
+
+#: What tells the robot test's variants apart (config `robot`), in the order of their run names.
+ROBOT_KEYS = ("categorisation_cue", "target", "hidden", "iterations")
+
+
+def robot_key(variant: Mapping[str, Any], network: Mapping[str, Any]) -> tuple:
+    """A robot variant (an entry of robot.default or robot.animation.variant) as the grid's
+    tuple; an entry that names no cue timing has the config's own (network.categorisation_cue)."""
+    cue = variant.get("categorisation_cue", network["categorisation_cue"])
+    return (cue, variant["target"], variant["hidden"], variant["iterations"])
+
+
+def robot_grid(robot: Mapping[str, Any]) -> list[tuple]:
+    """Every variant of the grid robot.categorisation_cue x target x hidden x iterations."""
+    import itertools
+
+    return list(itertools.product(*(robot[key] for key in ROBOT_KEYS)))

@@ -7,7 +7,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
 from code_deps import CodeGraph, page_code  # noqa: E402
-from configs import check_runs, merged  # noqa: E402
+from configs import ROBOT_KEYS, check_runs, merged, robot_grid, robot_key  # noqa: E402
 from scene_files import scene_files  # noqa: E402
 
 
@@ -103,37 +103,41 @@ def reading_runs(known):
     return new, table
 
 
-def robot_variant(target, hidden, iterations):
+def robot_variant(cue, target, hidden, iterations):
     """The network settings of a robot variant: the config's, with phase 1 keeping its share of
     the iterations (rounded so that phase 2 splits evenly between the tasks)."""
     network = config["network"]
     phase1 = round(iterations * network["phase1_iterations"] / network["iterations"])
     phase1 += (iterations - phase1) % 2
-    return {"target": target, "hidden": hidden, "iterations": iterations, "phase1_iterations": phase1}
+    return {
+        "categorisation_cue": cue, "target": target, "hidden": hidden, "iterations": iterations,
+        "phase1_iterations": phase1,
+    }  # fmt: skip
 
 
 def robot_runs(known):
-    """The robot test's variants (config `robot`): every combination of target x hidden x
-    iterations, plus the config's own networks (the reference row, the main run). A variant is
-    the run whose config equals the config with its network settings laid over it: an existing
-    run if one has them (the main run for the config's own), else a new one. Returns the new runs
-    (name -> overrides) and the variants table: run, target, hidden, iterations, default (run
-    without robustness)."""
+    """The robot test's variants (config `robot`): every combination of cue timing x target x
+    hidden x iterations, plus the config's own networks (the reference row, the main run). A
+    variant is the run whose config equals the config with its network settings laid over it: an
+    existing run if one has them (the main run for the config's own, the cue ablation for the
+    other cue timing's), else a new one, named by what differs from the config's own cue timing.
+    Returns the new runs (name -> overrides) and the variants table: run, categorisation_cue,
+    target, hidden, iterations, default (run without robustness)."""
     robot, network = config["robot"], config["network"]
-    own = (network["target"], network["hidden"], network["iterations"])
-    chosen = {own} | {(v["target"], v["hidden"], v["iterations"]) for v in robot["default"]}
-    grid = itertools.product(robot["target"], robot["hidden"], robot["iterations"])
+    own = robot_key(network, network)
+    chosen = {own} | {robot_key(v, network) for v in robot["default"]}
     known, new, table = dict(known), {}, []
-    for target, hidden, iterations in dict.fromkeys([own, *grid]):
-        overrides = {"network": robot_variant(target, hidden, iterations)}
+    for variant in dict.fromkeys([own, *robot_grid(robot)]):
+        cue, target, hidden, iterations = variant
+        overrides = {"network": robot_variant(*variant)}
         run_config = merged(config, overrides)
         run = next((name for name, c in known.items() if c == run_config), None)
         if run is None:
             run = f"robot_{target}_h{hidden}_it{iterations}"
+            run += "" if cue == network["categorisation_cue"] else f"_{cue}"
             new[run], known[run] = overrides, run_config
-        default = (target, hidden, iterations) in chosen
-        row = {"run": run, "target": target, "hidden": hidden, "iterations": iterations}
-        table.append(row | {"default": default})
+        row = {"run": run} | dict(zip(ROBOT_KEYS, variant, strict=True))
+        table.append(row | {"default": variant in chosen})
     return new, table
 
 

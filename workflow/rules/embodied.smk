@@ -213,12 +213,9 @@ rule robot_variants_figure:
 
 # The variant the book animates (config robot.animation.variant): the config's own networks or
 # one of robot.default, so its robot test is part of the default run.
-_animated = config["robot"]["animation"]["variant"]
+_animated = robot_key(config["robot"]["animation"]["variant"], config["network"])
 ANIMATED_RUN = next(
-    row["run"]
-    for row in ROBOT_VARIANTS
-    if (row["target"], row["hidden"], row["iterations"])
-    == (_animated["target"], _animated["hidden"], _animated["iterations"])
+    row["run"] for row in ROBOT_VARIANTS if tuple(row[k] for k in ROBOT_KEYS) == _animated
 )
 
 

@@ -118,6 +118,11 @@ use rule figure5 as run_figure5 with:
         "data/benchmarks/runs/{run}/figure5.tsv"
 
 
+def robot_files(run):
+    """A run's robot test (rule run_embodied), for a run that is a tested robot variant."""
+    return embodied_files(run, "trials.csv") + embodied_files(run, "states.npz")
+
+
 def run_files(run):
     """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
     common.smk: stage_run), each network's curve and weights, the tests, ANOVAs and Figure 5.
@@ -144,8 +149,8 @@ def run_files(run):
     if stage_run(run, "soms") == run:
         files += outputs("soms")
     files += outputs("train", net=run_networks(run))
-    if run in ROBOT_RUNS:  # a robot variant: trained, then tested on the robot (see below)
-        return files + embodied_files(run, "trials.csv") + embodied_files(run, "states.npz")
+    if run in ROBOT_RUNS:  # a robot variant: trained, then tested on the robot (robot_files)
+        return files
     for name in ("evaluate", "stats", "figure5"):
         files += outputs(name)
     return files

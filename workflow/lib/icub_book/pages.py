@@ -333,7 +333,37 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
 
 
 def _variant_label(row: Mapping) -> str:
-    return f"{row['target']}, {int(row['hidden'])} hidden, {int(row['iterations']):,} iterations"
+    cue = str(row["categorisation_cue"]).replace("_", " ")
+    return (
+        f"cue {cue}, {row['target']}, {int(row['hidden'])} hidden, "
+        f"{int(row['iterations']):,} iterations"
+    )
+
+
+#: The cue timings in words.
+CUE_WORDS = {"first_step": "at the first step only", "all_steps": "at every step"}
+
+
+def _cue_sentence(variants: pd.DataFrame) -> str:
+    """The robot variants of this build that differ in the cue timing only, side by side."""
+    same = ["target", "hidden", "iterations"]
+    pairs = []
+    for key, mine in variants.groupby(same, sort=True):
+        if mine["categorisation_cue"].nunique() < 2:
+            continue
+        held = ", ".join(
+            f"{text.pct(row['grasping_success'])} with the cue "
+            f"{CUE_WORDS.get(row['categorisation_cue'], row['categorisation_cue'])}"
+            for _, row in mine.sort_values("categorisation_cue", ascending=False).iterrows()
+        )
+        pairs.append(f"{key[0]}, {key[1]} hidden, {key[2]:,} iterations: {held}")
+    if not pairs:
+        return "No two variants of this build differ in the cue timing alone."
+    return (
+        "Variants that differ in the cue timing alone hold the object in their grasping trials: "
+        + "; ".join(pairs)
+        + "."
+    )
 
 
 def _palm_gap_sentence(best: Mapping, own: Mapping, tolerated: Mapping | None) -> str:
@@ -386,6 +416,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
     animated = config["robot"]["animation"]["variant"]
+    animated = {"categorisation_cue": config["network"]["categorisation_cue"]} | animated
     out = {
         "bar": text.pct(science.GRASPS),
         "n_variants": len(variants),
@@ -429,6 +460,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             f"{text.pct(science.GRASPS)} of the trials."
         ),
         "gap_sentence": _palm_gap_sentence(best, own, tolerated),
+        "cue_sentence": _cue_sentence(variants),
         "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
         "rmse_size": text.fmt_mixed(anova["mixed"]["closed_loop"]["size"]),
     }
