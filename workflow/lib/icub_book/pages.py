@@ -446,9 +446,9 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "best_palm_error": f"{best['grasping_palm_error_mm']:.0f} mm",
         "own_palm_error": f"{own['grasping_palm_error_mm']:.0f} mm",
         "tolerance_exact": (
-            f"with no offset (arm noise {exact['noise']:g}) it holds the object in "
-            f"{text.pct(exact['success'])} of its {int(exact['trials'])} trials, the palm "
-            f"{exact['palm_error_mm']:.1f} mm (median) from the demonstrator's"
+            f"the plan holds the object in {text.pct(exact['success'])} of its "
+            f"{int(exact['trials'])} trials, its palm {exact['palm_error_mm']:.1f} mm (median) "
+            "from the demonstrator's"
         ),
         "tolerance_sentence": (
             f"The largest arm noise at which the plan still holds the object in at least "
@@ -498,7 +498,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     objects = [c.removesuffix("_success") for c in tolerance.columns if c.endswith("_success")]
     tolerance_shown = pd.DataFrame(
         {
-            "arm noise (0-1)": [f"{v:g}" for v in tolerance["noise"]],
+            "arm noise (0-1 units)": [f"σ = {v:g}" for v in tolerance["noise"]],
             "trials": tolerance["trials"].astype(int),
             "held": [text.pct(v) for v in tolerance["success"]],
             "palm error (median)": [f"{v:.1f} mm" for v in tolerance["palm_error_mm"]],
