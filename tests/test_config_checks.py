@@ -100,6 +100,10 @@ def test_the_default_and_the_test_config_pass():
             ["robot.default[1]", "categorisation_cue first_step", "grid", "Fix"],
         ),
         (
+            lambda c: c["robot"]["tolerance"].update(noise=[0.01, 0.02]),
+            ["robot.tolerance.noise", "0.01", "add 0"],
+        ),
+        (
             lambda c: c["robot"]["animation"].update(object="pear"),
             ["robot.animation.object", "pear", "objects"],
         ),

@@ -405,5 +405,8 @@ def test_the_mean_plan_grasps_and_offsets_are_seeded(scene, demos):
     assert (shifted["palm_error_mm"].to_numpy() != np.repeat(exact["palm_error_mm"], 2)).all()
     again = pd.DataFrame(body_tolerance(scene, demos, [0.0, 0.02], 2, 7, config))
     pd.testing.assert_frame_equal(rows, again, check_exact=True)
-    other = pd.DataFrame(body_tolerance(scene, demos, [0.02], 1, 8, config))
-    assert not np.isin(other["offset"], shifted["offset"]).any()
+    other = pd.DataFrame(body_tolerance(scene, demos, [0.0, 0.02], 2, 8, config))
+    assert not np.isin(other["offset"], shifted["offset"]).any()  # another seed, other offsets
+    # a level's offsets do not depend on the other levels listed: a repeat keeps its direction
+    alone = pd.DataFrame(body_tolerance(scene, demos, [0.02], 2, 7, config))
+    np.testing.assert_array_equal(alone["offset"], shifted["offset"])

@@ -264,8 +264,11 @@ def body_tolerance(
     standard deviation ``noise`` (0-1 units) over the whole trial: success against arm error.
 
     The offset stays the same at every step, like a network's error that persists through a
-    trial. Noise 0 is run once (physics is deterministic); every offset draws from its own seed,
-    derived from ``seed``, the object, the noise level and the repeat.
+    trial. Noise 0 is run once (physics is deterministic). A repeat's offset is one standard
+    normal draw per joint, from the seed derived from ``seed``, the object and the repeat, scaled
+    by each noise level: the levels share their directions and differ in size only, so adding
+    or removing a level changes no other level's trials. ``offset`` is the RMS of the offset sent
+    (after clipping to 0-1).
     """
     rows = []
     objects, grips = demos["objects"].tolist(), demos["grips"].tolist()
@@ -275,17 +278,22 @@ def body_tolerance(
     for o, obj in enumerate(objects):
         grip = OBJECTS[obj].natural_grip
         g = grips.index(grip)
-        start, final = demos["angles"][o, g, 0, 0], demos["angles"][o, g, -1, -1]
+        start = demos["angles"][o, g, 0, 0]
+        final = demos["angles"][o, g, train, -1].mean(axis=0)  # the plan's own final posture
         plan = np.vstack([start, commands[o, g, train, 1:].mean(axis=0)])
-        for level, sigma in enumerate(noise):
+        directions = [
+            np.random.default_rng([seed, o, repeat]).standard_normal(N_ARM_DOF)
+            for repeat in range(repeats)
+        ]
+        for sigma in noise:
             for repeat in range(repeats if sigma > 0 else 1):
-                rng = np.random.default_rng([seed, o, level, repeat])
-                offset = rng.normal(0.0, sigma, N_ARM_DOF) if sigma > 0 else np.zeros(N_ARM_DOF)
+                arm = plan[1:, :N_ARM_DOF]
                 shifted = plan.copy()
-                shifted[1:, :N_ARM_DOF] = np.clip(shifted[1:, :N_ARM_DOF] + offset, 0.0, 1.0)
+                shifted[1:, :N_ARM_DOF] = np.clip(arm + sigma * directions[repeat], 0.0, 1.0)
+                sent = shifted[1:, :N_ARM_DOF] - arm
                 out = run_trial(robot, obj, replay_policy(shifted), start, len(plan), grip, config)
                 row = {"object": obj, "grip": grip, "noise": float(sigma), "repeat": repeat,
-                       "offset": float(np.sqrt(np.mean(offset**2)))}  # fmt: skip
+                       "offset": float(np.sqrt(np.mean(sent**2)))}  # fmt: skip
                 rows.append(row | outcome_columns(out, grip, final, palms[o, g], config))
     return rows
 
@@ -385,6 +393,26 @@ def variant_table(trials: pd.DataFrame) -> pd.DataFrame:
         grasping = df[df["task"] == "grasping"]
         row["grasping_palm_error_mm"] = float(grasping["palm_error_mm"].median())
         rows.append(row)
+    return pd.DataFrame(rows)
+
+
+#: Bins of the palm's distance from the demonstrator's (mm) in which success is compared.
+PALM_BINS_MM = (0.0, 3.0, 6.0, 10.0, 20.0, float("inf"))
+
+
+def held_by_palm_error(trials: pd.DataFrame, edges=PALM_BINS_MM) -> pd.DataFrame:
+    """Per bin of the palm's distance from the demonstrator's (column ``palm_error_mm``): the
+    trials in it and the share that held the object; a bin is [low, high)."""
+    import pandas as pd
+
+    errors = trials["palm_error_mm"].to_numpy(dtype=float)
+    held = trials["success"].astype(bool).to_numpy()
+    rows = []
+    for low, high in zip(edges[:-1], edges[1:], strict=True):
+        inside = (errors >= low) & (errors < high)
+        n = int(inside.sum())
+        rows.append({"low_mm": low, "high_mm": high, "trials": n,
+                     "held": float(held[inside].mean()) if n else float("nan")})  # fmt: skip
     return pd.DataFrame(rows)
 
 

@@ -360,15 +360,17 @@ def robot_tolerance(tolerance, variants, path) -> None:
             centres.append(np.median(errors[inside]))
             rates.append(held[inside].mean())
     ax.plot(centres, rates, "-", color="k", lw=1.5, label="its success rate, in bins of palm error")
-    for target, marker in (("sensed", "s"), ("commands", "o")):
-        mine = variants[variants["target"] == target]
+    markers = {"first_step": "o", "all_steps": "^"}
+    for (cue, target), mine in variants.groupby(["categorisation_cue", "target"], sort=True):
         colour = "tab:red" if target == "commands" else "tab:blue"
-        label = f"robot variant ({target}): median palm error, grasping success"
-        ax.scatter(mine["grasping_palm_error_mm"], mine["grasping_success"], marker=marker,
-                   s=36, color=colour, zorder=3, label=label)  # fmt: skip
+        label = f"variant ({cue.replace('_', ' ')}, {target}): median palm error, grasping held"
+        ax.scatter(mine["grasping_palm_error_mm"], mine["grasping_success"],
+                   marker=markers.get(cue, "s"), s=36, color=colour, zorder=3,
+                   label=label)  # fmt: skip
     ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
     ax.set_xscale("log")
-    ticks = [t for t in (0.5, 1, 2, 5, 10, 20, 50, 100, 200) if t <= max(errors.max(), 1) * 1.5]
+    largest = max(errors.max(), variants["grasping_palm_error_mm"].max(), 1.0)
+    ticks = [t for t in (0.5, 1, 2, 5, 10, 20, 50, 100, 200) if t <= largest * 1.5]
     ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
     ax.set_xlabel("palm's distance from the demonstrator's at the end of the movement (mm, log)")
     ax.set_ylabel("object held (share of trials)")

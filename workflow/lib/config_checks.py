@@ -262,6 +262,11 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             f"hidden {own[2]}, iterations {own[3]}) or an entry of robot.default. Fix: pick one "
             "of them or add it to robot.default."
         )
+    if 0 not in robot["tolerance"]["noise"]:
+        yield (
+            f"{key('robot.tolerance.noise')}: {robot['tolerance']['noise']} does not list 0, the "
+            "unshifted plan that the book compares the offsets with. Fix: add 0 to the list."
+        )
     if robot["animation"]["object"] not in objects:
         yield (
             f"{key('robot.animation.object')}: {robot['animation']['object']!r} is not tested in "

@@ -36,6 +36,8 @@ BOOK_DATA = {
     "robot_variants.png": "data/figures/robot_variants.png",
     "robot_tolerance.png": "data/figures/robot_tolerance.png",
     "robot_tolerance.csv": "data/embodied/tolerance.csv",
+    "robot_trials.csv": "data/embodied/trials.csv",
+    "robot_replay.csv": "data/embodied/replay.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
 } | {
@@ -77,6 +79,8 @@ FINDINGS_READS = [
     "robot_variants.csv",
     "robot_effects.json",
     "robot_tolerance.csv",
+    "robot_trials.csv",
+    "robot_replay.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
@@ -93,6 +97,7 @@ FINDINGS_TABLES = [
     "robot_variants",
     "robot_effects",
     "robot_tolerance",
+    "robot_palm",
 ]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
