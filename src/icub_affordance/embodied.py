@@ -367,7 +367,14 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
 # -- the variants (target x hidden units x iterations) ------------------------------------------
 
 #: What tells the robot test's variants apart, the first columns of data/embodied/trials.csv.
-VARIANT_COLUMNS = ("run", "categorisation_cue", "target", "hidden", "iterations")
+VARIANT_COLUMNS = (
+    "run",
+    "categorisation_cue",
+    "target",
+    "hidden",
+    "iterations",
+    "learning_rate_schedule",
+)
 
 
 def variant_table(trials: pd.DataFrame) -> pd.DataFrame:

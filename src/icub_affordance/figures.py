@@ -313,21 +313,24 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
 
 def robot_variants(variants, path) -> None:
     """The robot's grasping success (and categorisation success) against training iterations,
-    one line per cue timing, target and number of hidden units: the learning curve measured on
-    the body."""
+    one line per cue timing, target, number of hidden units and learning-rate schedule (hollow
+    markers: annealed): the learning curve measured on the body."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
     styles = {"sensed": "--", "commands": "-"}
     markers = {"first_step": "o", "all_steps": "^"}
     hiddens = sorted(variants["hidden"].unique())
     colours = {h: f"C{k}" for k, h in enumerate(hiddens)}
-    keys = ["categorisation_cue", "target", "hidden"]
+    keys = ["categorisation_cue", "target", "hidden", "learning_rate_schedule"]
     for ax, task in zip(axes, ("grasping", "categorisation"), strict=True):
-        for (cue, target, hidden), g in variants.groupby(keys, sort=True):
+        for (cue, target, hidden, schedule), g in variants.groupby(keys, sort=True):
             g = g.sort_values("iterations")
+            annealed = schedule == "anneal"
             ax.plot(
                 g["iterations"], g[f"{task}_success"], styles.get(target, ":"),
                 marker=markers.get(cue, "s"), color=colours[hidden],
-                label=f"{cue.replace('_', ' ')}, {target}, {hidden} hidden",
+                markerfacecolor="white" if annealed else colours[hidden], markersize=7,
+                label=f"{cue.replace('_', ' ')}, {target}, {hidden} hidden"
+                + (", annealed rate" if annealed else ""),
             )  # fmt: skip
         ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
         ax.set_xscale("log")
@@ -361,12 +364,14 @@ def robot_tolerance(tolerance, variants, path) -> None:
             rates.append(held[inside].mean())
     ax.plot(centres, rates, "-", color="k", lw=1.5, label="its success rate, in bins of palm error")
     markers = {"first_step": "o", "all_steps": "^"}
-    for (cue, target), mine in variants.groupby(["categorisation_cue", "target"], sort=True):
+    keys = ["categorisation_cue", "target", "learning_rate_schedule"]
+    for (cue, target, schedule), mine in variants.groupby(keys, sort=True):
         colour = "tab:red" if target == "commands" else "tab:blue"
-        label = f"variant ({cue.replace('_', ' ')}, {target}): median palm error, grasping held"
+        rate = ", annealed" if schedule == "anneal" else ""
+        label = f"variant ({cue.replace('_', ' ')}, {target}{rate}): median palm error, held"
         ax.scatter(mine["grasping_palm_error_mm"], mine["grasping_success"],
-                   marker=markers.get(cue, "s"), s=36, color=colour, zorder=3,
-                   label=label)  # fmt: skip
+                   marker=markers.get(cue, "s"), s=36, zorder=3, label=label,
+                   color="white" if rate else colour, edgecolors=colour)  # fmt: skip
     ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
     ax.set_xscale("log")
     largest = max(errors.max(), variants["grasping_palm_error_mm"].max(), 1.0)

@@ -179,6 +179,44 @@ def smallest_that_grasps(variants, bar: float = GRASPS) -> dict[str, object] | N
     return good.sort_values(["hidden", "iterations"], kind="stable").iloc[0].to_dict()
 
 
+def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) -> list[dict]:
+    """Robot variants that differ in ``column`` alone, compared on the same networks.
+
+    ``trials``: ``data/embodied/trials.csv``; ``keys``: the columns that tell variants apart
+    (``embodied.VARIANT_COLUMNS`` without ``run``). Variants of one group share everything but
+    ``column``, so network k of each starts from the same initial weights and sees the same
+    presentations: its grasping trial of an object (one physical trial, however many test
+    sequences share it) pairs with the other variant's. Per pair of values: the distinct trials,
+    how many each holds, the discordant pairs, and the exact McNemar test (the two-sided
+    binomial test of the discordant pairs at 1/2).
+    """
+    from scipy.stats import binomtest
+
+    grasping = trials[trials["task"] == "grasping"].drop_duplicates([*keys, "network", "object"])
+    others = [k for k in keys if k != column]
+    out = []
+    for group, mine in grasping.groupby(others, sort=True):
+        values = sorted(mine[column].unique())
+        held = mine.pivot_table(
+            index=["network", "object"], columns=column, values="success", aggfunc="first"
+        ).dropna()
+        for i, a in enumerate(values):
+            for b in values[i + 1 :]:
+                ya, yb = held[a].astype(bool), held[b].astype(bool)
+                only_a, only_b = int((ya & ~yb).sum()), int((yb & ~ya).sum())
+                n = only_a + only_b
+                out.append(
+                    dict(zip(others, group, strict=True))
+                    | {
+                        "a": a, "b": b, "trials": len(held),
+                        "held_a": int(ya.sum()), "held_b": int(yb.sum()),
+                        "only_a": only_a, "only_b": only_b,
+                        "p": float(binomtest(only_a, n, 0.5).pvalue) if n else 1.0,
+                    }
+                )  # fmt: skip
+    return out
+
+
 def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float = ALPHA):
     """The verdict on ``factor`` (congruency or size) of one variant's robot ``measure``
     (``effects.json``: success or contact_time), from its mixed model, or its exact test where

@@ -69,7 +69,7 @@ def sigmoid(z: np.ndarray) -> np.ndarray:
 
 def train_online(
     weights: Weights,
-    learning_rate: float,
+    learning_rate: float | np.ndarray,
     contexts: np.ndarray,
     demos: np.ndarray,
     grips: np.ndarray,
@@ -83,8 +83,10 @@ def train_online(
     proprioception; ``targets`` (the same shape): what the motor outputs learn, ``demos``
     itself when None (the paper: the network outputs the next posture); ``grips``
     (objects, tasks): the target grip of each trial kind; ``schedule``: the (tasks, objects,
-    sequences) of every iteration. Returns the trained weights (``weights`` is left as it was)
-    and each iteration's RMSE, measured before that sequence's updates.
+    sequences) of every iteration; ``learning_rate`` one rate for all of it, or one per
+    iteration (a schedule, :func:`icub_affordance.train.learning_rates`). Returns the trained
+    weights (``weights`` is left as it was) and each iteration's RMSE, measured before that
+    sequence's updates.
 
     The loop runs compiled (:mod:`icub_affordance.jordan_kernel`, imported here so that only
     training pays for numba); the torch loop of :mod:`icub_affordance.jordan_torch` is the
@@ -111,8 +113,12 @@ def train_online(
         raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
     targets = np.ascontiguousarray(targets, dtype=np.float64)
     grips = np.ascontiguousarray(grips, dtype=np.int64)
+    rates = np.asarray(learning_rate, dtype=np.float64)
+    if rates.ndim and rates.shape != tasks.shape:
+        raise ValueError(f"{rates.shape} learning rates for a schedule of {tasks.shape} iterations")
+    rates = np.ascontiguousarray(np.broadcast_to(rates, tasks.shape))
     train_schedule(
-        W1cT, W1pT, b1, W2T, b2, float(learning_rate), contexts, run_ends, demos, targets, grips,
+        W1cT, W1pT, b1, W2T, b2, rates, contexts, run_ends, demos, targets, grips,
         tasks, objects, sequences, rmse,
     )  # fmt: skip
     W1 = np.empty_like(weights.W1)

@@ -33,14 +33,15 @@ import numpy as np
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def train_schedule(
-    W1cT, W1pT, b1, W2T, b2, lr, contexts, run_ends, demos, targets, grips, tasks, objects,
+    W1cT, W1pT, b1, W2T, b2, rates, contexts, run_ends, demos, targets, grips, tasks, objects,
     sequences, rmse,
 ):  # fmt: skip
     """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
 
     Weights, transposed so that the inner loops run over contiguous rows: ``W1cT`` (200, hidden)
     from the context inputs (visual, goal), ``W1pT`` (16, hidden) from the proprioceptive input,
-    ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,). ``contexts`` (objects, tasks, steps-1,
+    ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,). ``rates`` (iterations,) the learning
+    rate of each iteration's updates. ``contexts`` (objects, tasks, steps-1,
     200) the context at each transition; ``run_ends`` (objects, tasks, steps-1) the end of the
     run of equal contexts that starts at each step; ``demos`` (objects, grips, sequences, steps,
     16) the postures fed back as proprioception; ``targets`` (the same shape) what the motor
@@ -58,6 +59,7 @@ def train_schedule(
     d_out = np.empty(n_out)
     d_hid = np.empty(n_hid)
     for it in range(tasks.shape[0]):
+        lr = rates[it]
         o = objects[it]
         k = tasks[it]
         ctx = contexts[o, k]

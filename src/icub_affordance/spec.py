@@ -93,6 +93,12 @@ GOAL_RESPONSES: tuple[str, ...] = ("fixed", "grows")
 #: (*commands*) the demonstrator sent, which press a grasp home where the fingers meet the object.
 TARGETS: tuple[str, ...] = ("sensed", "commands")
 
+#: How the learning rate runs over training (config ``network.learning_rate_schedule``): the
+#: paper's ``constant`` rate, or ``anneal`` (beyond the paper): constant through phase 1, then
+#: falling linearly towards 0 over phase 2, so that online learning settles at the end instead of
+#: jittering around the minimum at the full rate.
+SCHEDULES: tuple[str, ...] = ("constant", "anneal")
+
 #: The two ways the trained networks are tested (paper section 3; MODEL.md section 6).
 MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")
 

@@ -13,7 +13,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import N_GOAL, N_VISUAL, Weights, train_online
-from .spec import CATEGORISATION, CUES, GRASPING, MAPPINGS, OBJECTS, TARGETS, TASKS, to_normalised
+from .spec import (
+    CATEGORISATION,
+    CUES,
+    GRASPING,
+    MAPPINGS,
+    OBJECTS,
+    SCHEDULES,
+    TARGETS,
+    TASKS,
+    to_normalised,
+)
 
 
 @dataclass(frozen=True)
@@ -27,6 +37,7 @@ class TrainConfig:
     init_scale: float  # initial weights uniform in +- this
     categorisation_cue: str  # one of CUES
     target: str  # one of TARGETS: what the motor outputs learn
+    learning_rate_schedule: str = "constant"  # one of SCHEDULES
 
     def __post_init__(self) -> None:
         if self.target not in TARGETS:
@@ -34,6 +45,11 @@ class TrainConfig:
         if self.categorisation_cue not in CUES:
             raise ValueError(
                 f"categorisation_cue must be one of {CUES}, not {self.categorisation_cue!r}"
+            )
+        if self.learning_rate_schedule not in SCHEDULES:
+            raise ValueError(
+                f"network.learning_rate_schedule must be one of {SCHEDULES}, "
+                f"not {self.learning_rate_schedule!r}"
             )
         if not 0 <= self.phase1_iterations <= self.iterations:
             raise ValueError("phase1_iterations must lie between 0 and iterations")
@@ -105,6 +121,19 @@ def schedule(config: TrainConfig, n_objects: int, n_sequences: int, rng: np.rand
     return tasks, objects, sequences
 
 
+def learning_rates(config: TrainConfig) -> np.ndarray:
+    """Each iteration's learning rate (config ``network.learning_rate_schedule``, spec.SCHEDULES).
+
+    ``anneal``: the full rate through phase 1; over phase 2's n iterations the k-th (from 0)
+    learns at rate * (n - k) / n, the full rate falling linearly to rate / n at the last.
+    """
+    rates = np.full(config.iterations, config.learning_rate)
+    if config.learning_rate_schedule == "anneal":
+        n = config.iterations - config.phase1_iterations
+        rates[config.phase1_iterations :] *= np.arange(n, 0, -1) / n
+    return rates
+
+
 def train_network(
     m: Materials, config: TrainConfig, mapping: str, seed: int
 ) -> tuple[Weights, dict[str, np.ndarray]]:
@@ -127,7 +156,7 @@ def train_network(
     )
     targets = None if config.target == "sensed" else m.targets(config.target)
     trained, rmse = train_online(
-        weights, config.learning_rate, contexts, m.demos, grips, (tasks, objects, sequences),
+        weights, learning_rates(config), contexts, m.demos, grips, (tasks, objects, sequences),
         targets,
     )  # fmt: skip
     curve = {

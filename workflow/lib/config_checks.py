@@ -246,12 +246,14 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
         listed.append(robot_key(variant, network))
         if listed[-1] not in grid:
             yield (
-                f"{key(f'robot.default[{i}]')}: {variant} (categorisation_cue {listed[-1][0]}) is "
-                "not a variant of the grid robot.categorisation_cue x robot.target x robot.hidden"
-                " x robot.iterations (an entry without categorisation_cue has "
-                "network.categorisation_cue). Allowed: a "
+                f"{key(f'robot.default[{i}]')}: {variant} (categorisation_cue {listed[-1][0]}, "
+                f"learning_rate_schedule {listed[-1][4]}) is not a variant of the grid "
+                "robot.categorisation_cue x robot.target x robot.hidden x robot.iterations x "
+                "robot.learning_rate_schedule (an entry without categorisation_cue or "
+                "learning_rate_schedule has the network's). Allowed: a "
                 f"combination of {robot['categorisation_cue']}, {robot['target']}, "
-                f"{robot['hidden']} and {robot['iterations']}. Fix: add its values to the grid "
+                f"{robot['hidden']}, {robot['iterations']} and "
+                f"{robot['learning_rate_schedule']}. Fix: add its values to the grid "
                 "or change the entry."
             )
     animated = robot["animation"]["variant"]
@@ -259,8 +261,8 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
         yield (
             f"{key('robot.animation.variant')}: {animated} is not tested in the default run. "
             f"Allowed: the config's own networks (categorisation_cue {own[0]}, target {own[1]}, "
-            f"hidden {own[2]}, iterations {own[3]}) or an entry of robot.default. Fix: pick one "
-            "of them or add it to robot.default."
+            f"hidden {own[2]}, iterations {own[3]}, learning_rate_schedule {own[4]}) or an entry "
+            "of robot.default. Fix: pick one of them or add it to robot.default."
         )
     if 0 not in robot["tolerance"]["noise"]:
         yield (

@@ -103,7 +103,7 @@ def reading_runs(known):
     return new, table
 
 
-def robot_variant(cue, target, hidden, iterations):
+def robot_variant(cue, target, hidden, iterations, schedule):
     """The network settings of a robot variant: the config's, with phase 1 keeping its share of
     the iterations (rounded so that phase 2 splits evenly between the tasks)."""
     network = config["network"]
@@ -111,30 +111,32 @@ def robot_variant(cue, target, hidden, iterations):
     phase1 += (iterations - phase1) % 2
     return {
         "categorisation_cue": cue, "target": target, "hidden": hidden, "iterations": iterations,
-        "phase1_iterations": phase1,
+        "phase1_iterations": phase1, "learning_rate_schedule": schedule,
     }  # fmt: skip
 
 
 def robot_runs(known):
     """The robot test's variants (config `robot`): every combination of cue timing x target x
-    hidden x iterations, plus the config's own networks (the reference row, the main run). A
+    hidden x iterations x learning-rate schedule, plus the config's own networks (the reference row, the main run). A
     variant is the run whose config equals the config with its network settings laid over it: an
     existing run if one has them (the main run for the config's own, the cue ablation for the
-    other cue timing's), else a new one, named by what differs from the config's own cue timing.
-    Returns the new runs (name -> overrides) and the variants table: run, categorisation_cue,
-    target, hidden, iterations, default (run without robustness)."""
+    other cue timing's), else a new one, named by what differs from the config's own cue timing
+    and schedule. Returns the new runs (name -> overrides) and the variants table: run,
+    categorisation_cue, target, hidden, iterations, learning_rate_schedule, default (run without
+    robustness)."""
     robot, network = config["robot"], config["network"]
     own = robot_key(network, network)
     chosen = {own} | {robot_key(v, network) for v in robot["default"]}
     known, new, table = dict(known), {}, []
     for variant in dict.fromkeys([own, *robot_grid(robot)]):
-        cue, target, hidden, iterations = variant
+        cue, target, hidden, iterations, schedule = variant
         overrides = {"network": robot_variant(*variant)}
         run_config = merged(config, overrides)
         run = next((name for name, c in known.items() if c == run_config), None)
         if run is None:
             run = f"robot_{target}_h{hidden}_it{iterations}"
             run += "" if cue == network["categorisation_cue"] else f"_{cue}"
+            run += "" if schedule == network["learning_rate_schedule"] else f"_{schedule}"
             new[run], known[run] = overrides, run_config
         row = {"run": run} | dict(zip(ROBOT_KEYS, variant, strict=True))
         table.append(row | {"default": variant in chosen})

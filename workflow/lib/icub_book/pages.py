@@ -17,7 +17,7 @@ import pandas as pd
 
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied import held_by_palm_error, tolerance_table
+from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolerance_table
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
@@ -336,8 +336,33 @@ def _variant_label(row: Mapping) -> str:
     cue = str(row["categorisation_cue"]).replace("_", " ")
     return (
         f"cue {cue}, {row['target']}, {int(row['hidden'])} hidden, "
-        f"{int(row['iterations']):,} iterations"
+        f"{int(row['iterations']):,} iterations, {SCHEDULE_WORDS[row['learning_rate_schedule']]}"
     )
+
+
+#: The learning-rate schedules in words.
+SCHEDULE_WORDS = {"constant": "constant rate", "anneal": "annealed rate"}
+
+
+def _schedule_sentence(trials: pd.DataFrame) -> str:
+    """The robot variants of this build that differ in the learning-rate schedule alone,
+    compared on the same networks' grasping trials."""
+    keys = tuple(k for k in VARIANT_COLUMNS if k != "run")
+    pairs = science.paired_grasping(trials, "learning_rate_schedule", keys)
+    if not pairs:
+        return "No two variants of this build differ in the learning-rate schedule alone."
+    said = []
+    for p in pairs:
+        a, b = SCHEDULE_WORDS[p["a"]], SCHEDULE_WORDS[p["b"]]
+        said.append(
+            f"with the cue {CUE_WORDS.get(p['categorisation_cue'], p['categorisation_cue'])}, "
+            f"{p['target']}, {int(p['hidden'])} hidden and {int(p['iterations']):,} iterations, "
+            f"the {a} holds the object in {p['held_a']} and the {b} in {p['held_b']} of the "
+            f"same {p['trials']} grasping trials (network and object); {p['only_a']} are held "
+            f"only with the {a} and {p['only_b']} only with the {b} (exact McNemar test "
+            f"{text.fmt_p(p['p'])})"
+        )
+    return "Variants that differ in the learning-rate schedule alone: " + "; ".join(said) + "."
 
 
 #: The cue timings in words.
@@ -346,7 +371,7 @@ CUE_WORDS = {"first_step": "at the first step only", "all_steps": "at every step
 
 def _cue_sentence(variants: pd.DataFrame) -> str:
     """The robot variants of this build that differ in the cue timing only, side by side."""
-    same = ["target", "hidden", "iterations"]
+    same = ["target", "hidden", "iterations", "learning_rate_schedule"]
     pairs = []
     for key, mine in variants.groupby(same, sort=True):
         if mine["categorisation_cue"].nunique() < 2:
@@ -356,7 +381,9 @@ def _cue_sentence(variants: pd.DataFrame) -> str:
             f"{CUE_WORDS.get(row['categorisation_cue'], row['categorisation_cue'])}"
             for _, row in mine.sort_values("categorisation_cue", ascending=False).iterrows()
         )
-        pairs.append(f"{key[0]}, {key[1]} hidden, {key[2]:,} iterations: {held}")
+        pairs.append(
+            f"{key[0]}, {key[1]} hidden, {key[2]:,} iterations, {SCHEDULE_WORDS[key[3]]}: {held}"
+        )
     if not pairs:
         return "No two variants of this build differ in the cue timing alone."
     return (
@@ -436,7 +463,11 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
     animated = config["robot"]["animation"]["variant"]
-    animated = {"categorisation_cue": config["network"]["categorisation_cue"]} | animated
+    network = config["network"]
+    animated = {
+        "categorisation_cue": network["categorisation_cue"],
+        "learning_rate_schedule": network["learning_rate_schedule"],
+    } | animated
     out = {
         "bar": text.pct(science.GRASPS),
         "n_variants": len(variants),
@@ -481,6 +512,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         ),
         "palm_sentence": _palm_sentence(best, own, replay),
         "cue_sentence": _cue_sentence(variants),
+        "schedule_sentence": _schedule_sentence(trials),
         "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
         "rmse_size": text.fmt_mixed(anova["mixed"]["closed_loop"]["size"]),
     }
