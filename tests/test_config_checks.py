@@ -86,7 +86,7 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["default"].append(
                 {"target": "commands", "hidden": 80, "iterations": 12000}
             ),
-            ["robot.default[2]", "'hidden': 80", "grid", "Fix"],
+            ["robot.default[3]", "'hidden': 80", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["animation"].update(
@@ -98,6 +98,11 @@ def test_the_default_and_the_test_config_pass():
         (
             lambda c: c["robot"].update(categorisation_cue=["all_steps"]),
             ["robot.default[1]", "categorisation_cue first_step", "grid", "Fix"],
+        ),
+        # a learning-rate schedule outside the grid's
+        (
+            lambda c: c["robot"].update(learning_rate_schedule=["constant"]),
+            ["robot.default[2]", "learning_rate_schedule anneal", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["tolerance"].update(noise=[0.01, 0.02]),

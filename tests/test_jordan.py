@@ -17,6 +17,7 @@ from icub_affordance.spec import CATEGORISATION, GRASPING
 from icub_affordance.train import (
     Materials,
     context,
+    learning_rates,
     mapping_of,
     schedule,
     target_grip,
@@ -184,5 +185,51 @@ def test_mappings_and_targets():
 def test_bad_training_settings_are_refused():
     with pytest.raises(ValueError, match="categorisation_cue"):
         train_config(categorisation_cue="sometimes")
+    with pytest.raises(ValueError, match="learning_rate_schedule.*'anneal'"):
+        train_config(learning_rate_schedule="cosine")
     with pytest.raises(ValueError, match="even"):
         train_config(iterations=101, phase1_iterations=50)
+
+
+def test_the_annealed_rate_is_full_in_phase_1_then_falls_linearly_over_phase_2():
+    constant = learning_rates(train_config(iterations=1000, phase1_iterations=600))
+    np.testing.assert_array_equal(constant, np.full(1000, 0.075))
+    config = train_config(iterations=1000, phase1_iterations=600, learning_rate_schedule="anneal")
+    rates = learning_rates(config)
+    np.testing.assert_array_equal(rates[:600], 0.075)
+    assert rates[600] == 0.075 and rates[-1] == pytest.approx(0.075 / 400)
+    np.testing.assert_allclose(np.diff(rates[600:]), -0.075 / 400)  # one step down per iteration
+
+
+def test_a_rate_per_iteration_is_what_the_torch_loop_does_with_that_rate():
+    """The kernel's per-iteration rates: the same bits as one rate when they are all equal, and
+    the torch reference's updates, its optimiser's rate set before each sequence, when not."""
+    m = synthetic_materials()
+    rng = np.random.default_rng(3)
+    w0 = Weights.init(10, 0.5, rng)
+    n = 120
+    schedule = rng.integers(0, 2, n), rng.integers(0, 4, n), rng.integers(0, 4, n)
+    contexts = np.array([[context(m, o, k, "all_steps") for k in range(2)] for o in range(4)])
+    grips = np.array([[m.grips.index(target_grip(m.objects[o], k, "A")) for k in range(2)]
+                      for o in range(4)])  # fmt: skip
+    one, rmse_one = train_online(w0, 0.075, contexts, m.demos, grips, schedule)
+    same, rmse_same = train_online(w0, np.full(n, 0.075), contexts, m.demos, grips, schedule)
+    np.testing.assert_array_equal(rmse_one, rmse_same)
+    for name in ("W1", "b1", "W2", "b2"):
+        np.testing.assert_array_equal(getattr(one, name), getattr(same, name))
+    rates = np.linspace(0.2, 0.001, n)
+    fast, rmse = train_online(w0, rates, contexts, m.demos, grips, schedule)
+    net = JordanNet(w0)
+    sgd = torch.optim.SGD(net.parameters(), lr=0.075)
+    reference = []
+    for rate, (k, o, s) in zip(rates, zip(*schedule, strict=True), strict=True):
+        sgd.param_groups[0]["lr"] = float(rate)
+        reference.append(train_sequence_torch(net, sgd, contexts[o, k], m.demos[o, grips[o, k], s]))
+    np.testing.assert_allclose(rmse, reference, rtol=0, atol=1e-10)
+    for name in ("W1", "b1", "W2", "b2"):
+        np.testing.assert_allclose(
+            getattr(fast, name), getattr(net.weights(), name), rtol=0, atol=1e-10
+        )
+    assert not np.allclose(fast.W2, one.W2)  # the rates made a difference
+    with pytest.raises(ValueError, match="3 learning rates|\\(3,\\) learning rates"):
+        train_online(w0, np.full(3, 0.075), contexts, m.demos, grips, schedule)

@@ -8,9 +8,15 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from icub_affordance.embodied import tolerance_table, variant_effects, variant_table
+from icub_affordance.embodied import (
+    VARIANT_COLUMNS,
+    tolerance_table,
+    variant_effects,
+    variant_table,
+)
 from icub_affordance.findings import (
     best_robot_variant,
+    paired_grasping,
     robot_effect_verdict,
     smallest_that_grasps,
     tolerated_noise,
@@ -24,7 +30,9 @@ OBJECTS = {  # object: (size, congruent under mapping A)
 }
 
 
-def trials(run: str, success, contact, networks: int = 4) -> pd.DataFrame:
+def trials(
+    run: str, success, contact, networks: int = 4, schedule: str = "constant"
+) -> pd.DataFrame:
     """Categorisation and grasping trials of one variant; ``success(net, obj)`` and
     ``contact(net, obj)`` give each network x object's outcome (contact: seconds or NaN)."""
     rows = []
@@ -38,7 +46,8 @@ def trials(run: str, success, contact, networks: int = 4) -> pd.DataFrame:
                         {
                             "run": run, "categorisation_cue": "first_step",
                             "target": "commands", "hidden": 10, "iterations": 1200,
-                            "network": net, "mapping": mapping, "task": task, "object": obj,
+                            "learning_rate_schedule": schedule, "network": net,
+                            "mapping": mapping, "task": task, "object": obj,
                             "size": size, "sequence": seq,
                             "congruent": "" if task == "grasping" else str(congruent),
                             "success": bool(success(net, obj)),
@@ -153,3 +162,30 @@ def test_the_tolerance_table_and_the_largest_noise_the_body_forgives():
     assert tolerated_noise(table)["noise"] == 0.005
     assert tolerated_noise(table, bar=0.95)["noise"] == 0.0
     assert tolerated_noise(table, bar=1.01) is None
+
+
+def test_schedules_are_compared_on_the_same_networks_and_objects():
+    """Two variants that differ in the learning-rate schedule alone: each network x object's
+    grasping trial pairs with the other variant's; the exact McNemar test is the two-sided
+    binomial test of the discordant pairs, recomputed by hand."""
+    # constant: network 0 misses everything; anneal: networks 0-3 hold everything but the
+    # small ball of network 3, which constant holds
+    constant = trials("c", success=lambda net, obj: net > 0, contact=lambda net, obj: 1.0)
+    anneal = trials(
+        "a",
+        success=lambda net, obj: not (net == 3 and obj == "small_ball"),
+        contact=lambda net, obj: 1.0,
+        schedule="anneal",
+    )
+    keys = tuple(k for k in VARIANT_COLUMNS if k != "run")
+    (pair,) = paired_grasping(pd.concat([constant, anneal]), "learning_rate_schedule", keys)
+    assert (pair["a"], pair["b"]) == ("anneal", "constant")
+    assert pair["trials"] == 16  # 4 networks x 4 objects, the two sequences counted once
+    assert (pair["held_a"], pair["held_b"]) == (15, 12)
+    assert (pair["only_a"], pair["only_b"]) == (4, 1)
+    n, k = 5, 1  # two-sided: P(X <= 1) + P(X >= 4) for X ~ Binomial(5, 1/2)
+    by_hand = sum(comb(n, x) for x in range(n + 1) if min(x, n - x) <= k) / 2**n
+    assert pair["p"] == pytest.approx(by_hand)
+    # variants that differ in more than the schedule are not paired
+    other = anneal.assign(hidden=20)
+    assert paired_grasping(pd.concat([constant, other]), "learning_rate_schedule", keys) == []

@@ -122,6 +122,25 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
 
 
 @pytest.mark.slow
+def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_path):
+    """The learning-rate schedule is a dimension of the robot grid: the config's network with
+    the annealed rate trains its own networks, in a run named by what differs (_anneal)."""
+    config = load_test_config()
+    config["robot"]["learning_rate_schedule"] = ["constant", "anneal"]
+    own = {k: config["network"][k] for k in ("target", "hidden", "iterations")}
+    config["robot"]["default"] += [{"learning_rate_schedule": "anneal"} | own]
+    path = tmp_path / "robot.yaml"
+    path.write_text(yaml.safe_dump(config))
+    result = run_snakemake(built, "-n", config=path)
+    jobs = planned(result)
+    assert jobs.pop("run_train") == 1 and jobs.pop("run_embodied") == 1
+    run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
+    assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
+    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    assert set(jobs) <= shown, jobs
+
+
+@pytest.mark.slow
 def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tmp_path):
     path = tmp_path / "runs.yaml"
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
