@@ -16,6 +16,7 @@ from icub_affordance.embodied import (
 )
 from icub_affordance.findings import (
     best_robot_variant,
+    held_interval,
     paired_grasping,
     robot_effect_verdict,
     smallest_that_grasps,
@@ -189,3 +190,14 @@ def test_schedules_are_compared_on_the_same_networks_and_objects():
     # variants that differ in more than the schedule are not paired
     other = anneal.assign(hidden=20)
     assert paired_grasping(pd.concat([constant, other]), "learning_rate_schedule", keys) == []
+
+
+def test_the_interval_of_a_share_held_is_clopper_pearson():
+    """Recomputed from the beta quantiles that define it; at 0 and at all held, one end is 0 or
+    1."""
+    from scipy.stats import beta
+
+    low, high = held_interval(45, 48)
+    assert low == pytest.approx(beta.ppf(0.025, 45, 4)) and low < 0.9 < 45 / 48
+    assert high == pytest.approx(beta.ppf(0.975, 46, 3))
+    assert held_interval(0, 10)[0] == 0.0 and held_interval(10, 10)[1] == 1.0

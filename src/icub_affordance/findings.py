@@ -179,6 +179,14 @@ def smallest_that_grasps(variants, bar: float = GRASPS) -> dict[str, object] | N
     return good.sort_values(["hidden", "iterations"], kind="stable").iloc[0].to_dict()
 
 
+def held_interval(held: int, trials: int, level: float = 0.95) -> tuple[float, float]:
+    """The exact (Clopper-Pearson) interval of a share held, ``held`` of ``trials``."""
+    from scipy.stats import binomtest
+
+    ci = binomtest(held, trials).proportion_ci(confidence_level=level, method="exact")
+    return float(ci.low), float(ci.high)
+
+
 def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) -> list[dict]:
     """Robot variants that differ in ``column`` alone, compared on the same networks.
 

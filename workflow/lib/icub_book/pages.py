@@ -393,6 +393,25 @@ def _cue_sentence(variants: pd.DataFrame) -> str:
     )
 
 
+def _best_interval(best: Mapping, grasping_trials: pd.DataFrame) -> str:
+    """How sure one build can be of the best variant's share: its distinct grasping trials."""
+    mine = grasping_trials[grasping_trials["run"] == best["run"]]
+    held, n = int(mine["success"].astype(bool).sum()), len(mine)
+    low, high = science.held_interval(held, n)
+    verdict = (
+        f"so even its lower end clears the bar of {text.pct(science.GRASPS)}"
+        if low >= science.GRASPS
+        else f"so {n} trials cannot show that the variant's rate is above "
+        f"{text.pct(science.GRASPS)}, only that it is above {text.pct(low)}"
+    )
+    return (
+        f"Counted once per network and object, the best variant holds {held} of its {n} distinct "
+        f"grasping trials; the exact 95% interval of that share is {text.pct(low)} to "
+        f"{text.pct(high)} (Clopper-Pearson, which takes the trials as independent, though "
+        f"each network makes four of them), {verdict}."
+    )
+
+
 def _palm_sentence(best: Mapping, own: Mapping, replay: pd.DataFrame) -> str:
     """Where the learned networks' palms end, beside where the demonstrations' own ends."""
     demos = replay[replay["plan"] == "commands"]
@@ -511,6 +530,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             f"{text.pct(science.GRASPS)} of the trials."
         ),
         "palm_sentence": _palm_sentence(best, own, replay),
+        "best_interval": _best_interval(best, grasping_trials),
         "cue_sentence": _cue_sentence(variants),
         "schedule_sentence": _schedule_sentence(trials),
         "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
