@@ -72,9 +72,9 @@ def test_anova_numbers_in_the_book_equal_anova_json(built, html):
                 assert f"{r['p']:.2g}" in html["results"], (mode, analysis, effect)
     # inference is the mixed model's: in the results and on the front page
     for mode in ("closed_loop", "teacher_forced"):
-        for term, r in anova["mixed"][mode].items():
+        for term, r in anova["contrasts"][mode].items():
             assert f"{r['estimate']:+.4f}" in html["results"], (mode, term)
-    mixed = anova["mixed"]["closed_loop"]["congruency"]
+    mixed = anova["contrasts"]["closed_loop"]["congruency"]
     assert f"estimate {mixed['estimate']:+.4f}" in html["intro"]
 
 

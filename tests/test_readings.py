@@ -143,13 +143,13 @@ def test_anova_json_has_the_mixed_model_per_mode(built):
     import json
 
     from icub_affordance.spec import MODES
-    from icub_affordance.stats import MIXED_TERMS
+    from icub_affordance.stats import TERMS
 
     anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
-    assert set(anova["mixed"]) == set(MODES)
+    assert set(anova["contrasts"]) == set(MODES)
     for mode in MODES:
-        assert set(anova["mixed"][mode]) == set(MIXED_TERMS)
-        for term in anova["mixed"][mode].values():
+        assert set(anova["contrasts"][mode]) == set(TERMS)
+        for term in anova["contrasts"][mode].values():
             assert set(term) == {"estimate", "ci_low", "ci_high", "p"}
             assert term["ci_low"] <= term["estimate"] <= term["ci_high"]
     # the paper's analysis is still there, beside it

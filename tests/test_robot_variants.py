@@ -122,11 +122,11 @@ def test_rates_between_zero_and_one_give_the_mixed_model_and_contact_time_its_ow
 
     df = trials("v", success=lambda n, o: held[(n, o)], contact=contact, networks=6)
     effect = variant_effects(df)["v"]
-    assert effect["success"]["method"] == "mixed"
+    assert effect["success"]["method"] == "contrasts"
     times = effect["contact_time"]
-    assert times["method"] == "mixed"
-    assert times["mixed"]["congruency"]["estimate"] == pytest.approx(0.2, abs=1e-6)
-    assert times["mixed"]["size"]["estimate"] == pytest.approx(0.1, abs=1e-6)
+    assert times["method"] == "contrasts"
+    assert times["contrasts"]["congruency"]["estimate"] == pytest.approx(0.2, abs=1e-6)
+    assert times["contrasts"]["size"]["estimate"] == pytest.approx(0.1, abs=1e-6)
     verdict = robot_effect_verdict(times, "contact_time", "congruency")
     assert verdict.paper_direction and verdict.significant
 

@@ -475,10 +475,10 @@ def _exact_tests(df: pd.DataFrame) -> dict[str, dict[str, float]]:
 def _mixed_or_none(df: pd.DataFrame, measure: str) -> dict | None:
     """The mixed model of ``measure``, or None where its design is singular (a mapping x
     congruency x size combination with no network x object mean, say)."""
-    from .stats import mixed_model
+    from .stats import network_contrasts
 
     try:
-        return mixed_model(df, measure)
+        return network_contrasts(df, measure)
     except (np.linalg.LinAlgError, ValueError):
         return None
 
@@ -507,7 +507,7 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
         if mixed is None:
             success |= {"method": "exact", "tests": _exact_tests(df)}
         else:
-            success |= {"method": "mixed", "mixed": mixed}
+            success |= {"method": "contrasts", "contrasts": mixed}
         touched = df[df["contact_time"].notna()]
         contact: dict[str, object] = {
             "congruency": _counts(df, "congruency", "contact_time"),
@@ -526,6 +526,6 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
                 "network x object means in a congruency x size cell, or a singular design)",
             }
         else:
-            contact |= {"method": "mixed", "mixed": mixed}
+            contact |= {"method": "contrasts", "contrasts": mixed}
         out[str(run)] = {"success": success, "contact_time": contact}
     return out

@@ -56,10 +56,10 @@ def verdict(analysis: dict, effect: str, alpha: float = ALPHA) -> Verdict:
     return Verdict(paper_direction=bool(means[first] < means[second]), significant=bool(p < alpha))
 
 
-def mixed_verdict(mixed: dict, effect: str, alpha: float = ALPHA) -> Verdict:
+def contrast_verdict(contrasts: dict, effect: str, alpha: float = ALPHA) -> Verdict:
     """The verdict on ``effect`` of one mixed model (``anova.json``'s ``mixed`` of one mode): its
     estimate is the difference in the paper's direction (``stats.MIXED_CODING``), its p Wald's."""
-    term = mixed[effect]
+    term = contrasts[effect]
     return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(term["p"] < alpha))
 
 
@@ -230,8 +230,8 @@ def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float =
     (``effects.json``: success or contact_time), from its mixed model, or its exact test where
     the model could not be fitted; None where neither exists. The paper's direction: congruent
     and large objects faster (shorter contact time) and more often held (higher success)."""
-    if effect["method"] == "mixed":
-        term = effect["mixed"][factor]
+    if effect["method"] == "contrasts":
+        term = effect["contrasts"][factor]
         faster_when_paper = term["estimate"] > 0  # incongruent / small minus the other, coded +-1/2
         direction = faster_when_paper if measure == "contact_time" else term["estimate"] < 0
         return Verdict(paper_direction=bool(direction), significant=bool(term["p"] < alpha))

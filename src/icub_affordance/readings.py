@@ -1,10 +1,10 @@
 """Readings of the paper over replications (MODEL.md sections 5, 7, 8): per run, every measure's
-mixed model and per-object means; across a reading's replications, each effect's mean difference
+contrasts and per-object means; across a reading's replications, each effect's mean difference
 with a 95% interval, and how many replications show it significantly in the paper's direction and
 how many significantly reversed.
 
-An effect's difference is the mixed model's estimate with the factor coded -0.5 / +0.5
-(``stats.MIXED_CODING``): incongruent minus congruent, small minus large, averaged over the other
+An effect's difference is the contrasts' estimate with the factor coded -0.5 / +0.5
+(``stats.CODING``): incongruent minus congruent, small minus large, averaged over the other
 factors; for every measure higher is slower, so a positive difference is the paper's direction.
 """
 
@@ -15,9 +15,9 @@ import pandas as pd
 
 from .findings import ALPHA
 from .spec import MODES
-from .stats import categorisation_trials, cell_means, mean_ci, mixed_model, object_means
+from .stats import categorisation_trials, cell_means, mean_ci, network_contrasts, object_means
 
-#: The effects the paper reports, the mixed model's terms of the same name.
+#: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")
 
 #: The columns of data/readings/summary.csv (a contract).
@@ -37,14 +37,14 @@ SUMMARY_COLUMNS = [
 
 
 def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dict]:
-    """Per test mode and measure: the mixed model, the cell means and the per-object means of the
+    """Per test mode and measure: the contrasts, the cell means and the per-object means of the
     categorisation trials (``measures.csv``'s rows)."""
     out: dict[str, dict] = {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         out[mode] = {
             measure: {
-                "mixed": mixed_model(df, measure),
+                "contrasts": network_contrasts(df, measure),
                 "means": cell_means(df, measure),
                 "object_means": object_means(df, measure),
             }
@@ -56,21 +56,21 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
 def replication_rows(
     table: list[dict], analyses: list[dict], measures: list[str], mode: str = "closed_loop"
 ) -> pd.DataFrame:
-    """One row per reading, replication, measure and effect: the mixed model's estimate, its
+    """One row per reading, replication, measure and effect: the contrasts' estimate, its
     interval and p. ``table`` holds the readings' rows (reading, cue, goal_response, seed, run),
     ``analyses`` each row's ``analyse_measures`` result."""
     rows = []
     for row, analysis in zip(table, analyses, strict=True):
         for measure in measures:
             for effect in EFFECTS:
-                term = analysis[mode][measure]["mixed"][effect]
+                term = analysis[mode][measure]["contrasts"][effect]
                 rows.append(dict(row) | {"measure": measure, "effect": effect} | term)
     return pd.DataFrame(rows)
 
 
 def summary(replications: pd.DataFrame) -> pd.DataFrame:
     """One row per reading, measure and effect (``SUMMARY_COLUMNS``). ``diff`` is the mean over
-    replications of the mixed model's estimate; its interval a t-interval over replications, or,
+    replications of the contrasts' estimate; its interval a t-interval over replications, or,
     with a single replication, that replication's own 95% interval. ``n_paper`` and
     ``n_reversed`` count the replications with p < ALPHA in and against the paper's direction."""
     rows = []

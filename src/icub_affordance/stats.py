@@ -2,12 +2,13 @@
 
 Three analyses of the categorisation trials: the paper's two-way ANOVA over all trials (every
 trial an observation: the paper's analysis, shown, not used for inference), a repeated-measures
-ANOVA with the network as the subject, and the analysis used for inference, a linear mixed model
-(MODEL.md section 8): fixed effects congruency x size x mapping, a random intercept per network,
-fitted to each network's mean per object (the network is the unit: in closed loop a network's
-trials of one object and task are identical, whatever the sequence). The ANOVAs report F,
-degrees of freedom, p and partial eta squared; the mixed model an estimate, its 95% interval and p
-per term.
+ANOVA with the network as the subject, and the analysis used for inference: per-network contrasts
+of congruency x size, with the mapping between networks (``network_contrasts``; MODEL.md section
+8). The network is the unit: in closed loop a network's trials of one object and task are
+identical, whatever the sequence, so each network x object is counted once, and every test is a
+t-test over networks with the design's degrees of freedom. The ANOVAs report F, degrees of
+freedom, p and partial eta squared; the contrasts an estimate, its standard error, df, 95%
+t-interval and p per term.
 """
 
 from __future__ import annotations
@@ -95,15 +96,16 @@ def cell_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, float]:
     return out
 
 
-#: The mixed model's factors, each coded -0.5 / +0.5, the second level +0.5: so a main effect's
-#: estimate is the difference second - first averaged over the other factors (for congruency and
-#: size, positive is the paper's direction), and an interaction's the difference of differences.
-MIXED_CODING = {
+#: The factors of the analysis used for inference, each coded -0.5 / +0.5, the second level
+#: +0.5: so a main effect's estimate is the difference second - first averaged over the other
+#: factors (for congruency and size, positive is the paper's direction), and an interaction's the
+#: difference of differences.
+CODING = {
     "congruency": ("congruent", "incongruent"),
     "size": ("large", "small"),
     "mapping": ("A", "B"),
 }
-MIXED_TERMS = (
+TERMS = (
     "congruency",
     "size",
     "mapping",
@@ -112,19 +114,22 @@ MIXED_TERMS = (
     "size:mapping",
     "congruency:size:mapping",
 )
+#: The within-network contrasts, each a difference of a network's four congruency x size cells.
+WITHIN = ("congruency", "size", "congruency:size")
 
 
 def network_object_means(df: pd.DataFrame, depvar: str = "rmse") -> pd.DataFrame:
     """Each network's mean ``depvar`` per object (over its sequences), with the object's
-    congruency, size and the network's mapping: the mixed model's observations."""
+    congruency, size and the network's mapping: each network x object counted once (in closed
+    loop a network's sequences of one object and task are one and the same trial)."""
     keys = ["network", "mapping", "object", "congruency", "size"]
     return df.groupby(keys, as_index=False)[depvar].mean()
 
 
 def coded(means: pd.DataFrame) -> pd.DataFrame:
-    """The factors of ``MIXED_CODING`` as -0.5 / +0.5 columns."""
+    """The factors of ``CODING`` as -0.5 / +0.5 columns."""
     out = means.copy()
-    for factor, (first, second) in MIXED_CODING.items():
+    for factor, (first, second) in CODING.items():
         values = out[factor].astype(str)
         if not set(values) <= {first, second}:
             raise ValueError(f"{factor}: levels {sorted(set(values))}, expected {first}, {second}")
@@ -132,44 +137,167 @@ def coded(means: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def mixed_model(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
-    """statsmodels MixedLM (REML) of ``depvar`` on congruency x size x mapping, a random
-    intercept per network, over the networks' means per object. One entry per term (
-    ``MIXED_TERMS``): estimate, 95% Wald interval and p. A measure that is the same for every
-    network and object gives estimates of 0, zero-width intervals and an undefined (NaN) p."""
-    import warnings
-
-    import statsmodels.formula.api as smf
-
+def per_network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> pd.DataFrame:
+    """One row per network (index ``network``): its mapping (-0.5 A, +0.5 B), its mean over the
+    four congruency x size cells, and each within-network contrast (``WITHIN``: incongruent -
+    congruent, small - large, and the difference of the congruency differences small - large).
+    A network missing a cell (say, a robot measure undefined where nothing touched) is left out."""
     data = coded(network_object_means(df, depvar))
-    if data[depvar].nunique() == 1:
-        # every network scored the same on every object (say, every trial committing at the first
-        # step): no difference to estimate and no variance to test it against
-        return {
-            term: {"estimate": 0.0, "ci_low": 0.0, "ci_high": 0.0, "p": float("nan")}
-            for term in MIXED_TERMS
-        }
-    # fitted in units of the measure's standard deviation and scaled back (the estimates and
-    # intervals scale with it, p does not): at RMSE's scale (variances ~1e-4) the gradient
-    # optimisers stop early or meet a singular matrix
-    scale = float(data[depvar].std()) or 1.0
-    data["y"] = data[depvar] / scale
-    model = smf.mixedlm("y ~ congruency * size * mapping", data, groups=data["network"])
-    with warnings.catch_warnings():
-        # a network variance estimated at 0 is a boundary, not an error: the fit is still the
-        # REML fit, and the intervals of the fixed effects are still Wald's
-        warnings.simplefilter("ignore")
-        fit = model.fit(reml=True, method=["powell", "nm"])
-    ci = fit.conf_int(alpha=0.05)
+    cells = data.pivot_table(
+        index="network", columns=["congruency", "size"], values=depvar, aggfunc="mean"
+    )
+    full = [(c, s) for c in (-0.5, 0.5) for s in (-0.5, 0.5)]
+    cells = cells.reindex(columns=pd.MultiIndex.from_tuples(full)).dropna()
+    ci, cc = 0.5, -0.5  # incongruent, congruent
+    sm, lg = 0.5, -0.5  # small, large
+    out = pd.DataFrame(index=cells.index)
+    out["mapping"] = data.groupby("network")["mapping"].first().reindex(cells.index)
+    out["mean"] = cells.mean(axis=1)
+    out["congruency"] = (cells[(ci, sm)] + cells[(ci, lg)] - cells[(cc, sm)] - cells[(cc, lg)]) / 2
+    out["size"] = (cells[(ci, sm)] + cells[(cc, sm)] - cells[(ci, lg)] - cells[(cc, lg)]) / 2
+    out["congruency:size"] = (cells[(ci, sm)] - cells[(cc, sm)]) - (
+        cells[(ci, lg)] - cells[(cc, lg)]
+    )
+    return out
+
+
+def t_term(estimate: float, se: float, df: float, level: float = 0.95) -> dict[str, float]:
+    """An estimate with its standard error and degrees of freedom: t, the t-interval and the
+    two-sided p. A zero standard error (every network the same) gives p = 0 for a non-zero
+    estimate and an undefined p for a zero one."""
+    from scipy import stats as sps
+
+    estimate, se, df = float(estimate), float(se), float(df)
+    if not (df > 0 and np.isfinite(se)):
+        nan = float("nan")
+        return {"estimate": estimate, "se": nan, "t": nan, "df": df, "ci_low": nan,
+                "ci_high": nan, "p": nan}  # fmt: skip
+    if se == 0:
+        p = float("nan") if estimate == 0 else 0.0
+        t = float("nan") if estimate == 0 else float(np.sign(estimate) * np.inf)
+        return {"estimate": estimate, "se": 0.0, "t": t, "df": df, "ci_low": estimate,
+                "ci_high": estimate, "p": p}  # fmt: skip
+    half = float(sps.t.ppf(0.5 + level / 2, df)) * se
+    t = estimate / se
     return {
-        term: {
-            "estimate": float(fit.fe_params[term]) * scale,
-            "ci_low": float(ci.loc[term, 0]) * scale,
-            "ci_high": float(ci.loc[term, 1]) * scale,
-            "p": float(fit.pvalues[term]),
-        }
-        for term in MIXED_TERMS
+        "estimate": estimate,
+        "se": se,
+        "t": t,
+        "df": df,
+        "ci_low": estimate - half,
+        "ci_high": estimate + half,
+        "p": float(2 * sps.t.sf(abs(t), df)),
     }
+
+
+def group_regression(values: np.ndarray, mapping: np.ndarray) -> dict[str, dict[str, float]]:
+    """Per-network values regressed on the mapping (coded -0.5 / +0.5): ``mean``, the average of
+    the two mappings' means, and ``mapping``, their difference B - A, each with its t-test on the
+    residual degrees of freedom (networks - 2). With one mapping only, the mean and networks - 1."""
+    values, mapping = np.asarray(values, dtype=float), np.asarray(mapping, dtype=float)
+    n = len(values)
+    both = len(set(mapping.tolist())) == 2
+    X = np.column_stack([np.ones(n), mapping]) if both else np.ones((n, 1))
+    df = n - X.shape[1]
+    beta, *_ = np.linalg.lstsq(X, values, rcond=None)
+    tol = 1e-14 * max(1.0, float(np.abs(values).max()))
+    beta = np.where(np.abs(beta) < tol, 0.0, beta)  # rounding is no effect
+    resid = values - X @ beta
+    s2 = float(resid @ resid / df) if df > 0 else float("nan")
+    cov = s2 * np.linalg.inv(X.T @ X)
+    # a residual of rounding size is no variance: every network gave the same value
+    if df > 0 and np.allclose(resid, 0, atol=tol):
+        cov = np.zeros_like(cov)
+    out = {"mean": t_term(beta[0], np.sqrt(cov[0, 0]), df)}
+    nan = float("nan")
+    out["mapping"] = (
+        t_term(beta[1], np.sqrt(cov[1, 1]), df)
+        if both
+        else {
+            "estimate": nan,
+            "se": nan,
+            "t": nan,
+            "df": nan,
+            "ci_low": nan,
+            "ci_high": nan,
+            "p": nan,
+        }  # fmt: skip
+    )
+    return out
+
+
+def contrast_tests(contrasts: pd.DataFrame) -> dict[str, dict[str, float]]:
+    """Every term of ``TERMS`` from a table of per-network contrasts (``per_network_contrasts``,
+    or a difference of two such tables): each within contrast's mean over networks (the average
+    of the two mappings' means) and its difference between mappings, and the mapping's effect on
+    the network mean; t-tests with networks - 2 degrees of freedom (networks are the unit)."""
+    mapping = contrasts["mapping"].to_numpy()
+    out = {"mapping": group_regression(contrasts["mean"].to_numpy(), mapping)["mapping"]}
+    for term in WITHIN:
+        fit = group_regression(contrasts[term].to_numpy(), mapping)
+        out[term] = fit["mean"]
+        out[f"{term}:mapping"] = fit["mapping"]
+    n = int(len(contrasts))
+    return {term: out[term] | {"networks": n} for term in TERMS}
+
+
+def network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+    """The analysis used for inference (MODEL.md section 8): per term of ``TERMS``, the estimate
+    (coded as ``CODING``), its standard error, t, degrees of freedom, 95% t-interval and p, from
+    per-network contrasts. The network is the unit: each network's four objects are the four
+    congruency x size cells, so a within effect is a contrast of one network's cells, tested over
+    the networks with the mapping (between networks) as a covariate. For a balanced design the
+    estimates equal a mixed model's; the tests, unlike a random-intercept model's Wald z, assume
+    no common error across the three within contrasts and use t with networks - 2 df."""
+    return contrast_tests(per_network_contrasts(df, depvar))
+
+
+def difference_tests(
+    a: pd.DataFrame, b: pd.DataFrame, depvar: str = "rmse"
+) -> dict[str, dict[str, float]]:
+    """A minus B, term by term, paired by network: for two runs whose network k is the same
+    network under two settings (same seed, same mapping), the per-network contrasts' differences
+    tested as ``contrast_tests`` (the test of a difference between readings or cue timings)."""
+    ca, cb = per_network_contrasts(a, depvar), per_network_contrasts(b, depvar)
+    common = ca.index.intersection(cb.index)
+    ca, cb = ca.loc[common], cb.loc[common]
+    if not (ca["mapping"] == cb["mapping"]).all():
+        raise ValueError("paired runs differ in which networks learn which mapping")
+    diff = ca.drop(columns="mapping") - cb.drop(columns="mapping")
+    return contrast_tests(diff.assign(mapping=ca["mapping"]))
+
+
+def equivalence(term: dict[str, float], margin: float) -> dict[str, float]:
+    """Two one-sided t-tests (TOST) of ``|estimate| < margin`` from a term's estimate, standard
+    error and df: ``p`` is the larger one-sided p; below alpha, the difference is within the
+    margin (a "no difference" claim). ``margin`` must be declared before the result is read."""
+    from scipy import stats as sps
+
+    est, se, df = term["estimate"], term["se"], term["df"]
+    if not (margin > 0):
+        raise ValueError(f"an equivalence margin must be positive, got {margin}")
+    if not (np.isfinite(se) and df > 0):
+        return {"margin": margin, "p_lower": float("nan"), "p_upper": float("nan"),
+                "p": float("nan")}  # fmt: skip
+    if se == 0:
+        inside = float(abs(est) < margin)
+        return {"margin": margin, "p_lower": 1 - inside, "p_upper": 1 - inside, "p": 1 - inside}
+    p_lower = float(sps.t.sf((est + margin) / se, df))  # H0: estimate <= -margin
+    p_upper = float(sps.t.cdf((est - margin) / se, df))  # H0: estimate >= +margin
+    return {"margin": margin, "p_lower": p_lower, "p_upper": p_upper, "p": max(p_lower, p_upper)}
+
+
+def holm(pvalues) -> np.ndarray:
+    """Holm's step-down adjustment over one family of tests; undefined (NaN) p stay NaN and are
+    not counted in the family."""
+    from statsmodels.stats.multitest import multipletests
+
+    p = np.asarray(pvalues, dtype=float)
+    out = np.full_like(p, np.nan)
+    ok = np.isfinite(p)
+    if ok.any():
+        out[ok] = multipletests(p[ok], method="holm")[1]
+    return out
 
 
 def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
@@ -189,9 +317,9 @@ def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, 
 
 def analyse(trials: pd.DataFrame) -> dict[str, object]:
     """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode, and
-    the mixed model per mode under ``mixed``."""
+    the per-network contrasts (the analysis used for inference) per mode under ``contrasts``."""
     result: dict[str, object] = {}
-    mixed = {}
+    contrasts = {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         result[mode] = {
@@ -202,8 +330,8 @@ def analyse(trials: pd.DataFrame) -> dict[str, object]:
             "means": cell_means(df),
             "wrong_grip_rate": wrong_grip_rates(df),
         }
-        mixed[mode] = mixed_model(df)
-    result["mixed"] = mixed
+        contrasts[mode] = network_contrasts(df)
+    result["contrasts"] = contrasts
     return result
 
 

@@ -87,8 +87,8 @@ FINDINGS_READS = [
 FINDINGS_TABLES = [
     "anova_closed_loop",
     "anova_teacher_forced",
-    "mixed_closed_loop",
-    "mixed_teacher_forced",
+    "contrasts_closed_loop",
+    "contrasts_teacher_forced",
     "object_means",
     "comparison",
     "cue_anova",

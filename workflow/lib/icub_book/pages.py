@@ -21,7 +21,7 @@ from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolera
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
-from icub_affordance.stats import MIXED_TERMS
+from icub_affordance.stats import TERMS
 
 from . import text
 
@@ -69,17 +69,19 @@ def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def mixed_rows(anova: dict, mode: str) -> pd.DataFrame:
-    """The mixed model of one test mode, one row per term (results page)."""
+def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
+    """The per-network contrasts of one test mode, one row per term (results page)."""
     return pd.DataFrame(
         [
             {
                 "term": term.replace(":", " × "),
-                "estimate": anova["mixed"][mode][term]["estimate"],
-                "95% interval": text.fmt_ci(anova["mixed"][mode][term]),
-                "p": anova["mixed"][mode][term]["p"],
+                "estimate": anova["contrasts"][mode][term]["estimate"],
+                "95% interval": text.fmt_ci(anova["contrasts"][mode][term]),
+                "t": anova["contrasts"][mode][term]["t"],
+                "df": anova["contrasts"][mode][term]["df"],
+                "p": anova["contrasts"][mode][term]["p"],
             }
-            for term in MIXED_TERMS
+            for term in TERMS
         ]
     )
 
@@ -139,17 +141,17 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 
 def intro(anova: dict) -> dict:
     closed = anova["closed_loop"]
-    means, mixed = closed["means"], anova["mixed"]["closed_loop"]
-    cong = science.mixed_verdict(mixed, "congruency")
-    size = science.mixed_verdict(mixed, "size")
+    means, contrasts = closed["means"], anova["contrasts"]["closed_loop"]
+    cong = science.contrast_verdict(contrasts, "congruency")
+    size = science.contrast_verdict(contrasts, "size")
     return {
         "n_networks": closed["n_networks"],
         "cong": means["congruent"],
         "incong": means["incongruent"],
         "large": means["large"],
         "small": means["small"],
-        "cong_stats": text.fmt_mixed(mixed["congruency"]),
-        "size_stats": text.fmt_mixed(mixed["size"]),
+        "cong_stats": text.fmt_term(contrasts["congruency"]),
+        "size_stats": text.fmt_term(contrasts["size"]),
         "cong_dir": text.lower_or_higher(cong),
         "size_dir": text.lower_or_higher(size),
         "cong_verdict": text.paper_agreement(cong),
@@ -175,14 +177,14 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
                 out[f"{mode}_{analysis}_{effect}"] = text.fmt_f(r)
         for key, value in m["wrong_grip_rate"].items():
             out[f"{mode}_wrong_{key}"] = 100 * value
-        mixed = anova["mixed"][mode]
-        for term, r in mixed.items():
-            out[f"{mode}_mixed_{term.replace(':', '_x_')}"] = text.fmt_mixed(r)
+        contrasts = anova["contrasts"][mode]
+        for term, r in contrasts.items():
+            out[f"{mode}_contrast_{term.replace(':', '_x_')}"] = text.fmt_term(r)
         out[f"{mode}_cong_sentence"] = text.results_sentence(
-            "congruency", science.mixed_verdict(mixed, "congruency")
+            "congruency", science.contrast_verdict(contrasts, "congruency")
         )
         out[f"{mode}_size_sentence"] = text.results_sentence(
-            "size", science.mixed_verdict(mixed, "size")
+            "size", science.contrast_verdict(contrasts, "size")
         )
     out["n_trials"] = anova["closed_loop"]["n_trials"]
     out["cue"] = text.CUES[cue]
@@ -195,9 +197,9 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         "grip_distance_large": gap["large"],
         "grip_distance_small": gap["small"],
         "text": text.discussion(
-            science.mixed_verdict(anova["mixed"]["closed_loop"], "congruency"),
-            science.mixed_verdict(anova["mixed"]["closed_loop"], "size"),
-            science.mixed_verdict(anova["mixed"]["teacher_forced"], "size"),
+            science.contrast_verdict(anova["contrasts"]["closed_loop"], "congruency"),
+            science.contrast_verdict(anova["contrasts"]["closed_loop"], "size"),
+            science.contrast_verdict(anova["contrasts"]["teacher_forced"], "size"),
             gap,
             cue,
         ),
@@ -213,8 +215,8 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
         first, second = science.PAPER_ORDER[name]
         lower = first if m[first] < m[second] else second
         return (
-            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; mixed model "
-            f"{text.fmt_mixed(anova['mixed']['closed_loop'][name])}"
+            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; per-network contrast "
+            f"{text.fmt_term(anova['contrasts']['closed_loop'][name])}"
         )
 
     at, n = curve["at"], closed["n_networks"]
@@ -447,8 +449,8 @@ def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
     verdict = science.robot_effect_verdict(effect, measure, factor)
     if verdict is None:
         return f"not estimated ({effect['reason']})"
-    if effect["method"] == "mixed":
-        term = effect["mixed"][factor]
+    if effect["method"] == "contrasts":
+        term = effect["contrasts"][factor]
         unit = " s" if measure == "contact_time" else ""
         numbers = f"{term['estimate']:+.3f}{unit}, {text.fmt_ci(term)}, {text.fmt_p(term['p'])}"
     else:
@@ -533,8 +535,8 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "best_interval": _best_interval(best, grasping_trials),
         "cue_sentence": _cue_sentence(variants),
         "schedule_sentence": _schedule_sentence(trials),
-        "rmse_congruency": text.fmt_mixed(anova["mixed"]["closed_loop"]["congruency"]),
-        "rmse_size": text.fmt_mixed(anova["mixed"]["closed_loop"]["size"]),
+        "rmse_congruency": text.fmt_term(anova["contrasts"]["closed_loop"]["congruency"]),
+        "rmse_size": text.fmt_term(anova["contrasts"]["closed_loop"]["size"]),
     }
     rows = []
     for _, row in variants.iterrows():
@@ -718,7 +720,7 @@ def page_findings(
     }
     tables = (
         {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
-        | {f"mixed_{mode}": mixed_rows(anova, mode) for mode in MODES}
+        | {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
         | {
             "object_means": object_means(_json(inputs["measures.json"])),
             "comparison": comparison(anova, curve, config),

@@ -28,9 +28,12 @@ def fmt_ci(term: dict) -> str:
     return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
 
 
-def fmt_mixed(term: dict) -> str:
-    """A mixed-model term: estimate, 95% interval, p."""
-    return f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, {fmt_p(term['p'])}"
+def fmt_term(term: dict) -> str:
+    """A tested term: estimate, 95% t-interval, t with its degrees of freedom, p."""
+    return (
+        f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
+        f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
+    )
 
 
 def pct(x: float) -> str:
