@@ -731,4 +731,25 @@ def page_findings(
     )
     if sweep_table is not None:
         tables["sweep"] = sweep_table
-    return pages, tables
+    return traced(pages), tables
+
+
+def traced(pages: dict[str, dict]) -> dict[str, dict]:
+    """The pages' values with every ``text.Claim`` replaced by its sentence, and under ``claims``
+    ({page: {key: [entries]}}) the findings each rests on. An entry that names no value of
+    ``pages`` is refused: a claim must rest on numbers the book has."""
+    out: dict[str, dict] = {}
+    claims: dict[str, dict[str, list[str]]] = {}
+    for page, values in pages.items():
+        out[page] = {}
+        for key, value in values.items():
+            if isinstance(value, text.Claim):
+                claims.setdefault(page, {})[key] = list(value.rests_on)
+                value = value.text
+            out[page][key] = value
+    for page, keys in claims.items():
+        for key, entries in keys.items():
+            missing = [e for e in entries if e.split(".", 1)[1] not in out.get(e.split(".")[0], {})]
+            if missing:
+                raise KeyError(f"{page}.{key} rests on {missing}, which findings.json lacks")
+    return out | {"claims": claims}

@@ -8,8 +8,24 @@ are the package's (``icub_affordance.findings``); this module only says them. Th
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from icub_affordance.findings import Verdict, interval_direction
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A generated sentence that states a finding, and the entries of ``findings.json`` it rests
+    on (``"page.key"``: the statistic, not its words). The page shows ``text``; ``findings.json``
+    keeps ``rests_on`` under ``claims``, so a reader (and a test) can trace every finding the
+    book states to the numbers behind it."""
+
+    text: str
+    rests_on: tuple[str, ...]
+
+    def __post_init__(self) -> None:
+        if not self.rests_on or any("." not in r for r in self.rests_on):
+            raise ValueError(f"a claim names the findings it rests on as page.key: {self}")
 
 
 def fmt_p(p: float) -> str:
