@@ -445,3 +445,10 @@ def test_the_package_is_the_science():
             assert not {name.split(".")[0] for name in names} & machinery, (path.name, names)
     for moved in ("notebooks", "report", "sweep_cost"):
         assert not (REPO / "src" / "icub_affordance" / f"{moved}.py").exists(), moved
+
+
+def test_the_hidden_layer_sentence_follows_the_adjusted_tests():
+    from icub_book import text
+
+    assert text.divergence_sentence(3).text.startswith("From step 3 on, incongruent trials are")
+    assert "not significantly further" in text.divergence_sentence(None).text

@@ -372,6 +372,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "div_last_incong": float(divergence["incongruent"].iloc[-1]),
         "div_step1_cong": float(divergence["congruent"].iloc[0]),
         "div_step1_incong": float(divergence["incongruent"].iloc[0]),
+        "div_first_step": float("nan") if first_step is None else first_step,
         "div_sentence": text.divergence_sentence(first_step),
         "pca_explained": text.pct(science.explained_by_two_axes(explained)),
     }

@@ -286,18 +286,22 @@ def cue_difference(difference: dict, alpha: float = 0.05) -> Claim:
     return Claim(text, rests)
 
 
-def divergence_sentence(first_step: int | None) -> str:
+def divergence_sentence(first_step: int | None) -> Claim:
+    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps)."""
+    rests = ("beyond.div_first_step",)
     if first_step is not None:
-        return (
+        return Claim(
             f"From step {first_step} on, incongruent trials are significantly further from "
-            "grasping at every step (paired t-tests over networks, p < 0.05): the visual input "
-            "keeps drawing the network toward the grasp it learned for the object, and in "
-            "incongruent trials the output must be held away from it. This is the conflict, in "
-            "the hidden layer."
+            "grasping at every step (paired t-tests over networks, Holm-adjusted over the steps, "
+            "p < 0.05): while the output is held on the grip asked for, the hidden state stays "
+            "apart from the one the same object drives in a grasping trial.",
+            rests,
         )
-    return (
+    return Claim(
         "Incongruent trials are not significantly further from grasping at every step to the end "
-        "(paired t-tests over networks): this run shows no lasting conflict in the hidden layer."
+        "(paired t-tests over networks, Holm-adjusted over the steps): this run shows no lasting "
+        "conflict in the hidden layer.",
+        rests,
     )
 
 
