@@ -179,6 +179,10 @@ def test_the_words_say_the_verdict():
     assert text.results_sentence("size", reversed_) == (
         "large objects were slower (higher RMSE) than small ones, significantly"
     )
+    assert text.results_sentence("size", reversed_, interacts=True) == (
+        "large objects were slower (higher RMSE) than small ones on average over the other "
+        "factor, which it interacts with, significantly"
+    )
     # a difference that its test does not show is not stated, whichever way the means lie
     assert (
         text.results_sentence("size", against)
@@ -201,7 +205,7 @@ def test_the_congruency_paragraph_follows_its_test_and_the_cue():
     )  # noqa: E501
     for flipped in (Verdict(True, False), Verdict(False, True)):
         assert "not reproduced" in text.discussion_congruency(flipped, wrong, "first_step").text
-    assert set(shown.rests_on) >= {"discussion.congruency_estimate", "discussion.congruency_p"}
+    assert set(shown.rests_on) >= {"discussion.congruency_estimate", "discussion.congruency_p_holm"}
 
 
 def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
@@ -228,6 +232,7 @@ def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
     )
     assert "not significant" in text.discussion_size(Verdict(True, False), {}, no_drift).text
     assert "discussion.size_in_congruent_p_holm" in ruled_out.rests_on
+    assert "discussion.size_p_holm" in ruled_out.rests_on
 
 
 def test_the_teacher_forced_size_is_stated_with_its_interaction():

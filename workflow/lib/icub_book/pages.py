@@ -80,6 +80,9 @@ def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
                 "t": anova["contrasts"][mode][term]["t"],
                 "df": anova["contrasts"][mode][term]["df"],
                 "p": anova["contrasts"][mode][term]["p"],
+                "p (Holm, the paper's two effects)": anova["contrasts"][mode][term].get(
+                    "p_holm", float("nan")
+                ),
             }
             for term in TERMS
         ]
@@ -161,11 +164,13 @@ def intro(anova: dict) -> dict:
             "cong_dir": text.lower_or_higher(cong),
             "size_dir": text.lower_or_higher(size),
             "cong_verdict": text.Claim(
-                text.paper_agreement(cong), ("intro.congruency_estimate", "intro.congruency_p")
+                text.paper_agreement(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
             ),
             "size_verdict": text.Claim(
-                text.paper_agreement(size), ("intro.size_estimate", "intro.size_p")
+                text.paper_agreement(size), ("intro.size_estimate", "intro.size_p_holm")
             ),
+            "congruency_p_holm": contrasts["congruency"]["p_holm"],
+            "size_p_holm": contrasts["size"]["p_holm"],
         }
         | _term_values("congruency", contrasts["congruency"])
         | _term_values("size", contrasts["size"])
@@ -193,11 +198,20 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
         contrasts = anova["contrasts"][mode]
         for term, r in contrasts.items():
             out[f"{mode}_contrast_{term.replace(':', '_x_')}"] = text.fmt_term(r)
+        interaction = contrasts["congruency:size"]
+        out[f"{mode}_interaction_p"] = interaction["p"]
         for effect, short in (("congruency", "cong"), ("size", "size")):
             out |= _term_values(f"{mode}_{effect}", contrasts[effect])
+            out[f"{mode}_{effect}_p_holm"] = contrasts[effect]["p_holm"]
             out[f"{mode}_{short}_sentence"] = text.Claim(
-                text.results_sentence(effect, science.contrast_verdict(contrasts, effect)),
-                (f"results.{mode}_{effect}_estimate", f"results.{mode}_{effect}_p"),
+                text.results_sentence(
+                    effect, science.contrast_verdict(contrasts, effect), interaction["p"] < 0.05
+                ),
+                (
+                    f"results.{mode}_{effect}_estimate",
+                    f"results.{mode}_{effect}_p_holm",
+                    f"results.{mode}_interaction_p",
+                ),
             )
     out["n_trials"] = anova["closed_loop"]["n_trials"]
     out["n_networks_tested"] = anova["contrasts"]["closed_loop"]["congruency"]["networks"]
@@ -223,6 +237,7 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         | _term_values("forced_size", forced["size"])
         | _term_values("forced_interaction", forced["congruency:size"])
         | {"wrong_congruent": wrong["congruent"], "wrong_incongruent": wrong["incongruent"]}
+        | {f"{e}_p_holm": closed[e]["p_holm"] for e in ("congruency", "size")}
     )
     for name, term in simple.items():
         out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}

@@ -49,6 +49,7 @@ def fmt_term(term: dict) -> str:
     return (
         f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
         f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
+        + (f", Holm-adjusted {fmt_p(term['p_holm'])}" if "p_holm" in term else "")
     )
 
 
@@ -76,17 +77,19 @@ def significance(verdict: Verdict) -> str:
     return ", significantly" if verdict.significant else ", but not significantly"
 
 
-def results_sentence(effect: str, verdict: Verdict) -> str:
+def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> str:
     """One effect of one test mode (results page): a difference is stated only where its test is
-    significant; otherwise the sentence says that no difference was shown."""
+    significant; otherwise the sentence says that no difference was shown. ``interacts``: the
+    congruency x size interaction is significant, so a main effect is only an average."""
     if effect == "congruency":
         faster, slower, pair = "congruent trials", "incongruent ones", "congruent and incongruent"
     else:
         faster, slower, pair = "large objects", "small ones", "large and small objects"
+    average = " on average over the other factor, which it interacts with" if interacts else ""
     if verdict.significant:
         if verdict.paper_direction:
-            return f"{faster} were faster (lower RMSE) than {slower}, significantly"
-        return f"{faster} were slower (higher RMSE) than {slower}, significantly"
+            return f"{faster} were faster (lower RMSE) than {slower}{average}, significantly"
+        return f"{faster} were slower (higher RMSE) than {slower}{average}, significantly"
     return f"the difference between {pair} was not significant"
 
 
@@ -107,7 +110,7 @@ def simple_size_phrase(term: dict, where: str, alpha: float = 0.05) -> str:
 def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str) -> Claim:
     """The discussion's congruency paragraph: the verdict, and, with the cue at the first step,
     how often a trial ends nearer the other grip (the drift, counted)."""
-    rests = ("discussion.congruency_estimate", "discussion.congruency_p")
+    rests = ("discussion.congruency_estimate", "discussion.congruency_p_holm")
     if not congruency.reproduced:
         words = (
             "the opposite of the paper's direction"
@@ -141,7 +144,7 @@ def discussion_size(size: Verdict, simple: dict[str, dict], wrong: dict[str, flo
     """The discussion's size paragraph (closed loop): the verdict and, where the size effect is
     reversed, what the data say of drift toward the wrong grip as its cause: the size effect
     among congruent trials alone (where no trial drifts if their wrong-grip rate is 0)."""
-    rests = ("discussion.size_estimate", "discussion.size_p")
+    rests = ("discussion.size_estimate", "discussion.size_p_holm")
     if size.reproduced:
         return Claim(
             "**The size effect is reproduced:** large objects give a lower RMSE than small ones "
