@@ -258,7 +258,7 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
     from icub_book import text
 
     larger = text.cue_difference(term(0.03, 0.001))
-    assert "significantly larger with the cue first step only" in larger.text
+    assert "significantly larger with the cue at the first step only" in larger.text
     assert "One reading of this" in larger.text
     assert "at every step" in text.cue_difference(term(-0.03, 0.001)).text
     same = text.cue_difference(term(0.03, 0.2))

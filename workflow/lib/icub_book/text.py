@@ -278,7 +278,7 @@ def cue_difference(difference: dict, alpha: float = 0.05) -> Claim:
             f"({numbers}), so this run does not show that the cue's timing decides the effect.",
             rests,
         )
-    larger = "first step only" if difference["estimate"] > 0 else "at every step"
+    larger = "at the first step only" if difference["estimate"] > 0 else "at every step"
     text = f"The congruency effect is significantly larger with the cue {larger} ({numbers})."
     if difference["estimate"] > 0:
         text += (
