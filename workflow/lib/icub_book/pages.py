@@ -19,6 +19,7 @@ from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
 from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolerance_table
 from icub_affordance.io import load_npz
+from icub_affordance.measures import is_null_control
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS
@@ -107,13 +108,12 @@ def object_means(measures: dict) -> pd.DataFrame:
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The readings chapter: the matrix of readings x measures, the Goal map's clusters under
-    each response, and the conclusion, from data/readings/summary.csv."""
+    """The readings chapter: the matrix of readings x measures (raw and Holm-adjusted p), the
+    tests of the differences between cue timings and Goal responses, the Goal map's clusters
+    under each response, and the conclusions, each a ``text.Claim`` resting on the statistics
+    stored here (``text.summary_key``, ``text.difference_key``)."""
     summary = pd.read_csv(inputs["readings_summary.csv"])
-    directions = {
-        (row["reading"], row["measure"], row["effect"]): readings_science.direction(row)
-        for _, row in summary.iterrows()
-    }
+    differences = pd.read_csv(inputs["readings_differences.csv"])
     goal_units = {}
     for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
         if name in inputs:
@@ -123,20 +123,51 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
                     goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
                         soms["goal_act"][o, t]
                     )
-    reps = sorted(set(summary["replications"]))
-    values = goal_units | {
-        "n_readings": int(summary["reading"].nunique()),
-        "replications": " to ".join(map(str, reps)),
-        "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
-        "conclusion": text.readings_conclusion(summary, directions),
+    stats = {
+        text.summary_key(row, stat): float(row[stat])
+        for _, row in summary.iterrows()
+        for stat in ("diff", "p", "p_holm")
+        if np.isfinite(row[stat])  # a null control has no Holm p
+    } | {
+        text.difference_key(row, stat): float(row[stat])
+        for _, row in differences.iterrows()
+        for stat in ("diff", "p", "p_holm", "margin", "p_equivalence_holm")
+        if np.isfinite(row[stat])  # the cue timing has no equivalence test
     }
-    shown = summary.assign(
-        reading=[
-            text.reading_label(c, g)
-            for c, g in zip(summary["cue"], summary["goal_response"], strict=True)
-        ]
+    reps = sorted(set(summary["replications"]))
+    claims = text.readings_conclusion(summary) | {
+        "conclusion_null": text.null_control_sentence(summary),
+        "conclusion_cue": text.cue_timing_conclusion(differences),
+        "conclusion_goal": text.goal_response_conclusion(differences),
+    }
+    values = (
+        goal_units
+        | stats
+        | {
+            "n_readings": int(summary["reading"].nunique()),
+            "replications": " to ".join(map(str, reps)),
+            "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
+            "n_hypotheses": int((~summary["measure"].map(is_null_control)).sum()),
+            "margins": ", ".join(
+                f"{text.MEASURE_NAMES[m]} ±{v:g}"
+                for m, v in config["readings"]["equivalence_margin"].items()
+                if m in config["readings"]["measures"]
+            ),
+            "conclusion_method": text.readings_method(summary),
+        }
+        | {key: claim if claim is not None else "" for key, claim in claims.items()}
     )
-    return values, {"readings_matrix": readings_science.matrix(shown), "readings_summary": summary}
+
+    def shown(table: pd.DataFrame, columns: tuple[str, str]) -> list[str]:
+        return [text.reading_label(c, g) for c, g in zip(*(table[c] for c in columns), strict=True)]
+
+    return values, {
+        "readings_matrix": readings_science.matrix(
+            summary.assign(reading=shown(summary, ("cue", "goal_response")))
+        ),
+        "readings_summary": summary,
+        "readings_differences": readings_science.difference_display(differences),
+    }
 
 
 def intro(anova: dict) -> dict:
@@ -248,6 +279,21 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
     )
 
 
+def _cue_explanation(inputs: Mapping[str, str], config: dict) -> text.Claim | str:
+    """Whether the cue timing decides the congruency effect, from the paired test of the
+    difference between the two timings (data/readings/differences.csv), not from comparing one
+    run's verdict with the other's."""
+    differences = pd.read_csv(inputs["readings_differences.csv"])
+    goal = config["soms"]["goal_response"]
+    decides = readings_science.cue_timing_decides(differences, goal)
+    sentence = text.cue_decides_sentence(decides, goal)
+    if decides is None:
+        return sentence
+    row = {"comparison": "cue_timing", "at": goal, "measure": "rmse", "effect": "congruency"}
+    keys = (text.difference_key(row, "diff"), text.difference_key(row, "p_holm"))
+    return text.Claim(sentence, tuple(f"readings.{k}" for k in keys))
+
+
 def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
     """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
     emb = _json(inputs["embodied_analysis.json"])
@@ -304,11 +350,9 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
                         "partial η²": e["eta_p2"],
                     }
                 )
-    shows = {}
-    for name, cue, result in (("main", main_cue, main), ("ablation", ablation_cue, ablation)):
+    for name, result in (("main", main), ("ablation", ablation)):
         m = result["closed_loop"]
         v = science.verdict(m, "congruency")
-        shows[cue] = v.reproduced
         out |= {
             f"cue_{name}_congruent": m["means"]["congruent"],
             f"cue_{name}_incongruent": m["means"]["incongruent"],
@@ -319,7 +363,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     out |= {
         "main_cue_phrase": text.CUES[main_cue],
         "ablation_cue_phrase": text.CUES[ablation_cue],
-        "cue_explanation": text.cue_explanation(science.cue_timing_decides(shows)),
+        "cue_explanation": _cue_explanation(inputs, config),
     }
 
     # the hidden layer
