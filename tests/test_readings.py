@@ -365,7 +365,9 @@ def test_goal_sentence_says_no_difference_only_from_equivalence():
         p_holm=np.where(goal, 0.5, diffs["p_holm"]),
         p_equivalence_holm=np.where(goal, 0.001, diffs["p_equivalence_holm"]),
     )
-    assert "So the Goal response barely matters" in text.goal_response_conclusion(everything).text
+    same = text.goal_response_conclusion(everything).text
+    assert "So the Goal response barely matters" in same
+    assert same.startswith("No effect differs between the two Goal responses")
     nothing = everything.assign(p_equivalence_holm=np.where(goal, 0.2, np.nan))
     gone = text.goal_response_conclusion(nothing).text
     assert "no difference" not in gone and "barely matters" not in gone
@@ -377,7 +379,7 @@ def test_null_control_sentence_follows_both_effects():
     claim = text.null_control_sentence(summ)
     null = summ["measure"] == "rmse_per_grip_distance_null"
     moved = text.null_control_sentence(summ.assign(diff=np.where(null, 0.123, summ["diff"])))
-    assert "the null control gives +0.123" in moved.text and claim.text != moved.text
+    assert "beside +0.123 from the null control" in moved.text and claim.text != moved.text
     assert any(e.endswith("rmse_per_grip_distance_null_size_diff") for e in claim.rests_on)
 
 

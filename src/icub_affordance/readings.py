@@ -282,13 +282,13 @@ def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
         if direction(row) == "constant":
             return "0 (every network scored the same on every object)"
         counts = f"; {row['n_paper']}/{row['replications']} paper, {row['n_reversed']} reversed"
-        holm_text = (
-            "control, not adjusted" if is_null_control(row["measure"]) else
-            f"Holm p {fmt_p(row['p_holm'])}"
-        )  # fmt: skip
+        numbers = (
+            f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]; p {fmt_p(row['p'])}"
+        )
+        if is_null_control(row["measure"]):
+            return numbers + " (null control, not a hypothesis)"
         return (
-            f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]; "
-            f"p {fmt_p(row['p'])}, {holm_text}"
+            f"{numbers}, Holm p {fmt_p(row['p_holm'])}"
             f"{counts if row['replications'] > 1 else ''} ({direction(row)})"
         )
 

@@ -19,7 +19,6 @@ from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
 from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolerance_table
 from icub_affordance.io import load_npz
-from icub_affordance.measures import is_null_control
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS
@@ -123,16 +122,20 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
                     goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
                         soms["goal_act"][o, t]
                     )
+
+    def number(value) -> float | None:
+        """A statistic, or None (null) where there is none: a null control's Holm p, a constant
+        measure's p, the cue timing's equivalence test."""
+        return float(value) if np.isfinite(value) else None
+
     stats = {
-        text.summary_key(row, stat): float(row[stat])
+        text.summary_key(row, stat): number(row[stat])
         for _, row in summary.iterrows()
         for stat in ("diff", "p", "p_holm")
-        if np.isfinite(row[stat])  # a null control has no Holm p
     } | {
-        text.difference_key(row, stat): float(row[stat])
+        text.difference_key(row, stat): number(row[stat])
         for _, row in differences.iterrows()
         for stat in ("diff", "p", "p_holm", "margin", "p_equivalence_holm")
-        if np.isfinite(row[stat])  # the cue timing has no equivalence test
     }
     reps = sorted(set(summary["replications"]))
     claims = text.readings_conclusion(summary) | {
@@ -147,7 +150,7 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             "n_readings": int(summary["reading"].nunique()),
             "replications": " to ".join(map(str, reps)),
             "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
-            "n_hypotheses": int((~summary["measure"].map(is_null_control)).sum()),
+            "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
             "margins": ", ".join(
                 f"{text.MEASURE_NAMES[m]} ±{v:g}"
                 for m, v in config["readings"]["equivalence_margin"].items()

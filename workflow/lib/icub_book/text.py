@@ -453,10 +453,19 @@ def readings_method(summary) -> str:
     """How the matrix's tests were made (MyST): not a finding."""
     n = sorted(set(summary["replications"]))
     hypotheses = summary[~summary["measure"].map(is_null_control)]
+    tested = int(hypotheses["p"].map(math.isfinite).sum())
+    untested = len(hypotheses) - tested
     family = (
-        f"Holm's adjustment runs over the whole family of the matrix's {len(hypotheses)} tests "
-        "(every reading, measure and effect; the null control's rows are not hypotheses and "
-        "are left out), and a verdict needs the adjusted p below 0.05."
+        f"Holm's adjustment runs over the whole family of the matrix's {tested} tests (every "
+        "reading, measure and effect; the null control's rows are not hypotheses and are left "
+        "out"
+        + (
+            f", and so are {untested} cells where every network scored the same on every object, "
+            "which leave nothing to test"
+            if untested
+            else ""
+        )
+        + "), and a verdict needs the adjusted p below 0.05."
     )
     if n == [1]:
         return (
@@ -566,16 +575,19 @@ def null_control_sentence(summary) -> Claim | None:
                 & (summary["reading"] == row["reading"])
             ].iloc[0]
             parts.append(
-                f"*{reading_label(row['cue'], row['goal_response'])}* {row['diff']:+.3g}, of "
-                f"which the null control gives {control['diff']:+.3g}"
+                f"*{reading_label(row['cue'], row['goal_response'])}* {row['diff']:+.3g} "
+                f"beside {control['diff']:+.3g} from the null control"
             )
             keys += [summary_key(row, "diff"), summary_key(control, "diff")]
     if not parts:
         return None
     return Claim(
-        "The size effect on RMSE per grip distance beside the same effect made by dividing one "
-        "constant error per network by each trial's grip distance: " + "; ".join(parts) + ". "
-        "What the null control shows, the denominator makes by itself, whatever the network did.",
+        "The size effect on RMSE per grip distance, and the same effect made by dividing one "
+        "constant error per network by each trial's grip distance (the null control): "
+        + "; ".join(parts)
+        + ". What the null control shows, the denominator makes by itself, whatever the network "
+        "did: of a size effect on RMSE per grip distance, only what exceeds its null control "
+        "can come from the movements.",
         _on(keys),
     )
 
@@ -651,7 +663,12 @@ def goal_response_conclusion(differences) -> Claim | None:
     same = rows[rows["p_equivalence_holm"] < ALPHA]
     neither = len(rows) - len(sig) - len(same)
     sentences = []
-    if not sig.empty:
+    if sig.empty:
+        sentences.append(
+            "No effect differs between the two Goal responses after Holm's adjustment (a "
+            "widening bump minus a fixed one, paired by network)."
+        )
+    else:
         parts = [
             f"with {CUES[cue]}, " + _cells(group) for cue, group in sig.groupby("at", sort=False)
         ]
@@ -663,8 +680,13 @@ def goal_response_conclusion(differences) -> Claim | None:
         parts = []
         for cue, group in same.groupby("at", sort=False):
             items = [
-                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} (within "
-                f"±{r['margin']:g}, TOST {fmt_holm(r['p_equivalence_holm'])})"
+                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} ("
+                + (
+                    "the same on every network under both responses"
+                    if r["diff"] == r["ci_low"] == r["ci_high"] == 0
+                    else f"within ±{r['margin']:g}, TOST {fmt_holm(r['p_equivalence_holm'])}"
+                )
+                + ")"
                 for _, r in group.iterrows()
             ]
             parts.append(f"with {CUES[cue]}, " + "; ".join(items))
