@@ -473,3 +473,31 @@ def test_anova_json_has_the_contrasts_per_mode(built):
             assert term["ci_low"] <= term["estimate"] <= term["ci_high"]
     # the paper's analysis is still there, beside it
     assert "two_way" in anova["closed_loop"]
+
+
+def test_paired_readings_share_each_networks_seed(built):
+    """The pairing of the differences: network k of every reading at one seed draws the same
+    initial weights and the same training schedule (one generator, seeded by
+    train.network_seed(seed, k), draws both in that order), so the schedules in the learning
+    curves coincide between readings and differ between networks."""
+    import yaml
+    from conftest import TEST_CONFIG
+
+    cue = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["network"][
+        "categorisation_cue"
+    ]
+    other = {"first_step": "all_steps", "all_steps": "first_step"}[cue]
+    runs = [built / "data", built / "data" / "runs" / f"cue_{other}"]
+    runs += sorted((built / "data" / "runs").glob("reading_*"))
+    assert len(runs) >= 3
+    networks = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
+    columns = ["iteration", "task", "object", "sequence"]
+
+    def schedule(run, net):
+        return pd.read_csv(run / "train" / f"net{net:02d}" / "curve.csv")[columns]
+
+    for net in range(networks):
+        mine = schedule(runs[0], net)
+        for run in runs[1:]:
+            pd.testing.assert_frame_equal(schedule(run, net), mine)
+    assert not schedule(runs[0], 0).equals(schedule(runs[0], 1))
