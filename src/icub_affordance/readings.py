@@ -334,23 +334,5 @@ def difference_display(table: pd.DataFrame) -> pd.DataFrame:
     )
 
 
-def cue_timing_decides(
-    table: pd.DataFrame, goal: str, measure: str = "rmse", effect: str = "congruency"
-) -> bool | None:
-    """Whether the cue at the first step only gives a larger ``effect`` on ``measure`` than the
-    cue at every step (with Goal response ``goal``), by the paired test of the difference
-    (``differences``, Holm-adjusted); None where the differences do not include that test."""
-    rows = table[
-        (table["comparison"] == "cue_timing")
-        & (table["at"] == goal)
-        & (table["measure"] == measure)
-        & (table["effect"] == effect)
-    ]
-    if rows.empty:
-        return None
-    row = rows.iloc[0]
-    return bool(row["p_holm"] < ALPHA and row["diff"] > 0)
-
-
 def finite(values) -> bool:
     return bool(np.all(np.isfinite(np.asarray(values, dtype=float))))
