@@ -539,6 +539,12 @@ def _on(keys) -> tuple[str, ...]:
     return tuple(f"readings.{k}" for k in keys)
 
 
+def _stats(row, stats, key) -> list[str]:
+    """The keys of a row's statistics that exist (a constant cell has no p, a null control no
+    Holm p): what a claim can rest on."""
+    return [key(row, stat) for stat in stats if math.isfinite(float(row[stat]))]
+
+
 def reading_label(cue: str, goal: str) -> str:
     return f"{CUES[cue]}, {GOAL_RESPONSES[goal]}"
 
@@ -607,7 +613,7 @@ def readings_conclusion(summary) -> dict[str, Claim]:
         for reading in readings:
             for effect in effects:
                 row = rows[(reading, measure, effect)]
-                keys += [summary_key(row, "diff"), summary_key(row, "p_holm")]
+                keys += _stats(row, ("diff", "p_holm"), summary_key)
         return _on(keys)
 
     lines, rests = [], []
@@ -708,8 +714,7 @@ def cue_timing_conclusion(differences) -> Claim | None:
     ]
     if rows.empty:
         return None
-    keys = _on(k for _, r in rows.iterrows() for k in (difference_key(r, "diff"),
-                                                        difference_key(r, "p_holm")))  # fmt: skip
+    keys = _on(k for _, r in rows.iterrows() for k in _stats(r, ("diff", "p_holm"), difference_key))
     sig = rows[rows["p_holm"] < ALPHA]
     if sig.empty:
         return Claim(
@@ -751,11 +756,7 @@ def goal_response_conclusion(differences) -> Claim | None:
     keys = _on(
         k
         for _, r in rows.iterrows()
-        for k in (
-            difference_key(r, "diff"),
-            difference_key(r, "p_holm"),
-            difference_key(r, "p_equivalence_holm"),
-        )
+        for k in _stats(r, ("diff", "p_holm", "p_equivalence_holm"), difference_key)
     )
     sig = rows[rows["p_holm"] < ALPHA]
     same = rows[rows["p_equivalence_holm"] < ALPHA]
