@@ -1,52 +1,119 @@
-"""The three measures of a trial (MODEL.md section 8), on hand-made trajectories."""
+"""The measures of a trial (MODEL.md section 8), on hand-made trajectories."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from icub_affordance.measures import grip_distance, time_to_commit
-
-STEPS = 5  # step 0 (given) and 4 predicted steps, one DoF
-
-
-def demo(values) -> np.ndarray:
-    return np.array(values, dtype=float)[:, None]
-
-
-REQUIRED = demo([0.5, 0.6, 0.7, 0.8, 0.9])  # rises
-OTHER = demo([0.5, 0.4, 0.3, 0.2, 0.1])  # falls
-
-
-@pytest.mark.parametrize(
-    ("outputs", "expected"),
-    [
-        ([0.6, 0.7, 0.8, 0.9], 1),  # on the required grip from the first step
-        ([0.4, 0.3, 0.6, 0.9], 3),  # starts toward the other grip, turns at step 3
-        ([0.6, 0.4, 0.7, 0.8], 3),  # nearer, then not (step 2), then nearer for good
-        ([0.6, 0.7, 0.8, 0.2], STEPS),  # ends at the other grip: never commits
-        ([0.4, 0.3, 0.2, 0.1], STEPS),  # the other grip throughout
-        ([0.5, 0.5, 0.5, 0.9], 4),  # a tie (equally far) is not nearer
-    ],
+from icub_affordance.measures import (
+    MEASURES,
+    analysed,
+    commitment,
+    commitment_steps,
+    grip_distance,
+    is_null_control,
+    wrong_grip,
 )
-def test_time_to_commit(outputs, expected):
-    assert time_to_commit(demo(outputs), REQUIRED, OTHER) == expected
+
+# Two DoF, step 0 (the common start) and 4 predicted steps: the grips part along DoF 0, the
+# required one rising, the other falling, further apart at every step.
+REQUIRED = np.array([[0.5, 0.5], [0.6, 0.5], [0.7, 0.5], [0.8, 0.5], [0.9, 0.5]])
+OTHER = np.array([[0.5, 0.5], [0.4, 0.5], [0.3, 0.5], [0.2, 0.5], [0.1, 0.5]])
 
 
-def test_time_to_commit_uses_every_dof():
-    required = np.array([[0, 0], [1, 0], [1, 0]], dtype=float)
-    other = np.array([[0, 0], [0, 1], [0, 1]], dtype=float)
-    # step 1 nearer the other grip in the second DoF only, step 2 nearer the required one
-    outputs = np.array([[0.6, 0.9], [0.9, 0.1]])
-    assert time_to_commit(outputs, required, other) == 2
+def between(share: float, off_line: float = 0.0) -> np.ndarray:
+    """Outputs a share of the way from the required grip to the other at every predicted step,
+    plus ``off_line`` in DoF 1 (perpendicular to the line between the grips)."""
+    out = REQUIRED[1:] + share * (OTHER[1:] - REQUIRED[1:])
+    return out + np.array([0.0, off_line])
 
 
-def test_time_to_commit_needs_matching_lengths():
-    with pytest.raises(ValueError, match="one step fewer"):
-        time_to_commit(demo([0.6, 0.7]), REQUIRED, OTHER)
+@pytest.mark.parametrize(("share", "expected"), [(0.0, 0.0), (1.0, 1.0), (0.5, 0.5)])
+@pytest.mark.parametrize("off_line", [0.0, 0.3, -0.2])
+def test_commitment_is_the_position_on_the_line_between_the_grips(share, expected, off_line):
+    outputs = between(share, off_line)
+    assert commitment(outputs, REQUIRED, OTHER) == pytest.approx(expected)
+    assert commitment_steps(outputs, REQUIRED, OTHER) == pytest.approx([expected] * 4)
+
+
+def test_commitment_weighs_steps_by_how_far_apart_the_grips_are():
+    # on the other grip at step 1 (grips 0.2 apart), on the required one after (0.4 .. 0.8)
+    outputs = np.vstack([OTHER[1], REQUIRED[2:]])
+    steps = commitment_steps(outputs, REQUIRED, OTHER)
+    assert steps == pytest.approx([1, 0, 0, 0])
+    gaps2 = np.array([0.2, 0.4, 0.6, 0.8]) ** 2
+    assert commitment(outputs, REQUIRED, OTHER) == pytest.approx(gaps2[0] / gaps2.sum())
+    assert commitment(outputs, REQUIRED, OTHER) < steps.mean()  # not the plain mean of steps
+
+
+def test_commitment_beyond_the_grips_and_undefined_where_they_coincide():
+    assert commitment(between(-0.5), REQUIRED, OTHER) == pytest.approx(-0.5)
+    assert commitment(between(1.5), REQUIRED, OTHER) == pytest.approx(1.5)
+    same = np.repeat(REQUIRED[:1], 5, axis=0)
+    assert np.isnan(commitment(same[1:], same, same))
+    assert np.isnan(commitment_steps(same[1:], same, same)).all()
+
+
+@pytest.mark.parametrize(("share", "expected"), [(0.0, 0), (0.4, 0), (0.5, 0), (0.6, 1), (1.0, 1)])
+def test_wrong_grip_is_the_final_posture_nearer_the_other_grip(share, expected):
+    # only the last step counts; a tie (halfway) is not wrong
+    outputs = between(0.0)
+    outputs[-1] = between(share)[-1]
+    assert wrong_grip(outputs, REQUIRED, OTHER) == expected
+    outputs[:-1] = OTHER[1:-1]  # earlier steps on the other grip change nothing
+    assert wrong_grip(outputs, REQUIRED, OTHER) == expected
+
+
+def test_wrong_grip_agrees_with_final_grip_on_built_trials(built):
+    """``wrong_grip`` is the evaluation's ``final_grip`` differing from ``target_grip``."""
+    import pandas as pd
+
+    keys = ["network", "mode", "task", "object", "sequence"]
+    trials = pd.read_csv(built / "data" / "eval" / "trials.csv", keep_default_na=False)
+    measures = pd.read_csv(built / "data" / "eval" / "measures.csv", keep_default_na=False)
+    both = trials.merge(measures, on=keys, suffixes=("", "_m"), validate="one_to_one")
+    assert len(both) == len(trials) == len(measures)
+    expected = (both["final_grip"] != both["target_grip"]).astype(int)
+    assert (both["wrong_grip"] == expected).all()
+    assert both["rmse"].to_numpy() == pytest.approx(both["rmse_m"].to_numpy(), abs=1e-5)
+
+
+def test_null_control_is_a_constant_error_over_the_grip_distance(built):
+    import pandas as pd
+
+    measures = pd.read_csv(built / "data" / "eval" / "measures.csv", keep_default_na=False)
+    cat = measures[measures["task"] == "categorisation"]
+    for (_net, _mode), group in cat.groupby(["network", "mode"]):
+        constant = group["rmse"].mean()
+        assert (group["rmse_per_grip_distance_null"] * group["grip_distance"]).to_numpy() == (
+            pytest.approx(np.full(len(group), constant), rel=1e-4)
+        )
+        assert (group["rmse_per_grip_distance"] * group["grip_distance"]).to_numpy() == (
+            pytest.approx(group["rmse"].to_numpy(), rel=1e-4)
+        )
+
+
+def test_measures_need_matching_lengths():
+    for f in (wrong_grip, commitment, commitment_steps):
+        with pytest.raises(ValueError, match="one step fewer"):
+            f(REQUIRED, REQUIRED, OTHER)
+
+
+def test_analysed_adds_each_null_control_after_its_measure():
+    assert analysed(MEASURES) == [
+        "rmse",
+        "wrong_grip",
+        "commitment",
+        "rmse_per_grip_distance",
+        "rmse_per_grip_distance_null",
+    ]
+    assert analysed(["rmse"]) == ["rmse"]
+    assert is_null_control("rmse_per_grip_distance_null") and not is_null_control("rmse")
+    with pytest.raises(ValueError, match="time_to_commit"):
+        analysed(["rmse", "time_to_commit"])
 
 
 def test_grip_distance_ignores_the_common_first_step():
-    required = demo([0.5, 0.7, 0.9])
-    other = demo([0.5, 0.3, 0.1])
+    required = np.array([0.5, 0.7, 0.9])[:, None]
+    other = np.array([0.5, 0.3, 0.1])[:, None]
     assert grip_distance(required, other) == pytest.approx(np.sqrt((0.4**2 + 0.8**2) / 2))

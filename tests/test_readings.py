@@ -1,19 +1,36 @@
-"""The readings of the paper (MODEL.md sections 5, 7, 8): runs derived from the config, and the
-summary over replications (data/readings/summary.csv)."""
+"""The readings of the paper (MODEL.md sections 5, 7, 8): runs derived from the config, the
+summary over replications (data/readings/summary.csv) with its tests and Holm's adjustment, the
+tests of the differences between readings (data/readings/differences.csv), and the sentences
+generated from them, each changed when the statistic it rests on is."""
 
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 import pytest
 from conftest import REPO, load_config, run_snakemake, scratch_workflow
-from icub_book.text import readings_conclusion
+from icub_book import text
+from icub_book.pages import readings as readings_page
+from icub_book.pages import traced
+from scipy import stats as sps
 
-from icub_affordance.readings import SUMMARY_COLUMNS, direction, matrix, summary
+from icub_affordance.readings import (
+    DIFFERENCE_COLUMNS,
+    SUMMARY_COLUMNS,
+    difference_replications,
+    difference_verdict,
+    differences,
+    direction,
+    matrix,
+    summary,
+)
+from icub_affordance.stats import difference_tests, holm
+
+READINGS = ("first_step+fixed", "first_step+grows", "all_steps+fixed", "all_steps+grows")
 
 
-def replications(estimates: dict[str, list[tuple[float, float]]]) -> pd.DataFrame:
-    """Rows as the rule `readings` writes them: (estimate, p) per replication of each reading,
-    one measure (rmse) and effect (congruency)."""
+def replications(estimates: dict, measure: str = "rmse", effect: str = "congruency"):
+    """Rows as the rule `readings` writes them: (estimate, p) per replication of each reading."""
     rows = []
     for reading, values in estimates.items():
         cue, goal = reading.split("+")
@@ -24,10 +41,12 @@ def replications(estimates: dict[str, list[tuple[float, float]]]) -> pd.DataFram
                     "cue": cue,
                     "goal_response": goal,
                     "seed": seed,
-                    "run": f"r{seed}",
-                    "measure": "rmse",
-                    "effect": "congruency",
+                    "run": f"{reading}_{seed}",
+                    "measure": measure,
+                    "effect": effect,
                     "estimate": estimate,
+                    "se": 0.005,
+                    "df": 10.0,
                     "ci_low": estimate - 0.01,
                     "ci_high": estimate + 0.01,
                     "p": p,
@@ -36,42 +55,326 @@ def replications(estimates: dict[str, list[tuple[float, float]]]) -> pd.DataFram
     return pd.DataFrame(rows)
 
 
-def test_summary_counts_replications_each_way():
+def test_summary_tests_each_reading_and_adjusts_over_the_family():
+    reps = [(0.04, 0.001), (0.03, 0.01), (0.01, 0.2), (-0.02, 0.04)]
     table = summary(
-        replications(
-            {
-                "first_step+fixed": [(0.04, 0.001), (0.03, 0.01), (0.01, 0.2), (-0.02, 0.04)],
-                "all_steps+fixed": [(0.02, 0.03)],
-            }
+        pd.concat(
+            [
+                replications({"first_step+fixed": reps, "all_steps+fixed": [(0.02, 0.03)]}),
+                replications(
+                    {"all_steps+fixed": [(0.5, 0.01)]}, measure="rmse_per_grip_distance_null"
+                ),
+            ]
         )
     )
     assert list(table.columns) == SUMMARY_COLUMNS
-    many, one = table.iloc[0], table.iloc[1]
+    many, one, null = table.iloc[0], table.iloc[1], table.iloc[2]
     assert many["replications"] == 4 and many["n_paper"] == 2 and many["n_reversed"] == 1
     assert many["diff"] == pytest.approx(0.015)
-    assert many["ci_low"] < 0.015 < many["ci_high"]  # a t-interval over the four estimates
-    # one replication: its own interval
+    # several replications: a t-test of their estimates, df = replications - 1
+    ref = sps.ttest_1samp([e for e, _ in reps], 0.0)
+    assert (many["p"], many["df"]) == pytest.approx((ref.pvalue, 3))
+    assert many["ci_low"] < 0.015 < many["ci_high"]
+    # one replication: its own test
     assert (one["diff"], one["ci_low"], one["ci_high"]) == pytest.approx((0.02, 0.01, 0.03))
-    assert one["n_paper"] == 1 and one["n_reversed"] == 0
-    assert direction(one) == "paper" and direction(many) == "none"
+    assert (one["p"], one["df"]) == (0.03, 10)
+    # Holm over the two hypotheses; the null control is not one
+    assert [many["p_holm"], one["p_holm"]] == pytest.approx(holm([many["p"], 0.03]))
+    assert np.isnan(null["p_holm"])
+    # verdicts on the adjusted p: 0.03 alone would pass, 0.06 after Holm does not
+    assert one["p_holm"] == pytest.approx(0.06) and direction(one) == "none"
+    assert direction(null) == "paper"  # a control's verdict is on its raw p
+    assert direction(pd.Series({**one, "p_holm": 0.049})) == "paper"
+    assert direction(pd.Series({**one, "p_holm": 0.049, "diff": -0.02})) == "reversed"
 
 
-def test_conclusion_and_matrix_name_every_reading():
+def test_matrix_shows_raw_and_holm_p():
     table = summary(
-        replications({"first_step+fixed": [(0.04, 0.001)], "all_steps+grows": [(-0.03, 0.001)]})
+        replications({"first_step+fixed": [(0.04, 0.0005)], "all_steps+fixed": [(0.02, 0.03)]})
     )
-    size = table.assign(
-        effect="size", diff=-table["diff"], ci_low=-table["ci_high"], ci_high=-table["ci_low"]
-    )
-    both = pd.concat([table, size], ignore_index=True)
-    directions = {
-        (r["reading"], r["measure"], r["effect"]): direction(r) for _, r in both.iterrows()
+    wide = matrix(table)
+    cells = wide["rmse"].tolist()
+    assert "p < 0.001, Holm p 0.001" in cells[0] and "(paper)" in cells[0]
+    assert "p 0.030, Holm p 0.030" in cells[1]
+
+
+# -- synthetic runs: networks whose per-network effects are known -----------------------------
+
+OBJECTS = {  # object: (size, category)
+    "big_ball": ("large", "natural"),
+    "small_ball": ("small", "natural"),
+    "big_cube": ("large", "artefact"),
+    "small_cube": ("small", "artefact"),
+}
+NATURAL = {"large": "power", "small": "precision"}
+MAPPING = {
+    "A": {"natural": "power", "artefact": "precision"},
+    "B": {"natural": "precision", "artefact": "power"},
+}
+
+
+def run_trials(congruency, size, networks: int = 8, seed: int = 0, sd: float = 0.002):
+    """A run's categorisation trials (closed loop, 2 identical sequences): each network's value
+    0.1 + its congruency effect if incongruent (coded +-0.5) + its size effect if small, with
+    network noise; ``congruency``/``size`` per network or a constant. Every measure the same."""
+    rng = np.random.default_rng(seed)
+    cong = np.broadcast_to(np.asarray(congruency, dtype=float), (networks,))
+    sz = np.broadcast_to(np.asarray(size, dtype=float), (networks,))
+    rows = []
+    for net in range(networks):
+        mapping = "A" if net < networks // 2 else "B"
+        for obj, (osize, category) in OBJECTS.items():
+            congruent = MAPPING[mapping][category] == NATURAL[osize]
+            value = (
+                0.1
+                + cong[net] * (-0.5 if congruent else 0.5)
+                + sz[net] * (0.5 if osize == "small" else -0.5)
+                + rng.normal(0, sd)
+            )
+            for seq in range(2):
+                rows.append(
+                    {
+                        "network": net,
+                        "mapping": mapping,
+                        "mode": "closed_loop",
+                        "task": "categorisation",
+                        "object": obj,
+                        "size": osize,
+                        "congruent": str(congruent),
+                        "sequence": seq,
+                    }
+                    | {m: value for m in ("rmse", "rmse_per_grip_distance")}
+                    | {"rmse_per_grip_distance_null": 0.5 + rng.normal(0, sd)}
+                )
+    closed = pd.DataFrame(rows)
+    return pd.concat([closed, closed.assign(mode="teacher_forced")], ignore_index=True)
+
+
+def readings_table(seeds=(2009,)):
+    return [
+        {
+            "reading": r,
+            "cue": r.split("+")[0],
+            "goal_response": r.split("+")[1],
+            "seed": s,
+            "run": f"{r}_{s}",
+        }  # fmt: skip
+        for r in READINGS
+        for s in seeds
+    ]
+
+
+def test_differences_are_paired_by_network():
+    rng = np.random.default_rng(1)
+    base = rng.normal(0.03, 0.01, 8)  # each network's own congruency effect
+    effects = {  # reading: (congruency per network, size)
+        "first_step+fixed": (base + 0.02, 0.0),
+        "first_step+grows": (base + 0.02, 0.0),
+        "all_steps+fixed": (base, 0.0),
+        "all_steps+grows": (base, 0.01),
     }
-    text = readings_conclusion(both, directions)
-    assert "one replication" in text
-    assert "no reading gives both effects" in text
-    wide = matrix(both)
-    assert len(wide) == 4 and "rmse" in wide.columns
+    table = readings_table()
+    trials = {
+        row["run"]: run_trials(*effects[row["reading"]], seed=i) for i, row in enumerate(table)
+    }
+    reps = difference_replications(table, trials, ["rmse"])
+    assert set(reps["comparison"]) == {"cue_timing", "goal_response"}
+    cue = reps[(reps["comparison"] == "cue_timing") & (reps["at"] == "fixed")]
+    cong = cue[cue["effect"] == "congruency"].iloc[0]
+    assert (cong["a"], cong["b"]) == ("first_step+fixed", "all_steps+fixed")
+    expected = difference_tests(
+        trials["first_step+fixed_2009"][lambda d: d["task"] == "categorisation"].assign(
+            congruency=lambda d: np.where(d["congruent"] == "True", "congruent", "incongruent")
+        ),
+        trials["all_steps+fixed_2009"][lambda d: d["task"] == "categorisation"].assign(
+            congruency=lambda d: np.where(d["congruent"] == "True", "congruent", "incongruent")
+        ),
+        "rmse",
+    )["congruency"]
+    assert cong["estimate"] == pytest.approx(expected["estimate"])
+    assert cong["estimate"] == pytest.approx(0.02, abs=0.003)
+    # paired: the networks' own effects (sd 0.01) cancel, so the test is sharp
+    assert cong["p"] < 1e-4 and cong["df"] == 6
+    out = differences(reps, {"rmse": 0.01})
+    assert list(out.columns) == DIFFERENCE_COLUMNS
+    assert out["p_holm"].to_numpy() == pytest.approx(holm(out["p"]))
+    goal = out[out["comparison"] == "goal_response"].set_index(["at", "effect"])
+    # the Goal response: no difference under first_step (equivalent within 0.01), a size
+    # difference of 0.01 under all_steps (not equivalent)
+    assert goal.loc[("first_step", "congruency"), "p_equivalence_holm"] < 0.05
+    assert difference_verdict(goal.loc[("first_step", "congruency")]) == "equivalent"
+    assert goal.loc[("all_steps", "size"), "diff"] == pytest.approx(0.01, abs=0.003)
+    assert difference_verdict(goal.loc[("all_steps", "size")]) == "a > b"
+    assert out[out["comparison"] == "cue_timing"]["p_equivalence"].isna().all()
+
+
+def test_differences_over_replications_test_the_replications_differences():
+    table = readings_table(seeds=(1, 2, 3))
+    diffs = {1: 0.01, 2: 0.02, 3: 0.04}
+    trials = {}
+    for i, row in enumerate(table):
+        shift = diffs[row["seed"]] if row["cue"] == "first_step" else 0.0
+        trials[row["run"]] = run_trials(0.03 + shift, 0.0, seed=i)
+    out = differences(difference_replications(table, trials, ["rmse"]), {"rmse": 0.01})
+    row = out[(out["comparison"] == "cue_timing") & (out["at"] == "fixed")]
+    row = row[row["effect"] == "congruency"].iloc[0]
+    assert row["replications"] == 3 and row["df"] == 2
+    assert row["diff"] == pytest.approx(np.mean(list(diffs.values())), abs=0.003)
+
+
+def test_a_missing_margin_is_a_clear_error():
+    table = readings_table()
+    trials = {row["run"]: run_trials(0.03, 0.0, seed=i) for i, row in enumerate(table)}
+    with pytest.raises(ValueError, match="equivalence_margin has no margin for 'rmse'"):
+        differences(difference_replications(table, trials, ["rmse"]), {})
+
+
+# -- the sentences: each changes when the statistic it rests on does --------------------------
+
+
+def built_tables(cong_shift=0.02, grows_size=0.01, margin=0.01, seed=0):
+    rng = np.random.default_rng(seed)
+    base = rng.normal(0.03, 0.01, 8)
+    effects = {
+        "first_step+fixed": (base + cong_shift, 0.0),
+        "first_step+grows": (base + cong_shift, 0.0),
+        "all_steps+fixed": (base, 0.0),
+        "all_steps+grows": (base, grows_size),
+    }
+    table = readings_table()
+    trials = {
+        row["run"]: run_trials(*effects[row["reading"]], seed=i) for i, row in enumerate(table)
+    }
+    measures = ["rmse", "rmse_per_grip_distance"]
+    from icub_affordance.readings import analyse_measures, replication_rows
+
+    analyses = [analyse_measures(trials[row["run"]], measures) for row in table]
+    summ = summary(replication_rows(table, analyses, measures))
+    margins = {"rmse": margin, "rmse_per_grip_distance": margin}
+    diffs = differences(difference_replications(table, trials, measures), margins)
+    return summ, diffs
+
+
+def page(tmp_path, summ, diffs):
+    summ.to_csv(tmp_path / "summary.csv", index=False)
+    diffs.to_csv(tmp_path / "differences.csv", index=False)
+    inputs = {
+        "readings_summary.csv": str(tmp_path / "summary.csv"),
+        "readings_differences.csv": str(tmp_path / "differences.csv"),
+    }
+    config = {
+        "readings": {
+            "measures": ["rmse", "rmse_per_grip_distance"],
+            "equivalence_margin": {"rmse": 0.01, "rmse_per_grip_distance": 0.01},
+        }
+    }
+    values, tables = readings_page(inputs, config)
+    return traced({"readings": values})
+
+
+def test_every_readings_claim_rests_on_values_the_page_stores(tmp_path):
+    summ, diffs = built_tables()
+    # a cell where every network scored the same has no test: its claim rests on its difference
+    summ.loc[0, ["diff", "ci_low", "ci_high", "p", "p_holm"]] = [0.0, 0.0, 0.0, np.nan, np.nan]
+    diffs.loc[0, ["p", "p_holm"]] = np.nan
+    pages = page(tmp_path, summ, diffs)
+    claims = pages["claims"]["readings"]
+    assert set(claims) >= {
+        "conclusion_effects",
+        "conclusion_paper_measure",
+        "conclusion_other_measures",
+        "conclusion_null",
+        "conclusion_cue",
+        "conclusion_goal",
+    }
+    for entries in claims.values():
+        for entry in entries:
+            assert isinstance(pages["readings"][entry.split(".", 1)[1]], float), entry
+    assert pages["readings"][text.summary_key(summ.iloc[0], "p_holm")] is None
+
+
+def test_effect_lines_follow_holm_p():
+    summ, _ = built_tables()
+    key = (
+        (summ["reading"] == "all_steps+fixed")
+        & (summ["measure"] == "rmse")
+        & (summ["effect"] == "congruency")
+    )
+    shown = text.readings_conclusion(summ.assign(p_holm=np.where(key, 0.01, summ["p_holm"])))
+    hidden = text.readings_conclusion(summ.assign(p_holm=np.where(key, 0.2, summ["p_holm"])))
+    flipped = text.readings_conclusion(
+        summ.assign(
+            p_holm=np.where(key, 0.01, summ["p_holm"]),
+            diff=np.where(key, -summ["diff"], summ["diff"]),
+        )  # fmt: skip
+    )
+
+    def line(claims):
+        lines = claims["conclusion_effects"].text.splitlines()
+        return next(x for x in lines if "Congruency, the paper's RMSE" in x)
+
+    label = "*the cue at every step, a Goal bump of fixed width*"
+    assert label in line(shown).split("not shown")[0]  # in the paper's direction
+    assert label in line(hidden).split("not shown")[1]
+    assert label in line(flipped).split("reversed")[1]
+    assert line(shown) != line(hidden) != line(flipped)
+
+
+def test_paper_measure_sentence_needs_both_effects_after_holm():
+    summ, _ = built_tables()
+    rmse = summ["measure"] == "rmse"
+    first = summ["reading"] == "first_step+fixed"
+    both = summ.assign(p_holm=np.where(rmse & first, 0.001, 0.5), diff=np.abs(summ["diff"]) + 0.01)
+    claim = text.readings_conclusion(both)["conclusion_paper_measure"]
+    assert "both effects go the paper's way with *the cue at the first step only" in claim.text
+    one = both.assign(
+        p_holm=np.where(rmse & first & (summ["effect"] == "size"), 0.06, both["p_holm"])
+    )
+    assert (
+        "no reading gives both effects"
+        in text.readings_conclusion(one)["conclusion_paper_measure"].text
+    )
+
+
+def test_cue_sentence_only_from_the_test_of_the_difference():
+    _, diffs = built_tables(cong_shift=0.02)
+    claim = text.cue_timing_conclusion(diffs)
+    assert claim.text.startswith("The cue timing changes these effects")
+    assert "the congruency effect on the paper's RMSE (+0.02" in claim.text
+    not_shown = text.cue_timing_conclusion(diffs.assign(p_holm=np.maximum(diffs["p_holm"], 0.06)))
+    assert not_shown.text.startswith("No difference between the two cue timings survives")
+    assert "readings.cue_timing_fixed_rmse_congruency_p_holm" in claim.rests_on
+
+
+def test_goal_sentence_says_no_difference_only_from_equivalence():
+    _, diffs = built_tables(grows_size=0.01)
+    claim = text.goal_response_conclusion(diffs)
+    assert "The Goal response changes these effects" in claim.text
+    assert "the size effect on the paper's RMSE (+0.01" in claim.text
+    assert "the Goal response is shown to make no difference" in claim.text
+    assert "barely matters" not in claim.text
+    assert "neither show a difference" not in claim.text  # every effect is one or the other
+    goal = diffs["comparison"] == "goal_response"
+    everything = diffs.assign(
+        p_holm=np.where(goal, 0.5, diffs["p_holm"]),
+        p_equivalence_holm=np.where(goal, 0.001, diffs["p_equivalence_holm"]),
+    )
+    same = text.goal_response_conclusion(everything).text
+    assert "So the Goal response barely matters" in same
+    assert same.startswith("No effect differs between the two Goal responses")
+    nothing = everything.assign(p_equivalence_holm=np.where(goal, 0.2, np.nan))
+    gone = text.goal_response_conclusion(nothing).text
+    assert "no difference" not in gone and "barely matters" not in gone
+    assert "neither show a difference" in gone
+
+
+def test_null_control_sentence_follows_both_effects():
+    summ, _ = built_tables()
+    claim = text.null_control_sentence(summ)
+    null = summ["measure"] == "rmse_per_grip_distance_null"
+    moved = text.null_control_sentence(summ.assign(diff=np.where(null, 0.123, summ["diff"])))
+    assert "beside +0.123 from the null control" in moved.text and claim.text != moved.text
+    assert any(e.endswith("rmse_per_grip_distance_null_size_diff") for e in claim.rests_on)
 
 
 def job_counts(stdout: str) -> dict[str, int]:
@@ -127,19 +430,29 @@ def test_closed_loop_trials_do_not_depend_on_the_sequence(built):
 
 
 def test_readings_summary_has_every_cell(built):
+    from icub_affordance.measures import analysed
+
     table = pd.read_csv(built / "data" / "readings" / "summary.csv")
     readings = load_config()["readings"]
     assert list(table.columns) == SUMMARY_COLUMNS
-    assert len(table) == (
-        len(readings["categorisation_cue"])
-        * len(readings["goal_response"])
-        * len(readings["measures"])
-        * 2
-    )
+    n_readings = len(readings["categorisation_cue"]) * len(readings["goal_response"])
+    assert len(table) == n_readings * len(analysed(readings["measures"])) * 2
+    assert set(table["measure"]) == set(analysed(readings["measures"]))
     assert (table["replications"] == 1).all()
+    import yaml
+    from conftest import TEST_CONFIG
+
+    networks = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
+    assert (table["df"] == networks - 2).all()  # one replication: its own t over networks
+    hypotheses = table[table["measure"] != "rmse_per_grip_distance_null"]
+    assert hypotheses["p_holm"].to_numpy() == pytest.approx(holm(hypotheses["p"]), nan_ok=True)
+    diffs = pd.read_csv(built / "data" / "readings" / "differences.csv")
+    assert list(diffs.columns) == DIFFERENCE_COLUMNS
+    # each comparison at each level of the other choice, every measure, both effects
+    assert len(diffs) == 2 * 2 * len(analysed(readings["measures"])) * 2
 
 
-def test_anova_json_has_the_mixed_model_per_mode(built):
+def test_anova_json_has_the_contrasts_per_mode(built):
     import json
 
     from icub_affordance.spec import MODES
@@ -150,7 +463,35 @@ def test_anova_json_has_the_mixed_model_per_mode(built):
     for mode in MODES:
         assert set(anova["contrasts"][mode]) == set(TERMS)
         for term in anova["contrasts"][mode].values():
-            assert set(term) == {"estimate", "ci_low", "ci_high", "p"}
+            assert {"estimate", "ci_low", "ci_high", "p", "df"} <= set(term)
             assert term["ci_low"] <= term["estimate"] <= term["ci_high"]
     # the paper's analysis is still there, beside it
     assert "two_way" in anova["closed_loop"]
+
+
+def test_paired_readings_share_each_networks_seed(built):
+    """The pairing of the differences: network k of every reading at one seed draws the same
+    initial weights and the same training schedule (one generator, seeded by
+    train.network_seed(seed, k), draws both in that order), so the schedules in the learning
+    curves coincide between readings and differ between networks."""
+    import yaml
+    from conftest import TEST_CONFIG
+
+    cue = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["network"][
+        "categorisation_cue"
+    ]
+    other = {"first_step": "all_steps", "all_steps": "first_step"}[cue]
+    runs = [built / "data", built / "data" / "runs" / f"cue_{other}"]
+    runs += sorted((built / "data" / "runs").glob("reading_*"))
+    assert len(runs) >= 3
+    networks = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
+    columns = ["iteration", "task", "object", "sequence"]
+
+    def schedule(run, net):
+        return pd.read_csv(run / "train" / f"net{net:02d}" / "curve.csv")[columns]
+
+    for net in range(networks):
+        mine = schedule(runs[0], net)
+        for run in runs[1:]:
+            pd.testing.assert_frame_equal(schedule(run, net), mine)
+    assert not schedule(runs[0], 0).equals(schedule(runs[0], 1))

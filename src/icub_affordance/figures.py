@@ -221,26 +221,33 @@ def sweep_effects(points, path) -> None:
 
 def readings_effects(summary, replications, path) -> None:
     """Every reading's congruency and size effects on every measure: the mean difference over
-    replications with its 95% interval (positive: the paper's direction), and each replication's
-    estimate as a small dot."""
-    measures = list(dict.fromkeys(summary["measure"]))
+    replications with its 95% interval (positive: the paper's direction), coloured by the verdict
+    on Holm's p (``readings.direction``), and each replication's estimate as a small dot. A
+    measure with a null control (``measures.NULL_CONTROLS``) shows it in the same panel, just
+    below each reading, as an open grey square: the effect the denominator alone makes."""
+    from .measures import NULL_CONTROLS, is_null_control
+    from .readings import direction
+
+    measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     readings = list(dict.fromkeys(summary["reading"]))
     effects = ("congruency", "size")
+    colour = {"paper": "C2", "reversed": "C3", "none": "0.5", "constant": "0.5"}
     fig, axes = plt.subplots(
-        len(measures), 2, figsize=(10, 1.0 + 0.45 * len(readings) * len(measures)), squeeze=False
+        len(measures), 2, figsize=(10, 1.0 + 0.55 * len(readings) * len(measures)), squeeze=False
     )
     y = np.arange(len(readings))
+
+    def rows_of(measure, effect):
+        rows = summary[(summary["measure"] == measure) & (summary["effect"] == effect)]
+        return rows.set_index("reading").loc[readings]
+
     for i, measure in enumerate(measures):
         for j, effect in enumerate(effects):
             ax = axes[i, j]
-            rows = summary[(summary["measure"] == measure) & (summary["effect"] == effect)]
-            rows = rows.set_index("reading").loc[readings]
+            rows = rows_of(measure, effect)
             mean = rows["diff"].to_numpy()
             err = np.vstack([mean - rows["ci_low"], rows["ci_high"] - mean])
-            colours = [
-                "C2" if lo > 0 else ("C3" if hi < 0 else "0.5")
-                for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
-            ]
+            colours = [colour[direction(r | {"measure": measure})] for r in rows.to_dict("records")]
             ax.errorbar(mean, y, xerr=err, fmt="none", ecolor="0.6", capsize=3)
             ax.scatter(mean, y, c=colours, zorder=3)
             reps = replications[
@@ -248,14 +255,32 @@ def readings_effects(summary, replications, path) -> None:
             ]
             for k, reading in enumerate(readings):
                 est = reps.loc[reps["reading"] == reading, "estimate"].to_numpy()
-                ax.scatter(est, np.full(len(est), k + 0.25), s=6, c="0.4", zorder=2)
+                ax.scatter(est, np.full(len(est), k + 0.2), s=6, c="0.4", zorder=2)
+            null = NULL_CONTROLS.get(measure)
+            if null is not None and null in set(summary["measure"]):
+                nrows = rows_of(null, effect)
+                nmean = nrows["diff"].to_numpy()
+                nerr = np.vstack([nmean - nrows["ci_low"], nrows["ci_high"] - nmean])
+                ax.errorbar(nmean, y + 0.35, xerr=nerr, fmt="none", ecolor="0.75", capsize=2)
+                ax.scatter(
+                    nmean,
+                    y + 0.35,
+                    marker="s",
+                    facecolors="none",
+                    edgecolors="0.3",
+                    zorder=3,
+                    label="null control: a constant error / grip distance",
+                )
+                if j == 0:
+                    ax.legend(fontsize=7, loc="best")
             ax.axvline(0, color="0.3", lw=0.8)
             ax.set_yticks(y, readings if j == 0 else [""] * len(readings), fontsize=8)
             ax.invert_yaxis()
             ax.set_title(f"{measure}: {effect}", fontsize=9)
             ax.grid(alpha=0.3)
     fig.suptitle(
-        "difference in the paper's direction (> 0): green / red = interval above / below 0",
+        "difference in the paper's direction (> 0), 95% interval; green / red: Holm-adjusted "
+        "p < 0.05 in / against the paper's direction",
         fontsize=9,
     )
     fig.tight_layout()

@@ -1,18 +1,40 @@
-"""Three measures of one test trial, declared before any result was read (config
-``readings.measures``; MODEL.md section 8). Each stands for the reaction time; higher is slower.
+"""The measures of one test trial, declared in the config (``readings.measures``) before any of
+their results was read (MODEL.md section 8). For every measure, higher is further from the
+required grip: the paper's reading is that higher is slower.
 
 - ``rmse``: the paper's, the root mean square over the predicted steps and the 16 DoF of the
   output's difference from the required grip's demonstration (as in ``eval/trials.csv``).
-- ``time_to_commit``: the first step from which on the output stays nearer the required grip's
-  demonstrated trajectory than the other grip's (the same object and sequence, compared step by
-  step). Steps are numbered 1 .. steps-1 (step 0, the common initial posture, is not predicted);
-  a trial whose output is not nearer the required grip at the last step never commits and
-  scores ``steps`` (one past the last).
+- ``wrong_grip``: 1 if the trial's final posture (the output at the last step) is nearer, in
+  Euclidean distance over the 16 DoF, the other grip's demonstrated final posture than the
+  required grip's (same object and sequence), else 0: the ``final_grip`` column of
+  ``eval/trials.csv`` differing from ``target_grip`` (a tie is not wrong). A network's mean over
+  an object's sequences is a proportion; the analysis takes each network x object's proportion
+  once, as for every measure (``stats.network_contrasts``).
+- ``commitment``: how far along the line from the required grip to the other grip the output
+  moved. At predicted step t, with r_t and q_t the required and the other grip's demonstrated
+  postures and o_t the output, the output's position on the line from r_t (0) to q_t (1) is
+  (o_t - r_t).(q_t - r_t) / |q_t - r_t|^2; the component of o_t - r_t off that line is ignored.
+  One number per trial: the least-squares position over the predicted steps,
+  sum_t (o_t - r_t).(q_t - r_t) / sum_t |q_t - r_t|^2, the single position c for which the
+  postures r_t + c (q_t - r_t) come nearest the outputs. It weighs each step by how far apart the
+  two grips are there (squared), so the first steps, where both grips are still near the common
+  initial posture and a step's own position is unstable, count little. 0 is on the required
+  grip throughout, 1 on the other, 0.5 halfway. The per-step positions are kept too
+  (``commitment_step{t}``, for a figure; not analysed).
 - ``rmse_per_grip_distance``: the trial's RMSE divided by the distance between the object's two
   demonstrated grips (same sequence): the root mean square over the predicted steps and 16 DoF of
-  the power demonstration's difference from the precision one. It asks how far off the trial is
-  in units of how far apart its two possible answers lie, which differs between objects: a large
-  object's two grips are further apart than a small one's.
+  the other grip's demonstration's difference from the required one's. A large object's two
+  grips lie further apart than a small one's, so the division alone favours a size effect in the
+  paper's direction (small higher). Kept only beside its null control,
+  ``rmse_per_grip_distance_null``: the same division applied to a constant error, each
+  network's own mean RMSE over its categorisation trials of the test mode divided by each
+  trial's grip distance. Whatever effect the null control shows comes from the denominator
+  alone.
+
+``time_to_commit`` (the first step from which the output stayed nearer the required grip) was
+retired: in closed loop it took almost only the values 1 and ``steps``, the latter exactly for
+the trials that ended nearer the wrong grip, so it was a rescaled wrong-grip indicator, not a
+latency.
 """
 
 from __future__ import annotations
@@ -24,26 +46,65 @@ from .jordan import Weights, run_closed_loop
 from .spec import MODES
 from .train import Materials
 
-#: The measures, in the order of the tables; config ``readings.measures`` declares which are used.
-MEASURES: tuple[str, ...] = ("rmse", "time_to_commit", "rmse_per_grip_distance")
+#: The measures that can be declared, in the order of the tables (config ``readings.measures``).
+MEASURES: tuple[str, ...] = ("rmse", "wrong_grip", "commitment", "rmse_per_grip_distance")
+
+#: A measure's null control, analysed beside it whenever it is declared (not a hypothesis).
+NULL_CONTROLS: dict[str, str] = {"rmse_per_grip_distance": "rmse_per_grip_distance_null"}
 
 
-def time_to_commit(outputs: np.ndarray, required: np.ndarray, other: np.ndarray) -> int:
-    """The step from which on ``outputs`` stays nearer ``required`` than ``other``.
+def analysed(measures) -> list[str]:
+    """The declared measures with each one's null control right after it: what is analysed."""
+    unknown = [m for m in measures if m not in MEASURES]
+    if unknown:
+        raise ValueError(f"unknown measure(s) {unknown}; the measures are {list(MEASURES)}")
+    out = []
+    for m in measures:
+        out += [m] + ([NULL_CONTROLS[m]] if m in NULL_CONTROLS else [])
+    return out
 
-    ``outputs`` (steps-1, DoF): the postures the network output for steps 1 .. steps-1;
-    ``required`` and ``other`` (steps, DoF): the two grips' demonstrated trajectories, step 0
-    included. Nearer is a smaller Euclidean distance at the same step (a tie is not nearer).
-    Returns a step in 1 .. steps-1, or ``steps`` if the last output is not nearer ``required``.
-    """
+
+def is_null_control(measure: str) -> bool:
+    return measure in NULL_CONTROLS.values()
+
+
+def _check(outputs, required, other) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     outputs, required, other = (np.asarray(a, dtype=float) for a in (outputs, required, other))
     if not (len(outputs) == len(required) - 1 == len(other) - 1):
         raise ValueError("outputs need one step fewer than the demonstrations (step 0 is given)")
-    nearer = np.linalg.norm(outputs - required[1:], axis=1) < np.linalg.norm(
-        outputs - other[1:], axis=1
-    )
-    not_nearer = np.flatnonzero(~nearer)
-    return 1 if len(not_nearer) == 0 else int(not_nearer[-1]) + 2
+    if not (outputs.shape[1:] == required.shape[1:] == other.shape[1:]):
+        raise ValueError("outputs and demonstrations need the same DoF")
+    return outputs, required[1:], other[1:]
+
+
+def wrong_grip(outputs: np.ndarray, required: np.ndarray, other: np.ndarray) -> int:
+    """1 if the last output is strictly nearer the other grip's final posture than the required
+    grip's, else 0. ``outputs`` (steps-1, DoF): steps 1 .. steps-1; ``required`` and ``other``
+    (steps, DoF): the two grips' demonstrated trajectories, step 0 included."""
+    outputs, required, other = _check(outputs, required, other)
+    last = outputs[-1]
+    return int(np.linalg.norm(last - other[-1]) < np.linalg.norm(last - required[-1]))
+
+
+def commitment_steps(outputs: np.ndarray, required: np.ndarray, other: np.ndarray) -> np.ndarray:
+    """Each predicted step's position of the output on the line from the required grip's
+    posture (0) to the other grip's (1); NaN at a step where the two grips coincide."""
+    outputs, required, other = _check(outputs, required, other)
+    line = other - required
+    length2 = (line**2).sum(axis=1)
+    along = ((outputs - required) * line).sum(axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(length2 > 0, along / np.where(length2 > 0, length2, 1), np.nan)
+
+
+def commitment(outputs: np.ndarray, required: np.ndarray, other: np.ndarray) -> float:
+    """The trial's commitment: the least-squares position over the predicted steps,
+    sum_t (o_t - r_t).(q_t - r_t) / sum_t |q_t - r_t|^2 (module docstring); NaN if the two grips
+    coincide at every step."""
+    outputs, required, other = _check(outputs, required, other)
+    line = other - required
+    total = float((line**2).sum())
+    return float(((outputs - required) * line).sum() / total) if total > 0 else float("nan")
 
 
 def grip_distance(required: np.ndarray, other: np.ndarray) -> float:
@@ -56,23 +117,33 @@ def measure_network(
     m: Materials, weights: Weights, network: int, mapping: str, cue: str, target: str
 ) -> list[dict[str, object]]:
     """One row per test trial of one network (both tasks and modes, as ``evaluate``), with every
-    measure."""
+    measure, its null control and the per-step commitment."""
     setup = TrialSet.of(m, mapping, cue, target)
     learned = m.targets(target)
     rows = []
     for mode in MODES:
         forced = setup.teacher if mode == "teacher_forced" else None
         out, _ = run_closed_loop(weights, setup.context, setup.teacher[:, 0], forced)
+        mode_rows = []
         for i, (_task, o, s) in enumerate(setup.trials):
             g = setup.grips[i]
             required, other = learned[o, g, s], learned[o, 1 - g, s]
             rmse = float(np.sqrt(((out[i] - required[1:]) ** 2).mean()))
-            rows.append(
+            steps = commitment_steps(out[i], required, other)
+            mode_rows.append(
                 describe_trial(m, setup, i, network, mapping, mode)
                 | {
                     "rmse": rmse,
-                    "time_to_commit": time_to_commit(out[i], required, other),
+                    "wrong_grip": wrong_grip(out[i], required, other),
+                    "commitment": commitment(out[i], required, other),
                     "rmse_per_grip_distance": rmse / grip_distance(required, other),
+                    "grip_distance": grip_distance(required, other),
                 }
+                | {f"commitment_step{t + 1}": float(v) for t, v in enumerate(steps)}
             )
+        categorisation = [r["rmse"] for r in mode_rows if r["task"] == "categorisation"]
+        constant = float(np.mean(categorisation))
+        for r in mode_rows:
+            r["rmse_per_grip_distance_null"] = constant / r["grip_distance"]
+        rows += mode_rows
     return rows

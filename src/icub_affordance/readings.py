@@ -1,11 +1,23 @@
 """Readings of the paper over replications (MODEL.md sections 5, 7, 8): per run, every measure's
 contrasts and per-object means; across a reading's replications, each effect's mean difference
-with a 95% interval, and how many replications show it significantly in the paper's direction and
-how many significantly reversed.
+with a 95% interval, its t-test and its Holm-adjusted p, and how many replications show it
+significantly in the paper's direction and how many significantly reversed; and the tests of the
+differences between readings (the cue timing, the Goal response), paired by network.
 
 An effect's difference is the contrasts' estimate with the factor coded -0.5 / +0.5
 (``stats.CODING``): incongruent minus congruent, small minus large, averaged over the other
-factors; for every measure higher is slower, so a positive difference is the paper's direction.
+factors; for every measure higher is further from the required grip, so a positive difference is
+the paper's direction.
+
+Inference (MODEL.md section 8). With one replication, an effect's test is the replication's own
+t-test over its networks (df = networks - 2, ``stats.network_contrasts``); with several, a t-test
+of the replications' estimates (df = replications - 1). The family for Holm's adjustment is every
+row of a table that is a hypothesis: every reading x measure x effect of the summary, every
+comparison x measure x effect of the differences; a null control's rows
+(``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are
+left out of the family (their ``p_holm`` is empty). A verdict ("paper", "reversed") needs the
+adjusted p below ``findings.ALPHA``; otherwise it is "none", which is not "no difference": only
+an equivalence test (TOST, with a margin declared in config) can say that.
 """
 
 from __future__ import annotations
@@ -14,13 +26,23 @@ import numpy as np
 import pandas as pd
 
 from .findings import ALPHA
+from .measures import analysed, is_null_control
 from .spec import MODES
-from .stats import categorisation_trials, cell_means, mean_ci, network_contrasts, object_means
+from .stats import (
+    categorisation_trials,
+    cell_means,
+    difference_tests,
+    equivalence,
+    holm,
+    network_contrasts,
+    object_means,
+    t_term,
+)
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")
 
-#: The columns of data/readings/summary.csv (a contract).
+#: The columns of data/readings/summary.csv: the contract's, then df, p and p_holm.
 SUMMARY_COLUMNS = [
     "reading",
     "cue",
@@ -33,11 +55,43 @@ SUMMARY_COLUMNS = [
     "ci_high",
     "n_paper",
     "n_reversed",
+    "df",
+    "p",
+    "p_holm",
 ]
+
+#: The columns of data/readings/differences.csv: one row per comparison (the readings ``a`` and
+#: ``b`` differing in one choice, the other choice ``at``), measure and effect; ``diff`` is a's
+#: effect minus b's. The equivalence columns are filled for the Goal response only.
+DIFFERENCE_COLUMNS = [
+    "comparison",
+    "at",
+    "a",
+    "b",
+    "measure",
+    "effect",
+    "replications",
+    "diff",
+    "ci_low",
+    "ci_high",
+    "df",
+    "p",
+    "p_holm",
+    "margin",
+    "p_equivalence",
+    "p_equivalence_holm",
+]
+
+#: The comparisons between readings: which choice differs, and its two levels a, b (a - b).
+COMPARISONS = {
+    "cue_timing": ("cue", "first_step", "all_steps"),
+    "goal_response": ("goal_response", "grows", "fixed"),
+}
 
 
 def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dict]:
-    """Per test mode and measure: the contrasts, the cell means and the per-object means of the
+    """Per test mode and measure (the declared ones, each with its null control:
+    ``measures.analysed``): the contrasts, the cell means and the per-object means of the
     categorisation trials (``measures.csv``'s rows)."""
     out: dict[str, dict] = {}
     for mode in MODES:
@@ -48,7 +102,7 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
                 "means": cell_means(df, measure),
                 "object_means": object_means(df, measure),
             }
-            for measure in measures
+            for measure in analysed(measures)
         }
     return out
 
@@ -57,68 +111,184 @@ def replication_rows(
     table: list[dict], analyses: list[dict], measures: list[str], mode: str = "closed_loop"
 ) -> pd.DataFrame:
     """One row per reading, replication, measure and effect: the contrasts' estimate, its
-    interval and p. ``table`` holds the readings' rows (reading, cue, goal_response, seed, run),
-    ``analyses`` each row's ``analyse_measures`` result."""
+    interval, df and p. ``table`` holds the readings' rows (reading, cue, goal_response, seed,
+    run), ``analyses`` each row's ``analyse_measures`` result."""
     rows = []
     for row, analysis in zip(table, analyses, strict=True):
-        for measure in measures:
+        for measure in analysed(measures):
             for effect in EFFECTS:
                 term = analysis[mode][measure]["contrasts"][effect]
                 rows.append(dict(row) | {"measure": measure, "effect": effect} | term)
     return pd.DataFrame(rows)
 
 
+def over_replications(terms: pd.DataFrame) -> dict[str, float]:
+    """An effect over its replications (rows with each one's ``estimate``, ``ci_low``,
+    ``ci_high``, ``df``, ``p``): with one, that replication's own test; with several, the mean
+    estimate and a t-test of the estimates (df = replications - 1)."""
+    if len(terms) == 1:
+        row = terms.iloc[0]
+        term = {k: float(row[k]) for k in ("estimate", "ci_low", "ci_high", "df", "p")}
+        term["se"] = float(row["se"]) if "se" in row else float("nan")
+    else:
+        estimates = terms["estimate"].to_numpy(dtype=float)
+        n = len(estimates)
+        term = t_term(estimates.mean(), estimates.std(ddof=1) / np.sqrt(n), n - 1)
+    return {
+        "diff": term["estimate"],
+        "ci_low": term["ci_low"],
+        "ci_high": term["ci_high"],
+        "df": term["df"],
+        "p": term["p"],
+        "se": term["se"],
+    }
+
+
+def holm_hypotheses(table: pd.DataFrame, column: str = "p") -> np.ndarray:
+    """Holm's adjustment of ``column`` over the rows that are hypotheses (a null control's rows
+    are not: NaN)."""
+    out = np.full(len(table), np.nan)
+    hypothesis = ~table["measure"].map(is_null_control).to_numpy(dtype=bool)
+    out[hypothesis] = holm(table.loc[hypothesis, column].to_numpy(dtype=float))
+    return out
+
+
 def summary(replications: pd.DataFrame) -> pd.DataFrame:
-    """One row per reading, measure and effect (``SUMMARY_COLUMNS``). ``diff`` is the mean over
-    replications of the contrasts' estimate; its interval a t-interval over replications, or,
-    with a single replication, that replication's own 95% interval. ``n_paper`` and
-    ``n_reversed`` count the replications with p < ALPHA in and against the paper's direction."""
+    """One row per reading, measure and effect (``SUMMARY_COLUMNS``). ``diff``, its interval,
+    ``df`` and ``p`` from ``over_replications``; ``p_holm`` Holm's over the table's hypotheses
+    (``holm_hypotheses``). ``n_paper`` and ``n_reversed`` count the replications with (raw)
+    p < ALPHA in and against the paper's direction."""
     rows = []
     keys = ["reading", "cue", "goal_response", "measure", "effect"]
     for key, group in replications.groupby(keys, sort=False):
         estimates = group["estimate"].to_numpy()
         significant = group["p"].to_numpy() < ALPHA
-        if len(group) > 1:
-            diff, low, high = mean_ci(estimates)
-        else:
-            diff, low, high = (float(group[c].iloc[0]) for c in ("estimate", "ci_low", "ci_high"))
+        test = over_replications(group)
         rows.append(
             dict(zip(keys, key, strict=True))
+            | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p")}
             | {
                 "replications": len(group),
-                "diff": diff,
-                "ci_low": low,
-                "ci_high": high,
                 "n_paper": int((significant & (estimates > 0)).sum()),
                 "n_reversed": int((significant & (estimates < 0)).sum()),
             }
         )
-    return pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+    out = pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+    out["p_holm"] = holm_hypotheses(out) if len(out) else []
+    return out
+
+
+def difference_replications(
+    table: list[dict],
+    trials: dict[str, pd.DataFrame],
+    measures: list[str],
+    mode: str = "closed_loop",
+) -> pd.DataFrame:
+    """One row per comparison (``COMPARISONS``), level of the other choice, replication,
+    measure and effect: reading a's effect minus reading b's, paired by network
+    (``stats.difference_tests`` on the two runs' trials of the same seed: a run's network k has
+    the seed ``train.network_seed(seed, k)`` and the mapping ``train.mapping_of(k)`` whatever
+    the reading, so network k is the same network under the two settings). ``trials`` maps each
+    run to its ``measures.csv``."""
+    by = {(r["cue"], r["goal_response"], r["seed"]): r for r in table}
+    rows = []
+    for comparison, (choice, level_a, level_b) in COMPARISONS.items():
+        other = "goal_response" if choice == "cue" else "cue"
+        for (cue, goal, seed), ra in by.items():
+            if ra[choice] != level_a:
+                continue
+            rb = by.get((level_b, goal, seed) if choice == "cue" else (cue, level_b, seed))
+            if rb is None:  # the config reads only one level of this choice
+                continue
+            a = categorisation_trials(trials[ra["run"]], mode)
+            b = categorisation_trials(trials[rb["run"]], mode)
+            for measure in analysed(measures):
+                terms = difference_tests(a, b, measure)
+                for effect in EFFECTS:
+                    rows.append(
+                        {
+                            "comparison": comparison,
+                            "at": ra[other],
+                            "a": ra["reading"],
+                            "b": rb["reading"],
+                            "seed": seed,
+                            "measure": measure,
+                            "effect": effect,
+                        }
+                        | terms[effect]
+                    )
+    return pd.DataFrame(rows)
+
+
+def differences(replications: pd.DataFrame, margins: dict[str, float]) -> pd.DataFrame:
+    """One row per comparison, level, measure and effect (``DIFFERENCE_COLUMNS``): the
+    difference over replications (``over_replications``), Holm's p over the table's hypotheses,
+    and for the Goal response the equivalence test (TOST) within the measure's declared margin
+    (config ``readings.equivalence_margin``), its p Holm-adjusted over the equivalence tests (a
+    null control has none)."""
+    keys = ["comparison", "at", "a", "b", "measure", "effect"]
+    rows = []
+    for key, group in replications.groupby(keys, sort=False):
+        test = over_replications(group)
+        row = dict(zip(keys, key, strict=True)) | {"replications": len(group)} | test
+        row |= {"margin": np.nan, "p_equivalence": np.nan}
+        measure = row["measure"]
+        if row["comparison"] == "goal_response" and not is_null_control(measure):
+            if measure not in margins:
+                raise ValueError(f"readings.equivalence_margin has no margin for {measure!r}")
+            margin = float(margins[measure])
+            tost = equivalence(
+                {"estimate": test["diff"], "se": test["se"], "df": test["df"]}, margin
+            )
+            row |= {"margin": margin, "p_equivalence": tost["p"]}
+        rows.append(row)
+    out = pd.DataFrame(rows, columns=[*DIFFERENCE_COLUMNS])
+    if len(out):
+        out["p_holm"] = holm_hypotheses(out)
+        out["p_equivalence_holm"] = holm_hypotheses(out, "p_equivalence")
+    return out
+
+
+def verdict_p(row) -> float:
+    """The p a row's verdict uses: Holm's for a hypothesis, the raw p for a null control (shown
+    for comparison, not a hypothesis)."""
+    return float(row["p"] if is_null_control(row["measure"]) else row["p_holm"])
 
 
 def direction(row) -> str:
-    """A summary row's effect: "paper" or "reversed" when its interval excludes 0 on that side,
-    "none" when it includes 0, "constant" when the measure did not vary at all (a difference of
-    exactly 0 with a zero-width interval)."""
+    """A summary row's effect: "paper" or "reversed" when its (Holm-adjusted, ``verdict_p``) p
+    is below ALPHA, on the side of its difference; "none" otherwise; "constant" when the measure
+    did not vary at all (a difference of exactly 0 with a zero-width interval)."""
     if row["diff"] == row["ci_low"] == row["ci_high"] == 0:
         return "constant"
-    if row["ci_low"] > 0:
-        return "paper"
-    if row["ci_high"] < 0:
-        return "reversed"
-    return "none"
+    p = verdict_p(row)
+    if not (p < ALPHA):
+        return "none"
+    return "paper" if row["diff"] > 0 else "reversed"
+
+
+def fmt_p(p: float) -> str:
+    if not np.isfinite(p):
+        return "–"
+    return "< 0.001" if p < 0.001 else f"{p:.3f}"
 
 
 def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
-    """Readings x measures, both effects in every cell: the difference, its interval and the
-    replications significant each way, as text (the book's matrix)."""
+    """Readings x measures, both effects in every cell: the difference, its interval, p and
+    Holm's p, the verdict and, over several replications, those significant each way, as text
+    (the book's matrix)."""
 
     def cell(row) -> str:
         if direction(row) == "constant":
             return "0 (every network scored the same on every object)"
         counts = f"; {row['n_paper']}/{row['replications']} paper, {row['n_reversed']} reversed"
+        numbers = (
+            f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]; p {fmt_p(row['p'])}"
+        )
+        if is_null_control(row["measure"]):
+            return numbers + " (null control, not a hypothesis)"
         return (
-            f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]"
+            f"{numbers}, Holm p {fmt_p(row['p_holm'])}"
             f"{counts if row['replications'] > 1 else ''} ({direction(row)})"
         )
 
@@ -127,6 +297,41 @@ def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
         index=["reading", "effect"], columns="measure", values="text", aggfunc="first", sort=False
     )
     return wide.reset_index()
+
+
+def difference_verdict(row) -> str:
+    """A differences row's verdict: "a > b" or "a < b" (its effect larger or smaller in a than
+    in b) when its p (Holm's; a null control's raw p) is below ALPHA, "equivalent" when the TOST
+    within the margin is (Holm's), else "not shown" (neither a difference nor its absence)."""
+    if verdict_p(row) < ALPHA:
+        return "a > b" if row["diff"] > 0 else "a < b"
+    if row["p_equivalence_holm"] < ALPHA:
+        return "equivalent"
+    return "not shown"
+
+
+def difference_display(table: pd.DataFrame) -> pd.DataFrame:
+    """The book's table of the differences between readings, as text."""
+
+    def interval(row) -> str:
+        return f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]"
+
+    return pd.DataFrame(
+        {
+            "comparison": [f"{a} − {b}" for a, b in zip(table["a"], table["b"], strict=True)],
+            "measure": table["measure"],
+            "effect": table["effect"],
+            "difference [95% interval]": table.apply(interval, axis=1),
+            "p": table["p"].map(fmt_p),
+            "Holm p": [
+                "control" if is_null_control(m) else fmt_p(p)
+                for m, p in zip(table["measure"], table["p_holm"], strict=True)
+            ],
+            "margin": table["margin"].map(lambda m: f"±{m:g}" if np.isfinite(m) else "–"),
+            "TOST Holm p": table["p_equivalence_holm"].map(fmt_p),
+            "verdict": table.apply(difference_verdict, axis=1),
+        }
+    )
 
 
 def finite(values) -> bool:

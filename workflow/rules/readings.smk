@@ -2,12 +2,13 @@
 # `readings`: cue timing x Goal response) is a run of the model (common.smk: reading_runs), one
 # replication at the config's seed and, with robustness, one per `readings.seeds`. Each run's
 # trials are scored on the declared measures (rule `measures`, for every run), and the rule
-# `readings` sets each effect against the paper over the replications.
+# `readings` sets each effect against the paper over the replications, and tests the differences
+# between the cue timings and between the Goal responses.
 
 
 rule measures:
-    """Every test trial scored on each declared measure, and each measure's mixed model and
-    per-object means."""
+    """Every test trial scored on each declared measure, and each measure's (and null control's)
+    per-network contrasts, cell means and per-object means."""
     input:
         unpack(model_inputs),
         weights=run_network_files("train/net{net}/weights.npz"),
@@ -41,16 +42,21 @@ use rule measures as run_measures with:
 
 
 rule readings:
-    """Every reading's effects over its replications: data/readings/summary.csv (contract)."""
+    """Every reading's effects over its replications: data/readings/summary.csv (contract), with
+    each effect's t-test and Holm's p; and the tests of the differences between the cue timings
+    and between the Goal responses, paired by network (data/readings/differences.csv)."""
     input:
         measures=[f"{run_dir(row['run'])}/eval/measures.json" for row in READINGS],
+        trials=[f"{run_dir(row['run'])}/eval/measures.csv" for row in READINGS],
         code=script_code("readings"),
     output:
         summary="data/readings/summary.csv",
         replications="data/readings/replications.csv",
+        differences="data/readings/differences.csv",
     params:
         table=READINGS,
         measures=config["readings"]["measures"],
+        margins=config["readings"]["equivalence_margin"],
     threads: 1
     resources:
         mem_mb=500,

@@ -1,20 +1,40 @@
 """Every reading's effects over its replications: data/readings/replications.csv (one row per
-reading, replication, measure and effect) and data/readings/summary.csv (the contract)."""
+reading, replication, measure and effect), data/readings/summary.csv (the contract) and
+data/readings/differences.csv (the cue timings' and Goal responses' differences, paired by
+network)."""
 
 import json
 from pathlib import Path
 
+import pandas as pd
+
 from icub_affordance.io import atomic_path, redirect_log
-from icub_affordance.readings import replication_rows, summary
+from icub_affordance.readings import (
+    difference_replications,
+    differences,
+    replication_rows,
+    summary,
+)
 
 with redirect_log(snakemake.log[0]):
     table = list(snakemake.params.table)
+    measures = list(snakemake.params.measures)
     analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
-    replications = replication_rows(table, analyses, list(snakemake.params.measures))
+    replications = replication_rows(table, analyses, measures)
+    trials = {
+        row["run"]: pd.read_csv(path, keep_default_na=False)
+        for row, path in zip(table, snakemake.input.trials, strict=True)
+    }
+    diffs = differences(
+        difference_replications(table, trials, measures), dict(snakemake.params.margins)
+    )
+    table_summary = summary(replications)
     for path, frame in (
         (snakemake.output.replications, replications),
-        (snakemake.output.summary, summary(replications)),
+        (snakemake.output.summary, table_summary),
+        (snakemake.output.differences, diffs),
     ):
         with atomic_path(path) as tmp:
             frame.to_csv(tmp, index=False)
-    print(summary(replications).to_string())
+    print(table_summary.to_string())
+    print(diffs.to_string())

@@ -110,13 +110,12 @@ def object_means(measures: dict) -> pd.DataFrame:
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The readings chapter: the matrix of readings x measures, the Goal map's clusters under
-    each response, and the conclusion, from data/readings/summary.csv."""
+    """The readings chapter: the matrix of readings x measures (raw and Holm-adjusted p), the
+    tests of the differences between cue timings and Goal responses, the Goal map's clusters
+    under each response, and the conclusions, each a ``text.Claim`` resting on the statistics
+    stored here (``text.summary_key``, ``text.difference_key``)."""
     summary = pd.read_csv(inputs["readings_summary.csv"])
-    directions = {
-        (row["reading"], row["measure"], row["effect"]): readings_science.direction(row)
-        for _, row in summary.iterrows()
-    }
+    differences = pd.read_csv(inputs["readings_differences.csv"])
     goal_units = {}
     for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
         if name in inputs:
@@ -126,20 +125,55 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
                     goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
                         soms["goal_act"][o, t]
                     )
-    reps = sorted(set(summary["replications"]))
-    values = goal_units | {
-        "n_readings": int(summary["reading"].nunique()),
-        "replications": " to ".join(map(str, reps)),
-        "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
-        "conclusion": text.readings_conclusion(summary, directions),
+
+    def number(value) -> float | None:
+        """A statistic, or None (null) where there is none: a null control's Holm p, a constant
+        measure's p, the cue timing's equivalence test."""
+        return float(value) if np.isfinite(value) else None
+
+    stats = {
+        text.summary_key(row, stat): number(row[stat])
+        for _, row in summary.iterrows()
+        for stat in ("diff", "p", "p_holm")
+    } | {
+        text.difference_key(row, stat): number(row[stat])
+        for _, row in differences.iterrows()
+        for stat in ("diff", "p", "p_holm", "margin", "p_equivalence_holm")
     }
-    shown = summary.assign(
-        reading=[
-            text.reading_label(c, g)
-            for c, g in zip(summary["cue"], summary["goal_response"], strict=True)
-        ]
+    reps = sorted(set(summary["replications"]))
+    claims = text.readings_conclusion(summary) | {
+        "conclusion_null": text.null_control_sentence(summary),
+        "conclusion_cue": text.cue_timing_conclusion(differences),
+        "conclusion_goal": text.goal_response_conclusion(differences),
+    }
+    values = (
+        goal_units
+        | stats
+        | {
+            "n_readings": int(summary["reading"].nunique()),
+            "replications": " to ".join(map(str, reps)),
+            "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
+            "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
+            "margins": ", ".join(
+                f"{text.MEASURE_NAMES[m]} ±{v:g}"
+                for m, v in config["readings"]["equivalence_margin"].items()
+                if m in config["readings"]["measures"]
+            ),
+            "conclusion_method": text.readings_method(summary),
+        }
+        | {key: claim if claim is not None else "" for key, claim in claims.items()}
     )
-    return values, {"readings_matrix": readings_science.matrix(shown), "readings_summary": summary}
+
+    def shown(table: pd.DataFrame, columns: tuple[str, str]) -> list[str]:
+        return [text.reading_label(c, g) for c, g in zip(*(table[c] for c in columns), strict=True)]
+
+    return values, {
+        "readings_matrix": readings_science.matrix(
+            summary.assign(reading=shown(summary, ("cue", "goal_response")))
+        ),
+        "readings_summary": summary,
+        "readings_differences": readings_science.difference_display(differences),
+    }
 
 
 def _term_values(prefix: str, term: dict) -> dict:
