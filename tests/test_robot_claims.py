@@ -64,7 +64,7 @@ def test_the_issues_size_effect_counted_once_is_not_significant():
     assert fisher_exact([[19, 5], [15, 9]])[1] == pytest.approx(0.34, abs=0.005)
     words = sentence(effects(), "best_success_size")
     assert words.startswith("as in the paper, though not significantly")
-    assert "large held 19/24, small held 15/24 distinct trials" in words
+    assert "held in 19 of 24 distinct large trials and 15 of 24 small" in words
     assert "Fisher's exact test, p = 0.341" in words
     # the same shares counted five times over: what the old summary tested
     assert fisher_exact([[95, 25], [75, 45]])[1] < 0.01
@@ -128,7 +128,7 @@ def test_the_wrong_grip_sentence_counts_the_failures_it_names():
                              "categorisation_wrong_grip_hold": [2, 0]})  # fmt: skip
     values = pages._wrong_grip_values(variants)
     assert values["wrong_grip_sentence"].text.startswith(
-        "Of the 192 distinct trials of all variants, 3 held the object with the other grip"
+        "Of the 192 distinct trials of all variants, 3 held the object with a grip other"
     )
     assert "(1 grasping, 2 categorisation)" in values["wrong_grip_sentence"].text
     none = pages._wrong_grip_values(variants.assign(grasping_wrong_grip_hold=0,

@@ -492,18 +492,19 @@ def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
     return pd.DataFrame({"palm error": labels} | columns)
 
 
-def _level_counts(effect: dict, measure: str, factor: str) -> tuple[str, str]:
-    """The two levels' distinct trials of one robot effect, as "held 19/24" (success) or
-    "22 of 24 touched" (contact time), the paper's faster level first."""
+def _level_counts(effect: dict, measure: str, factor: str) -> str:
+    """The two levels' distinct trials of one robot effect, the paper's faster level first:
+    "held in 19 of 24 distinct large trials and 15 of 24 small" (success), or the same with
+    "touched" (contact time)."""
     first, second = FACTOR_LEVELS[factor]
-    out = []
-    for level in (first, second):
-        c = effect[factor][level]
-        if measure == "success":
-            out.append(f"held {round(c['mean'] * c['trials'])}/{c['trials']}")
-        else:
-            out.append(f"{c['n']} of {c['trials']} touched")
-    return out[0], out[1]
+    a, b = effect[factor][first], effect[factor][second]
+    if measure == "success":
+        verb, x, y = "held", round(a["mean"] * a["trials"]), round(b["mean"] * b["trials"])
+    else:
+        verb, x, y = "touched", a["n"], b["n"]
+    return (
+        f"{verb} in {x} of {a['trials']} distinct {first} trials and {y} of {b['trials']} {second}"
+    )
 
 
 def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
@@ -512,8 +513,7 @@ def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
     verdict = science.robot_effect_verdict(effect, measure, factor)
     test = effect["tests"][factor]
     first, second = FACTOR_LEVELS[factor]
-    a, b = _level_counts(effect, measure, factor)
-    counts = f"{first} {a}, {second} {b} distinct trials"
+    counts = _level_counts(effect, measure, factor)
     if verdict is None:
         return f"not estimable ({counts}; {test['reason']})"
     if test["method"] == "contrasts":
@@ -572,13 +572,13 @@ def _wrong_grip_values(variants: pd.DataFrame) -> dict:
     trials = int(variants["trials"].sum())
     if grasp + cat == 0:
         words = (
-            f"No distinct trial of any variant ({trials} in all) held the object with the other "
-            "grip than the required one."
+            f"No distinct trial of any variant ({trials} in all) held the object with a grip "
+            "other than the required one."
         )
     else:
         words = (
             f"Of the {trials} distinct trials of all variants, {grasp + cat} held the object "
-            f"with the other grip than the required one ({grasp} grasping, {cat} "
+            f"with a grip other than the required one ({grasp} grasping, {cat} "
             "categorisation) and count as failures; the table's last column gives them per "
             "variant."
         )
