@@ -143,6 +143,8 @@ def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> 
         "n_trials": 96, "n_networks": 12, "success_rate": 0.5, "grasping_success": 0.6,
         "categorisation_success": categorisation, "touching_rate": 0.9, "wrong_grip_holds": 1,
         "replay_success": {"commands": 0.975, "sensed_postures": 0.4},
+        "replay_trials": {"commands": 40, "sensed_postures": 40},
+        "replay_wrong_grip_holds": {"commands": 1, "sensed_postures": 0},
         "measures": {
             "final_error": {"means": means, "contrasts": {"congruency": term, "size": term},
                             "incongruent_minus_congruent": {}},
@@ -180,3 +182,13 @@ def test_the_chapter_beyond_states_the_robots_effects_from_their_tests():
     assert words["floor_sentence"] == "" and words["emb_ceiling_sentence"] == "at or above"
     low = pages.traced({"beyond": pages._robot_values(analysis(0.01, 0.02, 0.05), own)})
     assert low["beyond"]["floor_sentence"].startswith("Success is near the floor")
+
+
+def test_the_replays_held_with_the_other_grip_are_counted():
+    own = effects()["v"]
+    words = pages.traced({"beyond": pages._robot_values(analysis(0.01, 0.02), own)})["beyond"]
+    assert words["replay_wrong_sentence"].startswith("1 of these 40 replays held the object")
+    clean = analysis(0.01, 0.02)
+    clean["replay_wrong_grip_holds"]["commands"] = 0
+    words = pages.traced({"beyond": pages._robot_values(clean, own)})["beyond"]
+    assert words["replay_wrong_sentence"] == ""

@@ -224,7 +224,10 @@ def test_five_identical_sequences_give_the_counts_and_p_values_of_one(case):
     assert e5["v"]["success"]["tests"]["size"]["method"] == case
     pd.testing.assert_frame_equal(variant_table(five), variant_table(one))
     pd.testing.assert_frame_equal(success_table(five), success_table(one))
-    replay = pd.DataFrame({"plan": ["commands", "sensed_postures"], "success": [True, False]})
+    replay = pd.DataFrame(
+        {"plan": ["commands", "sensed_postures"], "success": [True, False],
+         "wrong_grip_hold": [False, True]}
+    )  # fmt: skip
     a5 = success_analysis(five.drop(columns=list(VARIANT_COLUMNS)), replay)
     a1 = success_analysis(one.drop(columns=list(VARIANT_COLUMNS)), replay)
     assert json.dumps(a5, sort_keys=True) == json.dumps(a1, sort_keys=True)

@@ -451,6 +451,12 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
             plan: float(group["success"].astype(float).mean())
             for plan, group in replay.groupby("plan")
         },
+        "replay_trials": {plan: int(len(group)) for plan, group in replay.groupby("plan")},
+        # replays that held the object with the other grip than the one demonstrated (failures)
+        "replay_wrong_grip_holds": {
+            plan: int(group["wrong_grip_hold"].astype(bool).sum())
+            for plan, group in replay.groupby("plan")
+        },
     }
 
 

@@ -273,6 +273,8 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
         "replay_commands": text.pct(emb["replay_success"]["commands"]),
         "replay_sensed": text.pct(emb["replay_success"]["sensed_postures"]),
         "replay_sensed_rate": float(emb["replay_success"]["sensed_postures"]),
+        "replay_commands_wrong_grip": int(emb["replay_wrong_grip_holds"]["commands"]),
+        "replay_commands_trials": int(emb["replay_trials"]["commands"]),
         "err_congruent": err["means"]["congruent"],
         "err_incongruent": err["means"]["incongruent"],
         "err_large": err["means"]["large"],
@@ -311,6 +313,16 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
         "emb_ceiling_sentence": text.Claim(
             "below" if robot["below_ceiling"] else "at or above",
             ("beyond.emb_success_rate", "beyond.replay_sensed_rate"),
+        ),
+        "replay_wrong_sentence": text.Claim(
+            (
+                f"{out['replay_commands_wrong_grip']} of these {out['replay_commands_trials']} "
+                "replays held the object with a grip other than the one demonstrated (the "
+                "touch sensors read power in a precision grasp) and count as failures."
+            )
+            if out["replay_commands_wrong_grip"]
+            else "",
+            ("beyond.replay_commands_wrong_grip", "beyond.replay_commands_trials"),
         ),
         "floor_sentence": text.Claim(
             text.floor_sentence(robot["at_floor"]), ("beyond.emb_categorisation_rate",)
