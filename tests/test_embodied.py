@@ -11,7 +11,14 @@ from conftest import demo_config, load_test_config
 
 from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
 from icub_affordance.demos import grip_in_contact, grip_used
-from icub_affordance.embodied import network_policy, replay_policy, run_trial, success_table
+from icub_affordance.embodied import (
+    Outcome,
+    network_policy,
+    outcome_columns,
+    replay_policy,
+    run_trial,
+    success_table,
+)
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
     distances_to_grasping,
@@ -46,6 +53,35 @@ def test_grip_used_reads_the_touch_sensors():
     assert grip_used(np.array([1, 0, 0, 0, 0, 1.0]), threshold) == "power"
     assert grip_used(np.array([0, 1, 1, 1, 1, 1.0]), threshold) == "none"  # no thumb
     assert grip_used(np.zeros(6), threshold) == "none"
+
+
+@pytest.mark.parametrize(
+    ("required", "touch", "lift", "success", "wrong"),
+    [
+        #            thumb index middle ring little palm
+        ("precision", [1, 1, 0, 0, 0, 0], 0.05, True, False),  # a pinch that holds
+        ("precision", [1, 1, 0, 0, 0, 1], 0.05, False, True),  # the palm too: power, held
+        ("precision", [1, 1, 1, 1, 0, 0], 0.05, False, True),  # three fingers: power, held
+        ("precision", [1, 1, 1, 1, 0, 0], float("nan"), False, False),  # not lifted
+        ("precision", [1, 1, 0, 0, 0, 0], 0.0, False, False),  # pinched, did not rise
+        ("power", [1, 1, 1, 1, 1, 1], 0.05, True, False),
+        ("power", [1, 0, 0, 0, 0, 1], 0.05, True, False),  # thumb and palm: power
+        ("power", [1, 1, 0, 0, 0, 0], float("nan"), False, False),  # a pinch, not lifted
+    ],
+)
+def test_success_is_the_required_grip_read_by_touch_and_the_object_rising(
+    required, touch, lift, success, wrong
+):
+    """Issue 24: a precision trial held with the whole hand (touch reads power) is a failure,
+    named as such; success is the grip the sensors read being the required one, and the lift."""
+    config = demo_config()
+    out = Outcome(
+        commands=np.zeros((9, 16)), sensed=np.zeros((10, 16)), touch=np.array(touch, float),
+        lift_m=lift, qpos=np.zeros((11, 3)), contact_time=1.0, palm=np.zeros(3),
+    )  # fmt: skip
+    row = outcome_columns(out, required, np.zeros(16), None, config)
+    assert (row["success"], row["wrong_grip_hold"]) == (success, wrong)
+    assert row["grip_used"] == grip_used(out.touch, config.touch_threshold)
 
 
 def test_the_network_as_controller_is_the_network_of_the_evaluation():
@@ -139,15 +175,23 @@ def test_embodied_trials_have_the_evaluation_columns_and_the_physical_outcome(bu
         noise: 4 * (settings["repeats"] if noise else 1) for noise in settings["noise"]
     }
     assert tolerance.loc[tolerance["noise"] == 0, "success"].all()
-    # success is exactly: the required grip's fingers touch, and the object rose with the hand
+    # success is exactly: the touch sensors read the required grip, and the object rose with the
+    # hand; a hold with the other grip is a failure of its own (lifted: the required fingers
+    # touched, with more of the hand)
     config = demo_config()
     touch = embodied[[f"touch_{n}" for n in ("thumb", "index", "middle", "ring", "little", "palm")]]
-    in_contact = [
+    read = np.array([grip_used(t, config.touch_threshold) for t in touch.to_numpy()])
+    in_contact = np.array([
         grip_in_contact(g, t, config.touch_threshold)
         for g, t in zip(embodied["target_grip"], touch.to_numpy(), strict=True)
-    ]
+    ])  # fmt: skip
+    assert (read == embodied["grip_used"]).all()
     held = embodied["lift_m"].fillna(0) >= config.min_lift_m
-    assert (embodied["success"] == (np.array(in_contact) & held)).all()
+    assert (embodied["lift_m"].notna() == in_contact).all()
+    assert (embodied["success"] == ((read == embodied["target_grip"]) & held)).all()
+    wrong = held & (read != embodied["target_grip"])
+    assert (embodied["wrong_grip_hold"] == wrong).all()
+    assert not (wrong & (embodied["target_grip"] == "power")).any()
 
 
 def test_the_success_table_covers_every_condition(built):

@@ -4,8 +4,15 @@ The paper scored its networks by how far their outputs were from the demonstrate
 never let them move the robot. Here each test trial is run on the MuJoCo iCub, closed loop: at
 every step the network reads the arm's *actual* posture from the simulator (proprioception) and
 its output becomes the 16 position-servo targets, ramped over one demonstration step's time. The
-arm then lifts, and the grasp counts as a success by the demonstrator's own test (MODEL.md
-section 4): the required grip's fingers touch the object, and the object rises with the hand.
+arm then lifts, and the grasp counts as a success when the grip the touch sensors read is the
+required one and the object rises with the hand (MODEL.md section 4's criteria: precision, thumb
+and index; power, thumb and the palm or at least three fingers; a hand that meets power's
+criterion reads power, whatever else touches). A precision trial held with the whole hand is a
+failure, counted as such (``wrong_grip_hold``).
+
+In closed loop a network's test sequences of one object and task are one and the same movement
+(``embodied_network``): every count, rate and test of the summary is over distinct trials, one
+per network x object x task (``distinct_trials``), never over the duplicated sequences.
 
 Two replays bound what a network could achieve with this controller: the demonstrator's own
 servo targets at the ten recorded moments (a correct plan), and the postures proprioception
@@ -88,8 +95,11 @@ def run_trial(
     """One trial in physics from the posture ``start`` (0-1), ``steps`` postures long;
     ``watch``, if given, sees the robot after every physics step of the movement (pictures).
 
-    The arm is lifted only if the required grip's fingers touch the object: without that the
-    trial has failed whatever the lift would show, and the lift is the costliest part.
+    The arm is lifted only if the required grip's fingers touch the object (``grip_in_contact``:
+    for a precision trial thumb and index, with or without the rest of the hand): without that
+    the trial has failed whatever the lift would show, and the lift is the costliest part. A
+    precision trial whose touch reads power is lifted, so that a hold with the wrong grip is
+    seen and named (``outcome_columns``).
     """
     robot.reset()
     robot.place_object(obj)
@@ -166,11 +176,21 @@ def outcome_columns(
     config: DemoConfig,
 ):
     """What a roboticist measures of one trial; ``palm_ref`` (3,) is where the demonstrator put
-    the palm for this object and grip (``reference_palms``), None where nobody asks."""
+    the palm for this object and grip (``reference_palms``), None where nobody asks.
+
+    ``grip_used`` is the grip the touch sensors read at the end of the movement
+    (``demos.grip_used``: power where power's criterion holds, thumb and the palm or at least
+    three fingers, else precision where thumb and index touch, else none). ``success``: that grip
+    is the required one and the object rose with the lifted hand. ``wrong_grip_hold``: the
+    object rose but the touch read the other grip; only a precision trial can be one, since a
+    power trial is lifted only when power's criterion holds.
+    """
     held = bool(out.lift_m >= config.min_lift_m)  # NaN (not lifted) compares False
+    read = grip_used(out.touch, config.touch_threshold)
     return {
-        "success": bool(grip_in_contact(grip, out.touch, config.touch_threshold) and held),
-        "grip_used": grip_used(out.touch, config.touch_threshold),
+        "success": bool(read == grip and held),
+        "wrong_grip_hold": bool(held and read not in (grip, "none")),
+        "grip_used": read,
         "final_error": float(np.sqrt(np.mean((out.sensed[-1] - target_final) ** 2))),
         "palm_error_mm": float("nan")
         if palm_ref is None
@@ -300,12 +320,63 @@ def body_tolerance(
 
 # -- the summary -------------------------------------------------------------------------------
 
+#: The columns a robot trial's physics decides: the same in every test sequence of one network x
+#: object x task, which are one movement on the robot (``embodied_network``).
+PHYSICAL_COLUMNS = (
+    "success",
+    "wrong_grip_hold",
+    "grip_used",
+    "lift_m",
+    "contact_time",
+    "palm_error_mm",
+    *TOUCH_NAMES,
+)
+
+#: The columns that compare a trial with one test sequence's demonstration: a distinct trial
+#: keeps their mean over its sequences.
+PER_SEQUENCE_COLUMNS = ("final_error", "rmse")
+
+
+def trial_keys(trials: pd.DataFrame) -> list[str]:
+    """What tells one physical robot trial from another: the run (where the table has it), the
+    network, the task and the object."""
+    return [c for c in ("run",) if c in trials.columns] + ["network", "task", "object"]
+
+
+def distinct_trials(trials: pd.DataFrame) -> pd.DataFrame:
+    """One row per physical trial (``trial_keys``: run, network, task, object), in the order of
+    their first rows: a network's test sequences of one object and task are one movement on the
+    robot and count once in every count, rate and test of the summary.
+
+    The physical outcome (``PHYSICAL_COLUMNS``) is the first sequence's, and a ValueError is
+    raised where the sequences disagree on it (they were then not one trial); the distances from
+    the sequences' demonstrations (``PER_SEQUENCE_COLUMNS`` and every ``rmse_step*``) are their
+    mean; ``sequence`` and ``held_out``, which name one sequence, are dropped.
+    """
+    keys = trial_keys(trials)
+    groups = trials.groupby(keys, sort=False)
+    physical = [c for c in PHYSICAL_COLUMNS if c in trials.columns]
+    varying = groups[physical].nunique(dropna=False) if physical else None
+    if varying is not None and (varying > 1).any().any():
+        bad = varying.columns[(varying > 1).any()].tolist()
+        raise ValueError(f"the test sequences of one robot trial differ in {bad}")
+    means = [c for c in trials.columns if c in PER_SEQUENCE_COLUMNS or c.startswith("rmse_step")]
+    out = trials.drop_duplicates(keys).drop(columns=["sequence", "held_out"], errors="ignore")
+    if means:
+        averaged = groups[means].mean()
+        out = out.drop(columns=means).merge(averaged, left_on=keys, right_index=True, how="left")
+        out = out[[c for c in trials.columns if c in out.columns]]
+    return out.reset_index(drop=True)
+
 
 def success_table(trials: pd.DataFrame) -> pd.DataFrame:
-    """Success, grip used and final error by task, congruency and size (over all trials)."""
+    """Success, grip read and final error by task, congruency and size, over distinct trials
+    (``distinct_trials``): ``trials`` counts them, ``wrong_grip_hold`` how many held the object
+    with the other grip than the required one (failures)."""
     from .stats import trial_conditions
 
-    df = trials.assign(condition=trial_conditions(trials))
+    df = distinct_trials(trials)
+    df = df.assign(condition=trial_conditions(df))
     groups = df.groupby(["condition", "size"], sort=True)
     table = groups.agg(
         trials=("success", "size"),
@@ -317,19 +388,30 @@ def success_table(trials: pd.DataFrame) -> pd.DataFrame:
     table["grip_target"] = groups.apply(
         lambda g: (g["grip_used"] == g["target_grip"]).mean(), include_groups=False
     )
+    table["wrong_grip_hold"] = groups["wrong_grip_hold"].apply(lambda g: int(g.astype(bool).sum()))
     return table.reset_index()
 
 
 def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, object]:
-    """Does congruency (or size) change the robot's categorisation grasps?
+    """Does congruency (or size) change the robot's categorisation grasps? Over distinct trials
+    (``distinct_trials``: one per network x object x task).
 
     For success (0/1) and for the final posture error: each network's mean per congruency x size
-    cell, the repeated-measures ANOVA of the main analysis (network as subject), and the
-    per-network incongruent - congruent difference with its 95% interval. Where every network
-    scores the same in every cell the ANOVA is undefined and reported as None.
+    cell, the per-network incongruent - congruent difference with its 95% t-interval, the
+    per-network contrasts used for inference (``stats.network_contrasts``: t over networks), and,
+    descriptive only, the repeated-measures ANOVA (network as subject; it averages each network's
+    cell, so the duplicated sequences never changed it). Where every network scores the same in
+    every cell the ANOVA is undefined and reported as None.
     """
-    from .stats import categorisation_trials, cell_means, mean_ci, repeated_measures_anova
+    from .stats import (
+        categorisation_trials,
+        cell_means,
+        mean_ci,
+        network_contrasts,
+        repeated_measures_anova,
+    )
 
+    trials = distinct_trials(trials)
     df = categorisation_trials(trials, "embodied")
     df["success"] = df["success"].astype(float)
     measures = {}
@@ -341,24 +423,38 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
                 anova = repeated_measures_anova(df, measure)
             except (ValueError, ZeroDivisionError, np.linalg.LinAlgError):
                 anova = None
+            try:
+                contrasts = network_contrasts(df, measure)
+            except (ValueError, np.linalg.LinAlgError):
+                contrasts = None
         if anova and not all(np.isfinite(r["F"]) for r in anova.values()):
             anova = None
         measures[measure] = {
             "means": cell_means(df, measure),
             "incongruent_minus_congruent": {"mean": mean, "ci_low": lo, "ci_high": hi},
+            "contrasts": contrasts,
             "repeated_measures": anova,
         }
     grasping = trials[trials["task"] == "grasping"]
     return {
         "n_networks": int(df["network"].nunique()),
         "n_trials": int(len(trials)),
+        "n_grasping_trials": int(len(grasping)),
+        "n_categorisation_trials": int(len(df)),
         "success_rate": float(trials["success"].astype(float).mean()),
         "grasping_success": float(grasping["success"].astype(float).mean()),
         "categorisation_success": float(df["success"].mean()),
         "touching_rate": float((trials["grip_used"] != "none").mean()),
+        "wrong_grip_holds": int(trials["wrong_grip_hold"].astype(bool).sum()),
         "measures": measures,
         "replay_success": {
             plan: float(group["success"].astype(float).mean())
+            for plan, group in replay.groupby("plan")
+        },
+        "replay_trials": {plan: int(len(group)) for plan, group in replay.groupby("plan")},
+        # replays that held the object with the other grip than the one demonstrated (failures)
+        "replay_wrong_grip_holds": {
+            plan: int(group["wrong_grip_hold"].astype(bool).sum())
             for plan, group in replay.groupby("plan")
         },
     }
@@ -378,23 +474,27 @@ VARIANT_COLUMNS = (
 
 
 def variant_table(trials: pd.DataFrame) -> pd.DataFrame:
-    """One row per variant: its success on each task, how often the required grip's fingers
-    touched, and how soon (contact time over the trials that touched)."""
+    """One row per variant, over its distinct trials (``distinct_trials``; ``trials`` counts
+    them): its success on each task, how often the required grip's fingers touched, how soon
+    (contact time over the trials that touched), and how many trials held the object with the
+    other grip (``{task}_wrong_grip_hold``, failures by the grip criterion)."""
     import pandas as pd
 
     rows = []
-    for key, df in trials.groupby(list(VARIANT_COLUMNS), sort=False):
+    for key, df in distinct_trials(trials).groupby(list(VARIANT_COLUMNS), sort=False):
         row = dict(zip(VARIANT_COLUMNS, key, strict=True))
         row |= {"networks": int(df["network"].nunique()), "trials": len(df)}
         for task in ("grasping", "categorisation"):
             mine = df[df["task"] == task]
             touched = mine["contact_time"].notna()
             row |= {
+                f"{task}_trials": len(mine),
                 f"{task}_success": float(mine["success"].astype(float).mean()),
                 f"{task}_contact": float(touched.mean()),
                 f"{task}_contact_time": float(mine.loc[touched, "contact_time"].mean())
                 if touched.any()
                 else float("nan"),
+                f"{task}_wrong_grip_hold": int(mine["wrong_grip_hold"].astype(bool).sum()),
             }
         row["success"] = float(df["success"].astype(float).mean())
         grasping = df[df["task"] == "grasping"]
@@ -440,8 +540,8 @@ def tolerance_table(tolerance: pd.DataFrame) -> pd.DataFrame:
 
 
 def _counts(df: pd.DataFrame, factor: str, measure: str) -> dict[str, dict[str, float]]:
-    """Per level of ``factor``: the trials, how many have ``measure`` (contact time: those that
-    touched), and its mean over them."""
+    """Per level of ``factor``: the distinct trials, how many have ``measure`` (contact time:
+    those that touched), and its mean over them."""
     return {
         str(level): {
             "trials": len(g),
@@ -452,80 +552,106 @@ def _counts(df: pd.DataFrame, factor: str, measure: str) -> dict[str, dict[str, 
     }
 
 
-def _exact_tests(df: pd.DataFrame) -> dict[str, dict[str, float]]:
-    """Fisher's exact test of success against congruency and against size, over trials."""
+#: The two levels of each factor the robot effects compare, the paper's faster one first.
+FACTOR_LEVELS = {"congruency": ("congruent", "incongruent"), "size": ("large", "small")}
+
+
+def _exact_test(df: pd.DataFrame, factor: str) -> dict[str, object]:
+    """Fisher's exact test of success against ``factor``, over the distinct trials of ``df``
+    (which takes a network's two objects of a level as independent: the fallback where the
+    per-network contrast has no variance to test)."""
     from scipy.stats import fisher_exact
 
-    tests = {}
-    for factor, (first, second) in (
-        ("congruency", ("congruent", "incongruent")),
-        ("size", ("large", "small")),
-    ):
-        table = [
-            [int(g["success"].sum()), int((~g["success"]).sum())]
-            for g in (df[df[factor] == first], df[df[factor] == second])
-        ]
-        odds, p = fisher_exact(table)
-        # an odds ratio of 0 or infinity (a rate of 0 or 1) has no JSON number: None
-        odds = float(odds) if np.isfinite(odds) and odds > 0 else None
-        tests[factor] = {"table": table, "odds_ratio": odds, "p": float(p)}
-    return tests
+    first, second = FACTOR_LEVELS[factor]
+    table = [
+        [int(g["success"].sum()), int((~g["success"]).sum())]
+        for g in (df[df[factor] == first], df[df[factor] == second])
+    ]
+    odds, p = fisher_exact(table)
+    # an odds ratio of 0 or infinity (a rate of 0 or 1) has no JSON number: None
+    odds = float(odds) if np.isfinite(odds) and odds > 0 else None
+    return {"method": "exact", "table": table, "odds_ratio": odds, "p": float(p)}
 
 
-def _mixed_or_none(df: pd.DataFrame, measure: str) -> dict | None:
-    """The mixed model of ``measure``, or None where its design is singular (a mapping x
-    congruency x size combination with no network x object mean, say)."""
-    from .stats import network_contrasts
+def _contrasts_or_none(df: pd.DataFrame, measure: str) -> tuple[dict | None, int]:
+    """The per-network contrasts of ``measure`` over the networks that have all four
+    congruency x size cells, and how many do; None where fewer than three do (no degrees of
+    freedom) or the design is singular."""
+    from .stats import contrast_tests, per_network_contrasts
 
+    per_net = per_network_contrasts(df, measure)
+    if len(per_net) < 3:
+        return None, len(per_net)
     try:
-        return network_contrasts(df, measure)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return contrast_tests(per_net), len(per_net)
     except (np.linalg.LinAlgError, ValueError):
-        return None
+        return None, len(per_net)
+
+
+def _defined(term: dict) -> bool:
+    """A contrast's test is defined: its standard error is finite and not zero (networks differ)."""
+    return bool(np.isfinite(term["se"]) and term["se"] > 0 and np.isfinite(term["p"]))
 
 
 def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
-    """Congruency and size effects on the robot's categorisation, per variant: on success (the
-    mixed model of the main analysis over network x object rates, or Fisher's exact test over
-    trials where a congruency x size cell's rate is 0 or 1 and the model has nothing to fit) and
-    on contact time (the mixed model over the network x object means of the trials that touched;
-    none where fewer than two network x object means exist in a congruency x size cell)."""
+    """Congruency and size effects on the robot's categorisation, per variant, over distinct
+    trials (``distinct_trials``: each network x object counted once, whatever the number of test
+    sequences).
+
+    Success: per factor, the per-network contrast (``stats.network_contrasts`` on success as 0/1
+    per network x object, a difference of proportions tested over the networks with t), where
+    its test is defined; where it is not (every network shows the same contrast: no variance),
+    Fisher's exact test over the distinct trials. Contact time: the per-network contrasts over
+    the trials that touched, from the networks that touched in all four congruency x size cells;
+    where that test is undefined (fewer than three such networks, or no variance) the effect is
+    not estimable and says why. Each measure keeps its counts per level and the per-factor
+    ``tests`` ({"method": "contrasts" | "exact" | "none", ...}).
+    """
     out = {}
-    for run, df in trials.groupby("run", sort=False):
+    for run, df in distinct_trials(trials).groupby("run", sort=False):
         df = df[(df["task"] == "categorisation")].copy()
         df["congruency"] = np.where(
             df["congruent"].astype(str) == "True", "congruent", "incongruent"
         )
         df["success"] = df["success"].astype(bool)
-        cells = df.groupby(["congruency", "size"])["success"].mean()
-        success: dict[str, object] = {
-            "congruency": _counts(df.assign(s=df["success"].astype(float)), "congruency", "s"),
-            "size": _counts(df.assign(s=df["success"].astype(float)), "size", "s"),
+        held = df.assign(success=df["success"].astype(float))
+        contrasts, networks = _contrasts_or_none(held, "success")
+        tests: dict[str, object] = {}
+        for factor in FACTOR_LEVELS:
+            if contrasts is not None and _defined(contrasts[factor]):
+                tests[factor] = {"method": "contrasts"} | contrasts[factor]
+            else:
+                tests[factor] = _exact_test(df, factor)
+        success = {
+            "distinct_trials": int(len(df)),
+            "congruency": _counts(held, "congruency", "success"),
+            "size": _counts(held, "size", "success"),
+            "networks": networks,
+            "contrasts": contrasts,
+            "tests": tests,
         }
-        mixed = None
-        if len(cells) == 4 and not ((cells == 0) | (cells == 1)).any():
-            mixed = _mixed_or_none(df.assign(success=df["success"].astype(float)), "success")
-        if mixed is None:
-            success |= {"method": "exact", "tests": _exact_tests(df)}
-        else:
-            success |= {"method": "contrasts", "contrasts": mixed}
         touched = df[df["contact_time"].notna()]
-        contact: dict[str, object] = {
+        contrasts, networks = _contrasts_or_none(touched, "contact_time")
+        tests = {}
+        for factor in FACTOR_LEVELS:
+            if contrasts is not None and _defined(contrasts[factor]):
+                tests[factor] = {"method": "contrasts"} | contrasts[factor]
+            else:
+                reason = (
+                    f"{networks} network(s) touched in all four congruency x size cells, "
+                    "fewer than the three a test over networks needs"
+                    if contrasts is None
+                    else "every network that touched in all four cells shows the same contrast"
+                )
+                tests[factor] = {"method": "none", "reason": reason}
+        contact = {
+            "distinct_trials": int(len(df)),
             "congruency": _counts(df, "congruency", "contact_time"),
             "size": _counts(df, "size", "contact_time"),
+            "networks": networks,
+            "contrasts": contrasts,
+            "tests": tests,
         }
-        per_cell = touched.groupby(["congruency", "size"])[["network", "object"]].apply(
-            lambda g: len(g.drop_duplicates())
-        )
-        mixed = None
-        if len(per_cell) == 4 and (per_cell >= 2).all():
-            mixed = _mixed_or_none(touched, "contact_time")
-        if mixed is None:
-            contact |= {
-                "method": "none",
-                "reason": "too few trials with contact to fit the mixed model (fewer than two "
-                "network x object means in a congruency x size cell, or a singular design)",
-            }
-        else:
-            contact |= {"method": "contrasts", "contrasts": mixed}
         out[str(run)] = {"success": success, "contact_time": contact}
     return out

@@ -224,21 +224,20 @@ def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) ->
 
 def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float = ALPHA):
     """The verdict on ``factor`` (congruency or size) of one variant's robot ``measure``
-    (``effects.json``: success or contact_time), from its mixed model, or its exact test where
-    the model could not be fitted; None where neither exists. The paper's direction: congruent
-    and large objects faster (shorter contact time) and more often held (higher success)."""
-    if effect["method"] == "contrasts":
-        term = effect["contrasts"][factor]
-        faster_when_paper = term["estimate"] > 0  # incongruent / small minus the other, coded +-1/2
-        direction = faster_when_paper if measure == "contact_time" else term["estimate"] < 0
-        return Verdict(paper_direction=bool(direction), significant=bool(term["p"] < alpha))
-    if effect["method"] == "exact":
-        (a_yes, a_no), (b_yes, b_no) = effect["tests"][factor]["table"]
+    (``effects.json``: success or contact_time), from its test (``effect["tests"][factor]``):
+    the per-network contrast, or Fisher's exact test over distinct trials where the contrast has
+    no variance; None where neither exists. The paper's direction: congruent and large objects
+    faster (shorter contact time) and more often held (higher success)."""
+    test = effect["tests"][factor]
+    if test["method"] == "contrasts":
+        # incongruent / small minus the other, coded +-1/2
+        positive = test["estimate"] > 0
+        direction = positive if measure == "contact_time" else test["estimate"] < 0
+        return Verdict(paper_direction=bool(direction), significant=bool(test["p"] < alpha))
+    if test["method"] == "exact":
+        (a_yes, a_no), (b_yes, b_no) = test["table"]
         rate_a, rate_b = a_yes / max(a_yes + a_no, 1), b_yes / max(b_yes + b_no, 1)
-        return Verdict(
-            paper_direction=bool(rate_a > rate_b),
-            significant=bool(effect["tests"][factor]["p"] < alpha),
-        )
+        return Verdict(paper_direction=bool(rate_a > rate_b), significant=bool(test["p"] < alpha))
     return None
 
 

@@ -128,8 +128,9 @@ rule embodied_tolerance:
 
 rule embodied_summary:
     """Every tested variant's robot trials in one table; the config's own networks' success by
-    condition and the effect of congruency; each variant's success and contact time, and their
-    congruency and size effects."""
+    condition and the effect of congruency; each variant's success, contact time and holds with
+    the wrong grip, and their congruency and size effects. Every count and test is over distinct
+    trials, one per network x object x task (the test sequences are one movement)."""
     input:
         trials=[f for row in ROBOT_TESTED for f in embodied_files(row["run"], "trials.csv")],
         replay=rules.embodied_replay.output[0],

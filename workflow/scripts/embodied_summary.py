@@ -1,5 +1,7 @@
-"""Join every tested variant's robot trials; the config's own networks' success by condition and
-congruency effect; each variant's success and contact time, and their effects."""
+"""Join every tested variant's robot trials (every test sequence a row, as the robot test wrote
+them); the config's own networks' success by condition and congruency effect; each variant's
+success and contact time, and their effects: the summaries count each network x object x task
+once (``embodied.distinct_trials``)."""
 
 import json
 

@@ -17,7 +17,12 @@ import pandas as pd
 
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolerance_table
+from icub_affordance.embodied import (
+    FACTOR_LEVELS,
+    VARIANT_COLUMNS,
+    held_by_palm_error,
+    tolerance_table,
+)
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
@@ -333,6 +338,84 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
     )
 
 
+def _robot_values(emb: dict, own_effects: dict) -> dict:
+    """The chapter beyond the paper's robot numbers and sentences: ``emb`` is
+    ``embodied/analysis.json``, ``own_effects`` the config's own networks' entry of
+    ``embodied/effects.json``; every count over distinct trials, and every sentence that states
+    an effect a ``text.Claim`` resting on the statistics stored beside it."""
+    robot = science.robot_verdicts(emb)
+    err, suc = emb["measures"]["final_error"], emb["measures"]["success"]
+    out = {
+        "emb_n_trials": emb["n_trials"],
+        "emb_n_networks": emb["n_networks"],
+        "emb_success": text.pct(emb["success_rate"]),
+        "emb_grasping_success": text.pct(emb["grasping_success"]),
+        "emb_categorisation_success": text.pct(emb["categorisation_success"]),
+        "emb_categorisation_rate": float(emb["categorisation_success"]),
+        "emb_success_rate": float(emb["success_rate"]),
+        "emb_touching": text.pct(emb["touching_rate"]),
+        "emb_wrong_grip_holds": int(emb["wrong_grip_holds"]),
+        "replay_commands": text.pct(emb["replay_success"]["commands"]),
+        "replay_sensed": text.pct(emb["replay_success"]["sensed_postures"]),
+        "replay_sensed_rate": float(emb["replay_success"]["sensed_postures"]),
+        "replay_commands_wrong_grip": int(emb["replay_wrong_grip_holds"]["commands"]),
+        "replay_commands_trials": int(emb["replay_trials"]["commands"]),
+        "err_congruent": err["means"]["congruent"],
+        "err_incongruent": err["means"]["incongruent"],
+        "err_large": err["means"]["large"],
+        "err_small": err["means"]["small"],
+    }
+    # the final posture error: per-network contrasts (t over networks) are the test
+    for effect in ("congruency", "size"):
+        term = (err["contrasts"] or {}).get(effect)
+        out[f"emb_final_error_{effect}_estimate"] = term["estimate"] if term else float("nan")
+        out[f"emb_final_error_{effect}_p"] = term["p"] if term else float("nan")
+        out[f"emb_final_error_{effect}"] = text.Claim(
+            text.fmt_term(term) if term else "not estimable",
+            (f"beyond.emb_final_error_{effect}_estimate", f"beyond.emb_final_error_{effect}_p"),
+        )
+    # success: the per-network contrast, or the exact test over distinct trials without variance
+    stats = _robot_effect_statistics(own_effects["success"], "congruency")
+    out["emb_success_congruency_estimate"] = stats["estimate"]
+    out["emb_success_congruency_p"] = stats["p"]
+    out["emb_success_congruency"] = text.Claim(
+        _robot_effect_text(own_effects["success"], "success", "congruency"),
+        ("beyond.emb_success_congruency_estimate", "beyond.emb_success_congruency_p"),
+    )
+    err_verdict = (
+        science.contrast_verdict(err["contrasts"], "congruency")
+        if err["contrasts"]
+        else science.Verdict(paper_direction=False, significant=False)
+    )
+    out |= {
+        "suc_congruent": text.pct(suc["means"]["congruent"]),
+        "suc_incongruent": text.pct(suc["means"]["incongruent"]),
+        "suc_diff": text.points_difference(suc["incongruent_minus_congruent"]),
+        "emb_err_sentence": text.Claim(
+            text.robot_error_sentence(err_verdict),
+            ("beyond.emb_final_error_congruency_estimate", "beyond.emb_final_error_congruency_p"),
+        ),
+        "emb_ceiling_sentence": text.Claim(
+            "below" if robot["below_ceiling"] else "at or above",
+            ("beyond.emb_success_rate", "beyond.replay_sensed_rate"),
+        ),
+        "replay_wrong_sentence": text.Claim(
+            (
+                f"{out['replay_commands_wrong_grip']} of these {out['replay_commands_trials']} "
+                "replays held the object with a grip other than the one demonstrated (the "
+                "touch sensors read power in a precision grasp) and count as failures."
+            )
+            if out["replay_commands_wrong_grip"]
+            else "",
+            ("beyond.replay_commands_wrong_grip", "beyond.replay_commands_trials"),
+        ),
+        "floor_sentence": text.Claim(
+            text.floor_sentence(robot["at_floor"]), ("beyond.emb_categorisation_rate",)
+        ),
+    }
+    return out
+
+
 def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
     """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
     emb = _json(inputs["embodied_analysis.json"])
@@ -340,36 +423,13 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     divergence = pd.read_csv(inputs["divergence.csv"])
     first_step = _json(inputs["divergence.json"])["first_divergent_step"]
     explained = pd.read_csv(inputs["hidden_explained.csv"])
-    robot = science.robot_verdicts(emb)
-    err, suc = emb["measures"]["final_error"], emb["measures"]["success"]
     out = {
-        "emb_n_trials": emb["n_trials"],
         "n_steps": config["demos"]["steps"],
         "n_predicted": config["demos"]["steps"] - 1,
         "n_hidden": config["network"]["hidden"],
-        "emb_success": text.pct(emb["success_rate"]),
-        "emb_grasping_success": text.pct(emb["grasping_success"]),
-        "emb_categorisation_success": text.pct(emb["categorisation_success"]),
-        "emb_touching": text.pct(emb["touching_rate"]),
-        "replay_commands": text.pct(emb["replay_success"]["commands"]),
-        "replay_sensed": text.pct(emb["replay_success"]["sensed_postures"]),
-        "err_congruent": err["means"]["congruent"],
-        "err_incongruent": err["means"]["incongruent"],
-        "err_large": err["means"]["large"],
-        "err_small": err["means"]["small"],
     }
-    for effect in ("congruency", "size", "interaction"):
-        for measure in ("final_error", "success"):
-            rm = emb["measures"][measure]["repeated_measures"]
-            out[f"emb_{measure}_{effect}"] = text.anova_or_undefined(rm, effect)
-    out |= {
-        "suc_congruent": text.pct(suc["means"]["congruent"]),
-        "suc_incongruent": text.pct(suc["means"]["incongruent"]),
-        "suc_diff": text.points_difference(suc["incongruent_minus_congruent"]),
-        "emb_err_sentence": text.robot_error_sentence(science.verdict(err, "congruency")),
-        "emb_ceiling_sentence": "below" if robot["below_ceiling"] else "at or above",
-        "floor_sentence": text.floor_sentence(robot["at_floor"]),
-    }
+    # the config's own networks' robot effects, over distinct trials (effects.json's main run)
+    out |= _robot_values(emb, _json(inputs["robot_effects.json"])["main"])
 
     # the cue ablation: which reading of the paper's cue gives the effect
     main_cue = config["network"]["categorisation_cue"]
@@ -538,24 +598,109 @@ def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
     return pd.DataFrame({"palm error": labels} | columns)
 
 
-def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
-    """One variant's effect of ``factor`` on a robot ``measure``, in words and numbers."""
-    verdict = science.robot_effect_verdict(effect, measure, factor)
-    if verdict is None:
-        return f"not estimated ({effect['reason']})"
-    if effect["method"] == "contrasts":
-        term = effect["contrasts"][factor]
-        unit = " s" if measure == "contact_time" else ""
-        numbers = f"{term['estimate']:+.3f}{unit}, {text.fmt_ci(term)}, {text.fmt_p(term['p'])}"
+def _level_counts(effect: dict, measure: str, factor: str) -> str:
+    """The two levels' distinct trials of one robot effect, the paper's faster level first:
+    "held in 19 of 24 distinct large trials and 15 of 24 small" (success), or the same with
+    "touched" (contact time)."""
+    first, second = FACTOR_LEVELS[factor]
+    a, b = effect[factor][first], effect[factor][second]
+    if measure == "success":
+        verb, x, y = "held", round(a["mean"] * a["trials"]), round(b["mean"] * b["trials"])
     else:
-        test = effect["tests"][factor]
-        (a, a_no), (b, b_no) = test["table"]
-        if a * (b + b_no) == b * (a + a_no):  # the same rate in both conditions
-            return f"no difference (held {a}/{a + a_no} in both)"
-        numbers = f"held {test['table'][0][0]}/{sum(test['table'][0])} vs "
-        numbers += f"{test['table'][1][0]}/{sum(test['table'][1])}, Fisher's exact "
-        numbers += text.fmt_p(test["p"])
+        verb, x, y = "touched", a["n"], b["n"]
+    return (
+        f"{verb} in {x} of {a['trials']} distinct {first} trials and {y} of {b['trials']} {second}"
+    )
+
+
+def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
+    """One variant's effect of ``factor`` on a robot ``measure``, in words and numbers, over its
+    distinct trials (``effects.json``: one per network x object)."""
+    verdict = science.robot_effect_verdict(effect, measure, factor)
+    test = effect["tests"][factor]
+    first, second = FACTOR_LEVELS[factor]
+    counts = _level_counts(effect, measure, factor)
+    if verdict is None:
+        return f"not estimable ({counts}; {test['reason']})"
+    if test["method"] == "contrasts":
+        unit = " s" if measure == "contact_time" else ""
+        what = "share held" if measure == "success" else "contact time"
+        numbers = (
+            f"{counts}; per-network contrast of the {what}, {second} minus {first}, "
+            f"{test['estimate']:+.3f}{unit}, 95% interval {text.fmt_ci(test)}, "
+            f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}, "
+            f"{test['networks']} networks"
+        )
+    else:
+        (x, x_no), (y, y_no) = test["table"]
+        if x * (y + y_no) == y * (x + x_no):  # the same rate in both conditions
+            return f"no difference ({counts})"
+        numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}"
     return f"{text.paper_agreement(verdict)} ({numbers})"
+
+
+def _robot_effect_statistics(effect: dict, factor: str) -> dict[str, float]:
+    """The statistics a robot effect's sentence rests on: the difference, the paper's slower
+    level minus its faster one (the contrast's estimate, or for the exact test the difference
+    of the shares held), and its p; NaN where the effect is not estimable."""
+    test = effect["tests"][factor]
+    if test["method"] == "contrasts":
+        return {"estimate": float(test["estimate"]), "p": float(test["p"])}
+    if test["method"] == "exact":
+        (x, x_no), (y, y_no) = test["table"]
+        difference = y / max(y + y_no, 1) - x / max(x + x_no, 1)
+        return {"estimate": float(difference), "p": float(test["p"])}
+    return {"estimate": float("nan"), "p": float("nan")}
+
+
+def _robot_effect_values(effects: dict, run: str, key: str, page: str = "grasping") -> dict:
+    """For one variant (``key``: own or best) each robot effect's sentence, a ``text.Claim``
+    resting on its difference and p, which are stored beside it."""
+    out: dict[str, object] = {}
+    for measure in ("success", "contact_time"):
+        for factor in FACTOR_LEVELS:
+            name = f"{key}_{measure}_{factor}"
+            effect = effects[run][measure]
+            stats = _robot_effect_statistics(effect, factor)
+            out[f"{name}_estimate"], out[f"{name}_p"] = stats["estimate"], stats["p"]
+            out[name] = text.Claim(
+                _robot_effect_text(effect, measure, factor),
+                (f"{page}.{name}_estimate", f"{page}.{name}_p"),
+            )
+    return out
+
+
+def _wrong_grip_values(variants: pd.DataFrame) -> dict:
+    """How many distinct trials the grip criterion fails (held, but with the other grip), in
+    all variants together and per task; and the sentence that says so."""
+    grasp = int(variants["grasping_wrong_grip_hold"].sum())
+    cat = int(variants["categorisation_wrong_grip_hold"].sum())
+    trials = int(variants["trials"].sum())
+    if grasp + cat == 0:
+        words = (
+            f"No distinct trial of any variant ({trials} in all) held the object with a grip "
+            "other than the required one."
+        )
+    else:
+        words = (
+            f"Of the {trials} distinct trials of all variants, {grasp + cat} held the object "
+            f"with a grip other than the required one ({grasp} grasping, {cat} "
+            "categorisation) and count as failures; the table's last column gives them per "
+            "variant."
+        )
+    return {
+        "wrong_grip_grasping": grasp,
+        "wrong_grip_categorisation": cat,
+        "wrong_grip_trials": trials,
+        "wrong_grip_sentence": text.Claim(
+            words,
+            (
+                "grasping.wrong_grip_grasping",
+                "grasping.wrong_grip_categorisation",
+                "grasping.wrong_grip_trials",
+            ),
+        ),
+    }
 
 
 def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -636,21 +781,20 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     for _, row in variants.iterrows():
         effect = effects[row["run"]]
         for measure in ("success", "contact_time"):
-            for factor in ("congruency", "size"):
+            for factor in FACTOR_LEVELS:
                 rows.append(
                     {
                         "variant": _variant_label(row),
                         "measure": measure.replace("_", " "),
                         "factor": factor,
-                        "method": effect[measure]["method"],
+                        "distinct trials": effect[measure]["distinct_trials"],
+                        "method": effect[measure]["tests"][factor]["method"],
                         "result": _robot_effect_text(effect[measure], measure, factor),
                     }
                 )
     for key, row in (("own", own), ("best", best)):
-        for measure in ("success", "contact_time"):
-            for factor in ("congruency", "size"):
-                effect = effects[row["run"]][measure]
-                out[f"{key}_{measure}_{factor}"] = _robot_effect_text(effect, measure, factor)
+        out |= _robot_effect_values(effects, row["run"], key)
+    out |= _wrong_grip_values(variants)
     table = variants.assign(
         variant=[_variant_label(r) for _, r in variants.iterrows()],
         grasping=[text.pct(v) for v in variants["grasping_success"]],
@@ -660,9 +804,21 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             f"{v:.2f} s" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
         ],
         palm_error=[f"{v:.0f} mm" for v in variants["grasping_palm_error_mm"]],
+        wrong_grip=[
+            f"{int(g)} + {int(c)}"
+            for g, c in zip(
+                variants["grasping_wrong_grip_hold"],
+                variants["categorisation_wrong_grip_hold"],
+                strict=True,
+            )
+        ],
     )
-    shown = ["variant", "networks", "grasping", "categorisation", "touched", "contact_time"]
-    table = table[[*shown, "palm_error"]]
+    table = table.rename(columns={"grasping_trials": "distinct trials per task"})
+    shown = ["variant", "networks", "distinct trials per task", "grasping", "categorisation"]
+    shown += ["touched", "contact_time", "palm_error"]
+    table = table[[*shown, "wrong_grip"]].rename(
+        columns={"wrong_grip": "held with the other grip (grasping + categorisation)"}
+    )
     objects = [c.removesuffix("_success") for c in tolerance.columns if c.endswith("_success")]
     tolerance_shown = pd.DataFrame(
         {
