@@ -161,3 +161,47 @@ def test_a_bad_run_stops_snakemake_before_any_job(tmp_path):
     message = result.stdout + result.stderr
     assert "runs.half_lr" in message and "learnin_rate" in message
     assert not (workdir / "data").exists()
+
+
+def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_and_maps(
+    built, tmp_path
+):
+    """Config robot.confirmation (issue 24): the confirmed variant is a run of its own whose
+    networks are the fresh indices first_network.., trained from the main run's demonstrations
+    and maps (none of its own), mapping by place in the run (first half A), tested on the
+    robot; its networks start from other weights than the exploration's, so they end elsewhere.
+    Planned from scratch, the run's jobs are its trainings and one robot job."""
+    import numpy as np
+    import pandas as pd
+
+    config = load_test_config()
+    confirmation = config["robot"]["confirmation"]
+    first, count = confirmation["first_network"], confirmation["networks"]
+    explored, run = "robot_commands_h10_it1200", "robot_commands_h10_it1200_confirm"
+    nets = [f"{i:02d}" for i in range(first, first + count)]
+    # the plan: the run's networks, from the main run's demonstrations and maps
+    plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
+    jobs = [job for job in plan.split("\n\n") if f"data/runs/{run}/" in job]
+    trainings = [job for job in jobs if "rule run_train_network:" in job]
+    assert len(trainings) == count
+    for job in trainings:
+        inputs = re.search(r"input: (.*)", job)[1].split(", ")
+        assert "data/demos/demos.npz" in inputs and "data/soms/soms.npz" in inputs, job
+    assert f"data/runs/{run}/demos" not in plan and f"data/runs/{run}/soms" not in plan
+    for net in nets:
+        assert f"data/runs/{run}/train/net{net}/weights.npz" in plan
+    assert sum("rule confirmation_embodied:" in job for job in jobs) == 1
+    # the built run: fresh networks, their robot trials, and the table
+    for k, net in enumerate(nets):
+        fresh = np.load(built / f"data/runs/{run}/train/net{net}/weights.npz")
+        old = np.load(built / f"data/runs/{explored}/train/net{k:02d}/weights.npz")
+        assert fresh["W1"].shape == old["W1"].shape and not np.allclose(fresh["W1"], old["W1"])
+    trials = pd.read_csv(built / "data/embodied/confirmation_trials.csv")
+    assert sorted(trials["network"].unique()) == list(range(first, first + count))
+    mapping = trials.drop_duplicates("network").set_index("network")["mapping"]
+    assert list(mapping) == ["A"] * (count // 2) + ["B"] * (count // 2)
+    table = pd.read_csv(built / "data/embodied/confirmation.csv")
+    assert list(table["seed_set"]) == ["exploration", "confirmation"]
+    assert list(table["run"]) == [explored, run]
+    assert list(table["networks"]) == [config["network"]["networks"], count]
+    assert list(table["trials"]) == [4 * config["network"]["networks"], 4 * count]
