@@ -212,7 +212,8 @@ def found(built):
 
 
 def test_the_rule_writes_a_section_for_every_page_that_glues(found):
-    assert set(found) == set(PAGES) - {"comparison", "reproduce"}  # these show only tables
+    # these show only tables; `claims` names the findings each generated sentence rests on
+    assert set(found) - {"claims"} == set(PAGES) - {"comparison", "reproduce"}
 
 
 def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, found):

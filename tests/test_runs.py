@@ -94,6 +94,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     jobs = planned(result)
     assert jobs.pop("run_train") == jobs.pop("run_embodied") == 1
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
     assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
 
@@ -118,6 +119,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
 
@@ -137,6 +139,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
     assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
 
@@ -181,7 +184,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     nets = [f"{i:02d}" for i in range(first, first + count)]
     # the plan: the run's networks, from the main run's demonstrations and maps
     plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
-    jobs = [job for job in plan.split("\n\n") if f"data/runs/{run}/" in job]
+    jobs = [job for job in re.split(r"^(?=rule \w+:$)", plan, flags=re.M) if f"runs/{run}/" in job]
     trainings = [job for job in jobs if "rule run_train_network:" in job]
     assert len(trainings) == count
     for job in trainings:

@@ -442,7 +442,8 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
 
     explored, confirmed = [], []
     for k, (_, row) in enumerate(sets["exploration"].iterrows()):
-        label = _variant_label(row)
+        label = f"the variant ({_variant_label(row)})"
+        who = "it" if len(sets["exploration"]) == 1 else label
         explored.append(
             f"on the networks it was chosen on (seed {seed}'s networks "
             f"{out['exploration_first_network'][k]}-{out['exploration_last_network'][k]}, on "
@@ -452,8 +453,8 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
         confirmed.append(
             f"on {out['confirmation_networks'][k]} fresh networks (seed {seed}'s networks "
             f"{out['confirmation_first_network'][k]}-{out['confirmation_last_network'][k]}, "
-            f"never used to choose it; the same demonstrations and maps), {label} holds it in "
-            f"{share('confirmation', k)}: {said_bar[verdicts[k]]}"
+            f"never used to choose it; the same demonstrations and maps), {who} holds the object "
+            f"in {share('confirmation', k)}: {said_bar[verdicts[k]]}"
         )
     entries = (
         "networks",
