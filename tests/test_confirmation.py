@@ -190,6 +190,7 @@ def test_the_sentences_are_claims_resting_on_the_pages_values():
     assert set(claims) == {"exploration_sentence", "confirmation_sentence"}
     for entries in claims.values():
         assert entries and all(e.split(".", 1)[1] in page for e in entries)
+        assert all(isinstance(page[e.split(".", 1)[1]], int | float) for e in entries)
     assert "grasping.confirmation_ci_low" in claims["confirmation_sentence"]
     assert "grasping.exploration_share" in claims["exploration_sentence"]
     explored = page["exploration_sentence"]
@@ -211,7 +212,7 @@ def test_the_sentences_are_claims_resting_on_the_pages_values():
 )
 def test_the_bar_is_set_against_the_confirmations_interval(low, high, words, not_words):
     out = sentences(confirmation_csv(confirm=(44, low, high)))["grasping"]
-    assert out["confirmation_verdict"] == [bar_verdict(low, high, 0.9)]
+    assert out["confirmation_verdict"] == bar_verdict(low, high, 0.9)
     for word in words:
         assert word in out["confirmation_sentence"], (word, out["confirmation_sentence"])
     for word in not_words:
@@ -228,3 +229,21 @@ def test_the_exploration_alone_never_meets_the_bar():
     assert high["confirmation_sentence"] == low["confirmation_sentence"]
     for verdict in ("lies above", "includes", "lies below", "clears", "cannot tell"):
         assert verdict not in high["exploration_sentence"] + low["exploration_sentence"]
+
+
+def test_two_confirmed_variants_each_rest_on_their_own_numbers():
+    one = confirmation_csv(confirm=(44, 0.92, 0.99))
+    two = confirmation_csv(explore=(40, 0.7, 0.9), confirm=(30, 0.5, 0.8)).assign(hidden=20)
+    table = pd.concat(
+        [one[one["seed_set"] == "exploration"], two[two["seed_set"] == "exploration"]]
+    )
+    table = pd.concat([table, one[one["seed_set"] == "confirmation"]])
+    table = pd.concat([table, two[two["seed_set"] == "confirmation"]], ignore_index=True)
+    out = sentences(table)
+    page, claims = out["grasping"], out["claims"]["grasping"]
+    assert page["confirmation_verdict"] == "above" and page["confirmation_verdict_2"] == "below"
+    assert "grasping.confirmation_held_2" in claims["confirmation_sentence"]
+    assert "grasping.exploration_held_2" in claims["exploration_sentence"]
+    sentence = page["confirmation_sentence"]
+    assert "40 hidden" in sentence and "20 hidden" in sentence
+    assert sentence.index("lies above 90%") < sentence.index("lies below 90%")

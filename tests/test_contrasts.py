@@ -18,6 +18,7 @@ from icub_affordance.stats import (
     holm,
     network_contrasts,
     network_object_means,
+    simple_effects,
 )
 
 OBJECTS = {  # object: (size, category)
@@ -182,3 +183,22 @@ def test_equivalence_is_two_one_sided_t_tests():
     assert equivalence(term, 0.001)["p"] > 0.05  # not inside a margin smaller than the noise
     with pytest.raises(ValueError, match="margin"):
         equivalence(term, 0.0)
+
+
+def test_simple_effects_are_the_cells_differences_tested_over_networks():
+    """Size within congruent trials is congruent small - congruent large per network; with one
+    mapping its test is scipy's one-sample t-test of those differences."""
+    df = synthetic()
+    df.loc[(df["congruency"] == "congruent") & (df["size"] == "small"), "rmse"] += 0.04
+    only_a = df[df["mapping"] == "A"]
+    cells = network_object_means(only_a).pivot_table(
+        index="network", columns=["congruency", "size"], values="rmse"
+    )
+    within = cells[("congruent", "small")] - cells[("congruent", "large")]
+    fit = simple_effects(only_a)["size_in_congruent"]
+    assert fit["estimate"] == pytest.approx(within.mean(), abs=1e-12)
+    assert fit["p"] == pytest.approx(sps.ttest_1samp(within, 0.0).pvalue, rel=1e-9)
+    both = simple_effects(df)
+    assert both["size_in_congruent"]["estimate"] == pytest.approx(0.04, abs=0.015)
+    assert both["size_in_congruent"]["p"] < 0.01
+    assert both["size_in_incongruent"]["ci_low"] < 0 < both["size_in_incongruent"]["ci_high"]

@@ -240,6 +240,10 @@ def test_first_divergent_step_needs_every_later_step_significant():
     summary = pd.DataFrame(
         {"step": [1, 2, 3, 4], "difference": [0.1, 0.2, 0.3, 0.3], "p": [0.01, 0.2, 0.01, 0.001]}
     )
+    summary["p_holm"] = summary["p"]
     assert first_divergent_step(summary) == 3
-    summary["p"] = 0.5
+    summary["p_holm"] = 0.5
     assert first_divergent_step(summary) is None
+    # the adjusted p decides, not the raw one
+    summary = summary.assign(p=0.001, p_holm=[0.01, 0.01, 0.06, 0.01])
+    assert first_divergent_step(summary) == 4

@@ -65,22 +65,6 @@ def test_without_an_anova_nothing_is_significant():
 
 
 @pytest.mark.parametrize(
-    ("main", "ablation", "decides"),
-    [
-        (("first_step", True), ("all_steps", False), True),
-        (("all_steps", False), ("first_step", True), True),  # the same, with the roles swapped
-        (("first_step", True), ("all_steps", True), False),
-        (("first_step", False), ("all_steps", False), False),
-        (("all_steps", True), ("first_step", False), False),  # the other way round
-    ],
-)
-def test_the_cue_timing_decides_only_when_first_step_alone_shows_the_effect(
-    main, ablation, decides
-):
-    assert findings.cue_timing_decides(dict([main, ablation])) is decides
-
-
-@pytest.mark.parametrize(
     ("n", "mean", "low", "high", "direction"),
     [
         (10, 0.03, 0.02, 0.04, "paper"),
@@ -174,6 +158,12 @@ def test_the_joint_counts():
 # -- the words ---------------------------------------------------------------------------------
 
 
+def term(estimate: float, p: float, df: float = 10.0, se: float = 0.01, **extra) -> dict:
+    """A tested term as ``stats`` writes it (t from the estimate and se)."""
+    return {"estimate": estimate, "se": se, "t": estimate / se, "df": df, "p": p,
+            "ci_low": estimate - 0.02, "ci_high": estimate + 0.02, "p_holm": p} | extra  # fmt: skip
+
+
 def test_the_words_say_the_verdict():
     from icub_book import text
 
@@ -186,19 +176,105 @@ def test_the_words_say_the_verdict():
     assert text.results_sentence("congruency", yes) == (
         "congruent trials were faster (lower RMSE) than incongruent ones, significantly"
     )
-    assert text.results_sentence("size", against) == (
-        "large objects were slower than small ones, but not significantly"
+    assert text.results_sentence("size", reversed_) == (
+        "large objects were slower (higher RMSE) than small ones, significantly"
     )
-    gap = {"large": 0.2, "small": 0.1}
-    reversed_size = text.discussion(yes, reversed_, yes, gap, "first_step")
-    assert "**The congruency effect is reproduced.**" in reversed_size
-    assert "**The size effect is reversed.**" in reversed_size
-    assert "an RMS of 0.200 (normalised angles)" in reversed_size
-    assert "so a drift toward the wrong grip costs more for a large object" in reversed_size
-    assert "In teacher-forced testing, where no drift can build up" in reversed_size
-    neither = text.discussion(weak, weak, weak, gap, "all_steps")
-    assert "is not reproduced in this run" in neither and "not significant in closed" in neither
-    assert "normalised angles" not in neither and "(this run: `all_steps`)" in neither
+    assert text.results_sentence("size", reversed_, interacts=True) == (
+        "large objects were slower (higher RMSE) than small ones on average over the other "
+        "factor, which it interacts with, significantly"
+    )
+    # a difference that its test does not show is not stated, whichever way the means lie
+    assert (
+        text.results_sentence("size", against)
+        == text.results_sentence("size", weak)
+        == ("the difference between large and small objects was not significant")
+    )
+
+
+def test_the_congruency_paragraph_follows_its_test_and_the_cue():
+    from icub_book import text
+
+    wrong = {"congruent": 0.0, "incongruent": 0.6}
+    shown = text.discussion_congruency(Verdict(True, True), wrong, "first_step")
+    assert shown.text.startswith("**The congruency effect is reproduced.**")
+    assert "60% of incongruent trials" in shown.text and "Task map shows" in shown.text
+    # the design argument belongs to the first-step cue only
+    assert (
+        "Task map shows"
+        not in text.discussion_congruency(Verdict(True, True), wrong, "all_steps").text
+    )  # noqa: E501
+    for flipped in (Verdict(True, False), Verdict(False, True)):
+        assert "not reproduced" in text.discussion_congruency(flipped, wrong, "first_step").text
+    assert set(shown.rests_on) >= {"discussion.congruency_estimate", "discussion.congruency_p_holm"}
+
+
+def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
+    from icub_book import text
+
+    slower_congruent = {"size_in_congruent": term(-0.03, 0.001)}
+    no_drift = {"congruent": 0.0, "incongruent": 0.6}
+    ruled_out = text.discussion_size(Verdict(False, True), slower_congruent, no_drift)
+    assert "**The size effect is reversed.**" in ruled_out.text
+    assert "does not explain it" in ruled_out.text and "large objects are slower" in ruled_out.text
+    assert "not known" in ruled_out.text
+    # the congruent-only difference not significant: drift is not ruled out
+    unsettled = text.discussion_size(
+        Verdict(False, True), {"size_in_congruent": term(-0.03, 0.2)}, no_drift
+    )
+    assert "not settled" in unsettled.text and "not significant" in unsettled.text
+    # congruent trials that drift: not ruled out either
+    drifting = text.discussion_size(
+        Verdict(False, True), slower_congruent, {"congruent": 0.1, "incongruent": 0.6}
+    )
+    assert "not settled" in drifting.text
+    assert (
+        "reproduced" in text.discussion_size(Verdict(True, True), slower_congruent, no_drift).text
+    )
+    assert "not significant" in text.discussion_size(Verdict(True, False), {}, no_drift).text
+    assert "discussion.size_in_congruent_p_holm" in ruled_out.rests_on
+    assert "discussion.size_p_holm" in ruled_out.rests_on
+
+
+def test_the_teacher_forced_size_is_stated_with_its_interaction():
+    from icub_book import text
+
+    simple = {"size_in_congruent": term(-0.01, 0.01), "size_in_incongruent": term(0.05, 0.001)}
+    forced = {"size": term(0.014, 0.03), "congruency:size": term(0.038, 0.001)}
+    words = text.discussion_forced(forced, simple).text
+    assert "the size term is +0.0140" in words and "interaction +0.0380" in words
+    assert "depends on congruency" in words
+    assert "among congruent trials large objects are slower" in words
+    assert "among incongruent trials large objects are faster" in words
+    # without the interaction, the simple effects are not brought in
+    calm = forced | {"congruency:size": term(0.002, 0.6)}
+    assert "depends on congruency" not in text.discussion_forced(calm, simple).text
+    simple_ns = simple | {"size_in_congruent": term(-0.01, 0.3)}
+    assert "among congruent trials the size difference is not significant" in (
+        text.discussion_forced(forced, simple_ns).text
+    )
+
+
+def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
+    from icub_book import text
+
+    larger = text.cue_difference(term(0.03, 0.001))
+    assert "significantly larger with the cue at the first step only" in larger.text
+    assert "One reading of this" in larger.text
+    assert "at every step" in text.cue_difference(term(-0.03, 0.001)).text
+    same = text.cue_difference(term(0.03, 0.2))
+    assert "do not differ significantly" in same.text and "does not show" in same.text
+    assert larger.rests_on == ("beyond.cue_difference_estimate", "beyond.cue_difference_p")
+
+
+def test_a_claim_must_rest_on_findings_the_book_has():
+    from icub_book import pages, text
+
+    ok = pages.traced({"p": {"x": 1.0, "s": text.Claim("x is one", ("p.x",))}})
+    assert ok["p"]["s"] == "x is one" and ok["claims"] == {"p": {"s": ["p.x"]}}
+    with pytest.raises(KeyError, match="p.y"):
+        pages.traced({"p": {"x": 1.0, "s": text.Claim("y is", ("p.y",))}})
+    with pytest.raises(ValueError, match="page.key"):
+        text.Claim("unfounded", ())
 
 
 # -- the rule, on the test configuration's run ---------------------------------------------------
@@ -212,8 +288,20 @@ def found(built):
 
 
 def test_the_rule_writes_a_section_for_every_page_that_glues(found):
-    # these show only tables; `claims` names the findings each generated sentence rests on
-    assert set(found) - {"claims"} == set(PAGES) - {"comparison", "reproduce"}
+    # comparison and reproduce show only tables; "claims" traces the sentences
+    assert set(found) == set(PAGES) - {"comparison", "reproduce"} | {"claims"}
+
+
+def test_every_claim_rests_on_numbers_the_book_has(found):
+    claims = found["claims"]
+    for page in ("intro", "results", "discussion", "beyond"):
+        assert claims.get(page), page
+    for page, keys in claims.items():
+        for key, entries in keys.items():
+            assert key in found[page] and isinstance(found[page][key], str), (page, key)
+            for entry in entries:
+                where, name = entry.split(".", 1)
+                assert isinstance(found[where][name], (int, float)), entry
 
 
 def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, found):
@@ -232,9 +320,13 @@ def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
     results = (built / "book" / "_build" / "html" / "results.html").read_text()
     for mode in ("closed_loop", "teacher_forced"):
         assert found["results"][f"{mode}_cong_sentence"] in results
-    assert found["beyond"]["cue_main_verdict"] == (
-        "shows the congruency effect" if cong.reproduced else "does not show the congruency effect"
+    c = anova["contrasts"]["closed_loop"]["congruency"]
+    expected = (
+        "shows no significant congruency effect"
+        if c["p"] >= 0.05
+        else "shows the congruency effect" + ("" if c["estimate"] > 0 else " reversed")
     )
+    assert found["beyond"]["cue_main_verdict"] == expected
 
 
 def test_the_rules_tables_are_the_ones_the_book_shows(built):
@@ -358,3 +450,10 @@ def test_the_package_is_the_science():
             assert not {name.split(".")[0] for name in names} & machinery, (path.name, names)
     for moved in ("notebooks", "report", "sweep_cost"):
         assert not (REPO / "src" / "icub_affordance" / f"{moved}.py").exists(), moved
+
+
+def test_the_hidden_layer_sentence_follows_the_adjusted_tests():
+    from icub_book import text
+
+    assert text.divergence_sentence(3).text.startswith("From step 3 on, incongruent trials are")
+    assert "not significantly further" in text.divergence_sentence(None).text

@@ -57,16 +57,13 @@ def verdict(analysis: dict, effect: str, alpha: float = ALPHA) -> Verdict:
 
 
 def contrast_verdict(contrasts: dict, effect: str, alpha: float = ALPHA) -> Verdict:
-    """The verdict on ``effect`` of one mixed model (``anova.json``'s ``mixed`` of one mode): its
-    estimate is the difference in the paper's direction (``stats.MIXED_CODING``), its p Wald's."""
+    """The verdict on ``effect`` of one mode's per-network contrasts (``anova.json``'s
+    ``contrasts``): its estimate is the difference in the paper's direction (``stats.CODING``),
+    its p a t-test over networks, Holm-adjusted over its family where ``p_holm`` is given (the
+    paper's two effects in ``anova.json``)."""
     term = contrasts[effect]
-    return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(term["p"] < alpha))
-
-
-def cue_timing_decides(shows_effect: dict[str, bool]) -> bool:
-    """Whether the congruency effect appears with the cue at the first step only and not with the
-    cue held at every step: ``shows_effect`` maps each cue timing run to its verdict."""
-    return shows_effect == {"first_step": True, "all_steps": False}
+    p = term.get("p_holm", term["p"])  # adjusted over its family where it has one
+    return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(p < alpha))
 
 
 def curve_summary(curves: np.ndarray, phase1_iterations: int) -> dict[str, float | int]:

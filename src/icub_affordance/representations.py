@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .stats import mean_ci, trial_conditions
+from .stats import holm, mean_ci, trial_conditions
 
 
 def pca(states: np.ndarray, components: int = 2) -> tuple[np.ndarray, np.ndarray]:
@@ -53,7 +53,8 @@ def distances_to_grasping(hidden: np.ndarray, trials: pd.DataFrame) -> pd.DataFr
 
 def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = "closed_loop"):
     """Every network's distances to grasping (long table), and per step the incongruent minus
-    congruent difference over networks: mean, 95% interval and paired t-test p."""
+    congruent difference over networks: mean, 95% interval, paired t-test p, and that p
+    Holm-adjusted over the steps (one family: "from step k on" reads every step's test)."""
     from scipy import stats as sps
 
     tables = []
@@ -73,12 +74,15 @@ def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = 
              "incongruent": float(group["incongruent"].mean()), "difference": mean,
              "ci_low": lo, "ci_high": hi, "p": p}
         )  # fmt: skip
-    return long, pd.DataFrame(rows)
+    summary = pd.DataFrame(rows)
+    summary["p_holm"] = holm(summary["p"].to_numpy())
+    return long, summary
 
 
 def first_divergent_step(summary: pd.DataFrame, alpha: float = 0.05) -> int | None:
-    """The first step from which incongruent trials stay significantly further from grasping."""
-    significant = (summary["p"] < alpha) & (summary["difference"] > 0)
+    """The first step from which incongruent trials stay significantly further from grasping,
+    by the steps' Holm-adjusted p."""
+    significant = (summary["p_holm"] < alpha) & (summary["difference"] > 0)
     for i in range(len(summary)):
         if significant.iloc[i:].all():
             return int(summary["step"].iloc[i])

@@ -114,6 +114,9 @@ TERMS = (
     "size:mapping",
     "congruency:size:mapping",
 )
+#: The effects the paper tested (its two-way ANOVA's main effects): the family of hypotheses
+#: whose verdicts the book states, Holm-adjusted together; the other terms model the design.
+PAPER_EFFECTS = ("congruency", "size")
 #: The within-network contrasts, each a difference of a network's four congruency x size cells.
 WITHIN = ("congruency", "size", "congruency:size")
 
@@ -241,6 +244,38 @@ def contrast_tests(contrasts: pd.DataFrame) -> dict[str, dict[str, float]]:
     return {term: out[term] | {"networks": n} for term in TERMS}
 
 
+#: The simple effects: one factor's difference within one level of the other, as the cells'
+#: (congruency, size) codes: (incongruent, small) etc. Name -> (cell +0.5 minus cell -0.5).
+SIMPLE = {
+    "size_in_congruent": ((-0.5, 0.5), (-0.5, -0.5)),
+    "size_in_incongruent": ((0.5, 0.5), (0.5, -0.5)),
+    "congruency_in_large": ((0.5, -0.5), (-0.5, -0.5)),
+    "congruency_in_small": ((0.5, 0.5), (-0.5, 0.5)),
+}
+
+
+def simple_effects(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+    """Each factor's effect within each level of the other (``SIMPLE``: small - large among the
+    congruent trials, ...), per network and tested over networks as ``contrast_tests`` does (the
+    mean of the two mappings' means, t with networks - 2 df; ``p_holm`` adjusted over the four).
+    Where congruency and size interact, these, not the main effects, say where a difference
+    lies."""
+    data = coded(network_object_means(df, depvar))
+    cells = data.pivot_table(
+        index="network", columns=["congruency", "size"], values=depvar, aggfunc="mean"
+    ).dropna()
+    mapping = data.groupby("network")["mapping"].first().reindex(cells.index).to_numpy()
+    out = {}
+    for name, (plus, minus) in SIMPLE.items():
+        values = (cells[plus] - cells[minus]).to_numpy()
+        out[name] = group_regression(values, mapping)["mean"] | {"networks": int(len(cells))}
+    # the four simple effects are one family of follow-up tests: Holm over them
+    adjusted = holm([out[name]["p"] for name in SIMPLE])
+    for name, p in zip(SIMPLE, adjusted, strict=True):
+        out[name]["p_holm"] = float(p)
+    return out
+
+
 def network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
     """The analysis used for inference (MODEL.md section 8): per term of ``TERMS``, the estimate
     (coded as ``CODING``), its standard error, t, degrees of freedom, 95% t-interval and p, from
@@ -317,9 +352,11 @@ def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, 
 
 def analyse(trials: pd.DataFrame) -> dict[str, object]:
     """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode, and
-    the per-network contrasts (the analysis used for inference) per mode under ``contrasts``."""
+    the per-network contrasts (the analysis used for inference) per mode under ``contrasts``, the
+    paper's two effects with ``p_holm`` (Holm over the two), and
+    the simple effects (``simple_effects``) under ``simple``."""
     result: dict[str, object] = {}
-    contrasts = {}
+    contrasts, simple = {}, {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         result[mode] = {
@@ -331,7 +368,13 @@ def analyse(trials: pd.DataFrame) -> dict[str, object]:
             "wrong_grip_rate": wrong_grip_rates(df),
         }
         contrasts[mode] = network_contrasts(df)
+        # the paper's two hypotheses are one family (per test mode): Holm over them
+        adjusted = holm([contrasts[mode][t]["p"] for t in PAPER_EFFECTS])
+        for term, p in zip(PAPER_EFFECTS, adjusted, strict=True):
+            contrasts[mode][term]["p_holm"] = float(p)
+        simple[mode] = simple_effects(df)
     result["contrasts"] = contrasts
+    result["simple"] = simple
     return result
 
 

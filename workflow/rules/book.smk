@@ -22,6 +22,7 @@ BOOK_DATA = {
     "embodied_success.csv": "data/embodied/success.csv",
     "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
     "ablation_anova.json": f"data/runs/{ABLATION}/eval/anova.json",
+    "ablation_trials.csv": f"data/runs/{ABLATION}/eval/trials.csv",
     "ablation_figure5.png": f"data/runs/{ABLATION}/figures/figure5.png",
     "divergence.csv": "data/eval/divergence.csv",
     "divergence.json": "data/eval/divergence.json",
@@ -66,6 +67,8 @@ if config["robustness"]:
 FINDINGS_READS = [
     "anova.json",
     "ablation_anova.json",
+    "trials.csv",
+    "ablation_trials.csv",
     "embodied_analysis.json",
     "divergence.csv",
     "divergence.json",

@@ -22,7 +22,7 @@ from icub_affordance.embodied import VARIANT_COLUMNS, held_by_palm_error, tolera
 from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
-from icub_affordance.stats import TERMS
+from icub_affordance.stats import TERMS, categorisation_trials, difference_tests
 
 from . import text
 
@@ -81,6 +81,9 @@ def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
                 "t": anova["contrasts"][mode][term]["t"],
                 "df": anova["contrasts"][mode][term]["df"],
                 "p": anova["contrasts"][mode][term]["p"],
+                "p (Holm, the paper's two effects)": anova["contrasts"][mode][term].get(
+                    "p_holm", float("nan")
+                ),
             }
             for term in TERMS
         ]
@@ -140,24 +143,39 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     return values, {"readings_matrix": readings_science.matrix(shown), "readings_summary": summary}
 
 
+def _term_values(prefix: str, term: dict) -> dict:
+    """A tested term's numbers as page values (what a claim rests on)."""
+    return {f"{prefix}_estimate": term["estimate"], f"{prefix}_p": term["p"]}
+
+
 def intro(anova: dict) -> dict:
     closed = anova["closed_loop"]
     means, contrasts = closed["means"], anova["contrasts"]["closed_loop"]
     cong = science.contrast_verdict(contrasts, "congruency")
     size = science.contrast_verdict(contrasts, "size")
-    return {
-        "n_networks": closed["n_networks"],
-        "cong": means["congruent"],
-        "incong": means["incongruent"],
-        "large": means["large"],
-        "small": means["small"],
-        "cong_stats": text.fmt_term(contrasts["congruency"]),
-        "size_stats": text.fmt_term(contrasts["size"]),
-        "cong_dir": text.lower_or_higher(cong),
-        "size_dir": text.lower_or_higher(size),
-        "cong_verdict": text.paper_agreement(cong),
-        "size_verdict": text.paper_agreement(size),
-    }
+    return (
+        {
+            "n_networks": closed["n_networks"],
+            "cong": means["congruent"],
+            "incong": means["incongruent"],
+            "large": means["large"],
+            "small": means["small"],
+            "cong_stats": text.fmt_term(contrasts["congruency"]),
+            "size_stats": text.fmt_term(contrasts["size"]),
+            "cong_dir": text.lower_or_higher(cong),
+            "size_dir": text.lower_or_higher(size),
+            "cong_verdict": text.Claim(
+                text.paper_agreement(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
+            ),
+            "size_verdict": text.Claim(
+                text.paper_agreement(size), ("intro.size_estimate", "intro.size_p_holm")
+            ),
+            "congruency_p_holm": contrasts["congruency"]["p_holm"],
+            "size_p_holm": contrasts["size"]["p_holm"],
+        }
+        | _term_values("congruency", contrasts["congruency"])
+        | _term_values("size", contrasts["size"])
+    )
 
 
 def results(anova: dict, curve: dict, cue: str) -> dict:
@@ -181,30 +199,63 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
         contrasts = anova["contrasts"][mode]
         for term, r in contrasts.items():
             out[f"{mode}_contrast_{term.replace(':', '_x_')}"] = text.fmt_term(r)
-        out[f"{mode}_cong_sentence"] = text.results_sentence(
-            "congruency", science.contrast_verdict(contrasts, "congruency")
-        )
-        out[f"{mode}_size_sentence"] = text.results_sentence(
-            "size", science.contrast_verdict(contrasts, "size")
-        )
+        interaction = contrasts["congruency:size"]
+        out[f"{mode}_interaction_p"] = interaction["p"]
+        for effect, short in (("congruency", "cong"), ("size", "size")):
+            out |= _term_values(f"{mode}_{effect}", contrasts[effect])
+            out[f"{mode}_{effect}_p_holm"] = contrasts[effect]["p_holm"]
+            out[f"{mode}_{short}_sentence"] = text.Claim(
+                text.results_sentence(
+                    effect, science.contrast_verdict(contrasts, effect), interaction["p"] < 0.05
+                ),
+                (
+                    f"results.{mode}_{effect}_estimate",
+                    f"results.{mode}_{effect}_p_holm",
+                    f"results.{mode}_interaction_p",
+                ),
+            )
     out["n_trials"] = anova["closed_loop"]["n_trials"]
+    out["n_networks_tested"] = anova["contrasts"]["closed_loop"]["congruency"]["networks"]
+    out["df"] = anova["contrasts"]["closed_loop"]["congruency"]["df"]
     out["cue"] = text.CUES[cue]
     return out
 
 
 def discussion(anova: dict, demos: dict, cue: str) -> dict:
+    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
-    return {
-        "grip_distance_large": gap["large"],
-        "grip_distance_small": gap["small"],
-        "text": text.discussion(
-            science.contrast_verdict(anova["contrasts"]["closed_loop"], "congruency"),
-            science.contrast_verdict(anova["contrasts"]["closed_loop"], "size"),
-            science.contrast_verdict(anova["contrasts"]["teacher_forced"], "size"),
-            gap,
-            cue,
-        ),
+    closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
+    simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
+    rates = anova["closed_loop"]["wrong_grip_rate"]
+    wrong = {
+        c: float(np.mean([rates[f"{c}_{s}"] for s in ("large", "small")]))
+        for c in ("congruent", "incongruent")
     }
+    out = (
+        {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"]}
+        | _term_values("congruency", closed["congruency"])
+        | _term_values("size", closed["size"])
+        | _term_values("forced_size", forced["size"])
+        | _term_values("forced_interaction", forced["congruency:size"])
+        | {"wrong_congruent": wrong["congruent"], "wrong_incongruent": wrong["incongruent"]}
+        | {f"{e}_p_holm": closed[e]["p_holm"] for e in ("congruency", "size")}
+    )
+    for name, term in simple.items():
+        out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}
+    for name, term in forced_simple.items():
+        out |= {
+            f"forced_{name}_estimate": term["estimate"],
+            f"forced_{name}_p_holm": term["p_holm"],
+        }
+    paragraphs = {
+        "congruency_text": text.discussion_congruency(
+            science.contrast_verdict(closed, "congruency"), wrong, cue
+        ),
+        "size_text": text.discussion_size(science.contrast_verdict(closed, "size"), simple, wrong),
+        "forced_text": text.discussion_forced(forced, forced_simple),
+        "readings_text": text.discussion_readings(cue),
+    }
+    return out | paragraphs | {"order": list(paragraphs)}
 
 
 def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
@@ -305,22 +356,30 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
                         "partial η²": e["eta_p2"],
                     }
                 )
-    shows = {}
-    for name, cue, result in (("main", main_cue, main), ("ablation", ablation_cue, ablation)):
-        m = result["closed_loop"]
-        v = science.verdict(m, "congruency")
-        shows[cue] = v.reproduced
+    for name, result in (("main", main), ("ablation", ablation)):
+        m, contrasts = result["closed_loop"], result["contrasts"]["closed_loop"]
         out |= {
             f"cue_{name}_congruent": m["means"]["congruent"],
             f"cue_{name}_incongruent": m["means"]["incongruent"],
-            f"cue_{name}_congruency": text.fmt_f(m["repeated_measures"]["congruency"]),
-            f"cue_{name}_size": text.fmt_f(m["repeated_measures"]["size"]),
-            f"cue_{name}_verdict": text.cue_verdict(v),
+            f"cue_{name}_congruency": text.fmt_term(contrasts["congruency"]),
+            f"cue_{name}_size": text.fmt_term(contrasts["size"]),
         }
+        out |= _term_values(f"cue_{name}_congruency", contrasts["congruency"])
+        out[f"cue_{name}_verdict"] = text.Claim(
+            text.cue_verdict(science.contrast_verdict(contrasts, "congruency")),
+            (f"beyond.cue_{name}_congruency_estimate", f"beyond.cue_{name}_congruency_p"),
+        )
+    # the test of the difference: first step only minus every step, paired by network
+    runs = {main_cue: inputs["trials.csv"], ablation_cue: inputs["ablation_trials.csv"]}
+    trials = {
+        cue: categorisation_trials(pd.read_csv(path), "closed_loop") for cue, path in runs.items()
+    }
+    difference = difference_tests(trials["first_step"], trials["all_steps"])["congruency"]
+    out |= _term_values("cue_difference", difference)
     out |= {
         "main_cue_phrase": text.CUES[main_cue],
         "ablation_cue_phrase": text.CUES[ablation_cue],
-        "cue_explanation": text.cue_explanation(science.cue_timing_decides(shows)),
+        "cue_explanation": text.cue_difference(difference),
     }
 
     # the hidden layer
@@ -329,6 +388,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "div_last_incong": float(divergence["incongruent"].iloc[-1]),
         "div_step1_cong": float(divergence["congruent"].iloc[0]),
         "div_step1_incong": float(divergence["incongruent"].iloc[0]),
+        "div_first_step": float("nan") if first_step is None else first_step,
         "div_sentence": text.divergence_sentence(first_step),
         "pca_explained": text.pct(science.explained_by_two_axes(explained)),
     }
@@ -400,29 +460,16 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
     """Explore, then confirm (config robot.confirmation; data/embodied/confirmation.csv): each
     confirmed variant's share on the networks it was chosen on and on fresh ones, each with its
     clustered interval, and the bar set against the confirmation's interval only. The statistics
-    are lists, one item per confirmed variant; the sentences ``text.Claim`` s resting on them."""
-    sets = {
-        name: confirmation[confirmation["seed_set"] == name]
-        for name in ("exploration", "confirmation")
-    }
+    are numbers named ``{seed set}_{statistic}`` (``_{k}`` appended for the k-th variant from the
+    second on); the two sentences are ``text.Claim`` s resting on them."""
     if confirmation.empty:
         none = (
             "This build confirms no variant (config robot.confirmation.variants is empty), so no "
             "share is set against the bar."
         )
         return {"exploration_sentence": "", "confirmation_sentence": none}
-    out: dict[str, object] = {}
-    for name, rows in sets.items():
-        for column in ("networks", "first_network", "last_network", "trials", "held"):
-            out[f"{name}_{column}"] = [int(v) for v in rows[column]]
-        for column in ("share", "ci_low", "ci_high"):
-            out[f"{name}_{column}"] = [float(v) for v in rows[column]]
-    verdicts = [
-        confirmation_science.bar_verdict(low, high, science.GRASPS)
-        for low, high in zip(out["confirmation_ci_low"], out["confirmation_ci_high"], strict=True)
-    ]
-    out["confirmation_verdict"] = verdicts
     bar = text.pct(science.GRASPS)
+    out: dict[str, object] = {"bar_share": float(science.GRASPS)}
     said_bar = {
         "above": f"the confirmation's interval lies above {bar}, so the variant's rate of "
         f"holding the object is above {bar} (at 95% confidence)",
@@ -431,53 +478,59 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
         "below": f"the confirmation's interval lies below {bar}, so the variant's rate of "
         f"holding the object is below {bar} (at 95% confidence)",
     }
+    counts = ("networks", "first_network", "last_network", "trials", "held")
+    entries = {"exploration": [], "confirmation": ["grasping.bar_share"]}
+    said: dict[str, list[str]] = {"exploration": [], "confirmation": []}
+    explored = confirmation[confirmation["seed_set"] == "exploration"]
+    for k, (_, row) in enumerate(explored.iterrows()):
+        suffix = "" if k == 0 else f"_{k + 1}"
+        mine = confirmation[(confirmation["seed_set"] == "confirmation")].iloc[k]
+        v = {}
+        for name, source in (("exploration", row), ("confirmation", mine)):
+            for column in (*counts, "share", "ci_low", "ci_high"):
+                value = source[column]
+                v[name, column] = int(value) if column in counts else float(value)
+                out[f"{name}_{column}{suffix}"] = v[name, column]
+                entries[name].append(f"grasping.{name}_{column}{suffix}")
 
-    def share(name: str, k: int) -> str:
-        held, trials = out[f"{name}_held"][k], out[f"{name}_trials"][k]
-        low, high = out[f"{name}_ci_low"][k], out[f"{name}_ci_high"][k]
-        return (
-            f"{held} of its {trials} distinct grasping trials ({text.pct(out[f'{name}_share'][k])}"
-            f"; 95% interval {text.pct(low)} to {text.pct(high)})"
-        )
+        def share(name: str, v=v) -> str:
+            low, high = text.pct(v[name, "ci_low"]), text.pct(v[name, "ci_high"])
+            return (
+                f"{v[name, 'held']} of its {v[name, 'trials']} distinct grasping trials "
+                f"({text.pct(v[name, 'share'])}; 95% interval {low} to {high})"
+            )
 
-    explored, confirmed = [], []
-    for k, (_, row) in enumerate(sets["exploration"].iterrows()):
+        def networks(name: str, v=v) -> str:
+            return f"seed {seed}'s networks {v[name, 'first_network']}-{v[name, 'last_network']}"
+
         label = f"the variant ({_variant_label(row)})"
-        who = "it" if len(sets["exploration"]) == 1 else label
-        explored.append(
-            f"on the networks it was chosen on (seed {seed}'s networks "
-            f"{out['exploration_first_network'][k]}-{out['exploration_last_network'][k]}, on "
-            f"which the grid and the schedule were tried: the exploration), {label} holds the "
-            f"object in {share('exploration', k)}"
+        verdict = confirmation_science.bar_verdict(
+            v["confirmation", "ci_low"], v["confirmation", "ci_high"], science.GRASPS
         )
-        confirmed.append(
-            f"on {out['confirmation_networks'][k]} fresh networks (seed {seed}'s networks "
-            f"{out['confirmation_first_network'][k]}-{out['confirmation_last_network'][k]}, "
-            f"never used to choose it; the same demonstrations and maps), {who} holds the object "
-            f"in {share('confirmation', k)}: {said_bar[verdicts[k]]}"
+        out[f"confirmation_verdict{suffix}"] = verdict
+        said["exploration"].append(
+            f"on the networks it was chosen on ({networks('exploration')}, on which the grid and "
+            f"the schedule were tried: the exploration), {label} holds the object in "
+            f"{share('exploration')}"
         )
-    entries = (
-        "networks",
-        "first_network",
-        "last_network",
-        "trials",
-        "held",
-        "share",
-        "ci_low",
-        "ci_high",
-    )
+        said["confirmation"].append(
+            f"on {v['confirmation', 'networks']} fresh networks ({networks('confirmation')}, "
+            "never used to choose it; the same demonstrations and maps), "
+            f"{'it' if len(explored) == 1 else label} holds the object in "
+            f"{share('confirmation')}: {said_bar[verdict]}"
+        )
     out["exploration_sentence"] = text.Claim(
         "Counted once per network and object, and with an interval that takes each network's "
         "four objects as one cluster (Korn and Graubard's: Clopper-Pearson's exact interval at "
         "the effective number of trials): "
-        + "; ".join(explored)
+        + "; ".join(said["exploration"])
         + f". That share is the data the variant was chosen on, so the choice biases it upwards, "
         f"and the bar of {bar} is not set against it.",
-        tuple(f"grasping.exploration_{c}" for c in entries),
+        tuple(entries["exploration"]),
     )
     out["confirmation_sentence"] = text.Claim(
-        "Trained again and tested by the same rules, " + "; ".join(confirmed) + ".",
-        (*(f"grasping.confirmation_{c}" for c in entries), "grasping.confirmation_verdict"),
+        "Trained again and tested by the same rules, " + "; ".join(said["confirmation"]) + ".",
+        tuple(entries["confirmation"]),
     )
     return out
 

@@ -49,6 +49,7 @@ def fmt_term(term: dict) -> str:
     return (
         f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
         f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
+        + (f", Holm-adjusted {fmt_p(term['p_holm'])}" if "p_holm" in term else "")
     )
 
 
@@ -76,86 +77,155 @@ def significance(verdict: Verdict) -> str:
     return ", significantly" if verdict.significant else ", but not significantly"
 
 
-def results_sentence(effect: str, verdict: Verdict) -> str:
-    """One effect of one test mode (results page)."""
+def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> str:
+    """One effect of one test mode (results page): a difference is stated only where its test is
+    significant; otherwise the sentence says that no difference was shown. ``interacts``: the
+    congruency x size interaction is significant, so a main effect is only an average."""
     if effect == "congruency":
-        words = (
-            "congruent trials were faster (lower RMSE) than incongruent ones"
-            if verdict.paper_direction
-            else "congruent trials were slower (higher RMSE) than incongruent ones"
-        )
+        faster, slower, pair = "congruent trials", "incongruent ones", "congruent and incongruent"
     else:
-        words = (
-            "large objects were faster than small ones"
-            if verdict.paper_direction
-            else "large objects were slower than small ones"
-        )
-    return words + significance(verdict)
+        faster, slower, pair = "large objects", "small ones", "large and small objects"
+    average = " on average over the other factor, which it interacts with" if interacts else ""
+    if verdict.significant:
+        if verdict.paper_direction:
+            return f"{faster} were faster (lower RMSE) than {slower}{average}, significantly"
+        return f"{faster} were slower (higher RMSE) than {slower}{average}, significantly"
+    return f"the difference between {pair} was not significant"
 
 
-def discussion(
-    congruency: Verdict,
-    size: Verdict,
-    forced_size: Verdict,
-    grip_distance: dict[str, float],
-    cue: str,
-) -> str:
-    """The discussion's paragraphs (MyST), from the closed-loop verdicts, the teacher-forced size
-    verdict, the distance between the two grips' demonstrations per size and the run's cue."""
-    text = []
-    if congruency.reproduced:
-        text.append(
-            "**The congruency effect is reproduced.** Networks that must answer with the grip an "
-            "object does not invite are slower (higher RMSE) than when the two agree, as "
-            "Tucker and Ellis found in people and as the paper reports. In this model the cause "
-            "can be seen directly: with the categorisation cue present only at the first step, "
-            "an incongruent movement often drifts toward the object's ordinary grasp, because "
-            "from the second step on the Goal map shows the same pattern as in a grasping trial."
+def p_word(p: float, alpha: float = 0.05) -> str:
+    return "significant" if p < alpha else "not significant"
+
+
+def simple_size_phrase(term: dict, where: str, alpha: float = 0.05) -> str:
+    """Size within one congruency level (``stats.simple_effects``; its Holm-adjusted p)."""
+    numbers = f"small − large {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
+    numbers += f"Holm-adjusted {fmt_p(term['p_holm'])}"
+    if term["p_holm"] >= alpha:
+        return f"among {where} trials the size difference is not significant ({numbers})"
+    word = "faster" if term["estimate"] > 0 else "slower"
+    return f"among {where} trials large objects are {word} ({numbers})"
+
+
+def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str) -> Claim:
+    """The discussion's congruency paragraph: the verdict, and, with the cue at the first step,
+    how often a trial ends nearer the other grip (the drift, counted)."""
+    rests = ("discussion.congruency_estimate", "discussion.congruency_p_holm")
+    if not congruency.reproduced:
+        words = (
+            "the opposite of the paper's direction"
+            if congruency.reversed
+            else "no significant difference"
         )
-    else:
-        text.append(
-            "**The congruency effect is not reproduced in this run** (see the Results for the "
-            "numbers). The paper reports lower RMSE for congruent trials."
+        return Claim(
+            f"**The congruency effect is not reproduced in this run:** closed loop, the test "
+            f"over networks shows {words} (see the Results for the numbers). The paper reports "
+            "lower RMSE for congruent trials.",
+            rests,
         )
+    text = (
+        "**The congruency effect is reproduced.** Networks that must answer with the grip an "
+        "object does not invite are slower (higher RMSE) than when the two agree, as Tucker and "
+        "Ellis found in people and as the paper reports. "
+        f"In closed loop {pct(wrong['incongruent'])} of incongruent trials end nearer the grip "
+        f"the object invites than the one asked for, against {pct(wrong['congruent'])} of "
+        "congruent ones."
+    )
+    if cue == "first_step":
+        text += (
+            " With the cue at the first step only this is what the design leads one to expect: "
+            "from the second step on, the Task map shows the grasping pattern, exactly as in a "
+            "grasping trial of the same object."
+        )
+    return Claim(text, (*rests, "discussion.wrong_incongruent", "discussion.wrong_congruent"))
+
+
+def discussion_size(size: Verdict, simple: dict[str, dict], wrong: dict[str, float]) -> Claim:
+    """The discussion's size paragraph (closed loop): the verdict and, where the size effect is
+    reversed, what the data say of drift toward the wrong grip as its cause: the size effect
+    among congruent trials alone (where no trial drifts if their wrong-grip rate is 0)."""
+    rests = ("discussion.size_estimate", "discussion.size_p_holm")
     if size.reproduced:
-        text.append(
+        return Claim(
             "**The size effect is reproduced:** large objects give a lower RMSE than small ones "
-            "in closed loop, as the paper reports."
+            "in closed loop, as the paper reports.",
+            rests,
         )
-    elif size.reversed:
-        text.append(
-            "**The size effect is reversed.** The paper reports faster responses for large "
-            "objects; here, in closed loop, large objects give a significantly *higher* RMSE "
-            "than small ones. The RMSE mixes two things the paper's reaction-time analogy does "
-            "not separate: how long the conflict lasts and how far apart the two grips' postures "
-            "are. Over the demonstrations, the power and precision movements of the large "
-            f"objects differ by an RMS of {grip_distance['large']:.3f} (normalised angles) and "
-            f"those of the small objects by {grip_distance['small']:.3f}"
-            + (
-                ", so a drift toward the wrong grip costs more for a large object. "
-                if grip_distance["large"] > grip_distance["small"]
-                else ". "
-            )
-            + (
-                "In teacher-forced testing, where no drift can build up, large objects are "
-                "faster, as in the paper."
-                if forced_size.reproduced
-                else "Teacher-forced testing does not show the paper's size effect either."
-            )
+    if not size.reversed:
+        return Claim(
+            "**The size effect is not significant in closed loop.** The paper reports faster "
+            "responses for large objects.",
+            rests,
+        )
+    congruent = simple["size_in_congruent"]
+    text = (
+        "**The size effect is reversed.** The paper reports faster responses for large objects; "
+        "here, in closed loop, large objects give a significantly *higher* RMSE than small ones. "
+    )
+    rests += ("discussion.size_in_congruent_estimate", "discussion.size_in_congruent_p_holm")
+    rests += ("discussion.wrong_congruent",)
+    shown_without_drift = congruent["p_holm"] < 0.05 and congruent["estimate"] < 0
+    if wrong["congruent"] == 0 and shown_without_drift:
+        text += (
+            "Drift toward the wrong grip does not explain it: no congruent trial ends nearer the "
+            "other grip, yet " + simple_size_phrase(congruent, "congruent") + ". "
         )
     else:
-        text.append(
-            "**The size effect is not significant in closed loop.** The paper reports faster "
-            "responses for large objects."
+        text += (
+            "Whether drift toward the wrong grip explains it is not settled by these data: "
+            f"{pct(wrong['congruent'])} of congruent trials end nearer the other grip, and "
+            + simple_size_phrase(congruent, "congruent")
+            + ". "
         )
-    text.append(
+    text += (
+        "What does cause it is not known from this run; the chapter on the readings shows "
+        "whether it survives other readings of the paper and other measures."
+    )
+    return Claim(text, rests)
+
+
+def discussion_forced(forced: dict[str, dict], simple: dict[str, dict]) -> Claim:
+    """The teacher-forced size result, stated with the interaction it comes with: where
+    congruency x size is significant, the size main effect alone does not say where large
+    objects are faster, the simple effects do."""
+    size, inter = forced["size"], forced["congruency:size"]
+    text = (
+        "In teacher-forced testing, where each step starts from the demonstrated posture and no "
+        f"drift can build up, the size term is {size['estimate']:+.4f} "
+        f"(t({size['df']:.0f}) = {size['t']:.2f}, {fmt_p(size['p'])}, {p_word(size['p'])}) and "
+        f"the congruency × size interaction {inter['estimate']:+.4f} "
+        f"(t({inter['df']:.0f}) = {inter['t']:.2f}, {fmt_p(inter['p'])}, {p_word(inter['p'])})"
+    )
+    if inter["p"] < 0.05:
+        text += (
+            ": the size difference depends on congruency, so the main effect alone does not say "
+            "where large objects are faster. Within each level, "
+            + simple_size_phrase(simple["size_in_congruent"], "congruent")
+            + ", and "
+            + simple_size_phrase(simple["size_in_incongruent"], "incongruent")
+            + "."
+        )
+    else:
+        text += "."
+    rests = (
+        "discussion.forced_size_estimate",
+        "discussion.forced_size_p",
+        "discussion.forced_interaction_estimate",
+        "discussion.forced_interaction_p",
+        "discussion.forced_size_in_congruent_p_holm",
+        "discussion.forced_size_in_incongruent_p_holm",
+    )
+    return Claim(text, rests)
+
+
+def discussion_readings(cue: str) -> str:
+    return (
         "The reproduction notes list the choices behind these numbers. The most consequential are "
         f"readings of the paper's text: when the categorisation cue reaches the network (this "
         f"run: `{cue}`) and what the Goal map sends on. The next chapters set the other readings "
         "beside this one, with equal standing, run by the same pipeline and scored on the same "
-        "trials with three measures."
+        "trials with several measures."
     )
-    return "\n\n".join(text)
 
 
 def robot_error_sentence(verdict: Verdict) -> str:
@@ -185,37 +255,56 @@ def points_difference(difference: dict) -> str:
 
 
 def cue_verdict(verdict: Verdict) -> str:
-    return (
-        "shows the congruency effect"
-        if verdict.reproduced
-        else "does not show the congruency effect"
+    if verdict.reproduced:
+        return "shows the congruency effect"
+    if verdict.reversed:
+        return "shows the congruency effect reversed"
+    return "shows no significant congruency effect"
+
+
+def cue_difference(difference: dict, alpha: float = 0.05) -> Claim:
+    """The test of the difference between the cue timings: the congruency effect with the cue at
+    the first step only minus with the cue at every step, paired by network (the same networks,
+    seeds and trials, retrained under the other timing; ``stats.difference_tests``)."""
+    numbers = (
+        f"first step only − every step {difference['estimate']:+.4f}, 95% interval "
+        f"{fmt_ci(difference)}, t({difference['df']:.0f}) = {difference['t']:.2f}, "
+        f"{fmt_p(difference['p'])}, paired over networks"
     )
-
-
-def cue_explanation(decides: bool) -> str:
-    if decides:
-        return (
-            "So the effect needs a cue that is gone after the first step. A cue that stays on "
-            "tells the network at every step which grip is wanted, and nothing is left for the "
-            "object's natural grip to pull against; a cue that is gone leaves the network to "
-            "hold its choice in its own posture feedback, and there the grasp the object affords "
-            "can win."
+    rests = ("beyond.cue_difference_estimate", "beyond.cue_difference_p")
+    if difference["p"] >= alpha:
+        return Claim(
+            "The two timings' congruency effects do not differ significantly "
+            f"({numbers}), so this run does not show that the cue's timing decides the effect.",
+            rests,
         )
-    return "So in this run the cue's timing does not decide whether the effect appears."
+    larger = "at the first step only" if difference["estimate"] > 0 else "at every step"
+    text = f"The congruency effect is significantly larger with the cue {larger} ({numbers})."
+    if difference["estimate"] > 0:
+        text += (
+            " One reading of this: a cue that stays on tells the network at every step which "
+            "grip is wanted, while a cue that is gone leaves the network to hold its choice in "
+            "its own posture feedback, where the grasp the object affords can win."
+        )
+    return Claim(text, rests)
 
 
-def divergence_sentence(first_step: int | None) -> str:
+def divergence_sentence(first_step: int | None) -> Claim:
+    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps)."""
+    rests = ("beyond.div_first_step",)
     if first_step is not None:
-        return (
+        return Claim(
             f"From step {first_step} on, incongruent trials are significantly further from "
-            "grasping at every step (paired t-tests over networks, p < 0.05): the visual input "
-            "keeps drawing the network toward the grasp it learned for the object, and in "
-            "incongruent trials the output must be held away from it. This is the conflict, in "
-            "the hidden layer."
+            "grasping at every step (paired t-tests over networks, Holm-adjusted over the steps, "
+            "p < 0.05): while the output is held on the grip asked for, the hidden state stays "
+            "apart from the one the same object drives in a grasping trial.",
+            rests,
         )
-    return (
+    return Claim(
         "Incongruent trials are not significantly further from grasping at every step to the end "
-        "(paired t-tests over networks): this run shows no lasting conflict in the hidden layer."
+        "(paired t-tests over networks, Holm-adjusted over the steps): this run shows no lasting "
+        "conflict in the hidden layer.",
+        rests,
     )
 
 
