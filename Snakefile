@@ -73,6 +73,8 @@ DEFAULT_OUTPUTS = [
     *rules.embodied_replay.output,
     *rules.embodied_tolerance.output,
     *rules.embodied_summary.output,
+    *(f for run in CONFIRMATION_RUNS for f in run_files(run) + robot_files(run)),
+    *rules.embodied_confirmation.output,
     *rules.embodied_filmstrip.output,
     *rules.robot_variants_figure.output,
     *rules.robot_animation.output,

@@ -112,12 +112,46 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["animation"].update(object="pear"),
             ["robot.animation.object", "pear", "objects"],
         ),
+        # a confirmation of an untested variant, on the exploration's networks, past net99
+        (
+            lambda c: c["robot"]["confirmation"]["variants"].append(
+                {"categorisation_cue": "first_step", "target": "sensed", "hidden": 20}
+                | {"iterations": 48000, "learning_rate_schedule": "anneal"}
+            ),
+            ["robot.confirmation.variants[1]", "'hidden': 20", "not tested", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"].update(first_network=6),
+            ["robot.confirmation.first_network", "6", "fresh", "at least 12", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"].update(first_network=70),
+            ["robot.confirmation.first_network", "70", "net99", "at most 64", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"].update(robustness_networks=8),
+            ["robot.confirmation.robustness_networks", "8", "at least 12", "Fix"],
+        ),
     ],
 )
 def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change, words):
     message = refusal(change)
     for word in words:
         assert word in message, (word, message)
+
+
+def test_the_default_confirmation_is_fresh_and_large_enough():
+    """Issue 24: the default build confirms on at least 12 fresh networks, robustness on at
+    least 36, and the variant confirmed is the one the exploration picked (the annealed all-steps
+    servo-target variant, 40 hidden, 768,000 iterations)."""
+    config = load_config()
+    confirmation = config["robot"]["confirmation"]
+    assert confirmation["networks"] >= 12 and confirmation["robustness_networks"] >= 36
+    assert confirmation["first_network"] >= config["network"]["networks"]
+    assert confirmation["variants"] == [
+        {"categorisation_cue": "all_steps", "target": "commands", "hidden": 40}
+        | {"iterations": 768000, "learning_rate_schedule": "anneal"}
+    ]
 
 
 def test_every_problem_is_listed_at_once_and_a_run_is_named():
@@ -235,6 +269,14 @@ SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
         (
             lambda c: c["sweep"].update(seeds=[5_000_000_000]),
             ["sweep.seeds.0", "5000000000", "4294967295"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"].update(networks=7),
+            ["robot.confirmation.networks", "7", "multiple of 2", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"]["variants"][0].pop("hidden"),
+            ["robot.confirmation.variants.0", "hidden", "required"],
         ),
         (
             lambda c: c["runs"].update(x={"vision": {"window": 50}}),

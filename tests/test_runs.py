@@ -94,6 +94,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     jobs = planned(result)
     assert jobs.pop("run_train") == jobs.pop("run_embodied") == 1
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
     assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
 
@@ -118,6 +119,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
 
@@ -137,6 +139,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
     assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
 
@@ -161,3 +164,47 @@ def test_a_bad_run_stops_snakemake_before_any_job(tmp_path):
     message = result.stdout + result.stderr
     assert "runs.half_lr" in message and "learnin_rate" in message
     assert not (workdir / "data").exists()
+
+
+def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_and_maps(
+    built, tmp_path
+):
+    """Config robot.confirmation (issue 24): the confirmed variant is a run of its own whose
+    networks are the fresh indices first_network.., trained from the main run's demonstrations
+    and maps (none of its own), mapping by place in the run (first half A), tested on the
+    robot; its networks start from other weights than the exploration's, so they end elsewhere.
+    Planned from scratch, the run's jobs are its trainings and one robot job."""
+    import numpy as np
+    import pandas as pd
+
+    config = load_test_config()
+    confirmation = config["robot"]["confirmation"]
+    first, count = confirmation["first_network"], confirmation["networks"]
+    explored, run = "robot_commands_h10_it1200", "robot_commands_h10_it1200_confirm"
+    nets = [f"{i:02d}" for i in range(first, first + count)]
+    # the plan: the run's networks, from the main run's demonstrations and maps
+    plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
+    jobs = [job for job in re.split(r"^(?=rule \w+:$)", plan, flags=re.M) if f"runs/{run}/" in job]
+    trainings = [job for job in jobs if "rule run_train_network:" in job]
+    assert len(trainings) == count
+    for job in trainings:
+        inputs = re.search(r"input: (.*)", job)[1].split(", ")
+        assert "data/demos/demos.npz" in inputs and "data/soms/soms.npz" in inputs, job
+    assert f"data/runs/{run}/demos" not in plan and f"data/runs/{run}/soms" not in plan
+    for net in nets:
+        assert f"data/runs/{run}/train/net{net}/weights.npz" in plan
+    assert sum("rule confirmation_embodied:" in job for job in jobs) == 1
+    # the built run: fresh networks, their robot trials, and the table
+    for k, net in enumerate(nets):
+        fresh = np.load(built / f"data/runs/{run}/train/net{net}/weights.npz")
+        old = np.load(built / f"data/runs/{explored}/train/net{k:02d}/weights.npz")
+        assert fresh["W1"].shape == old["W1"].shape and not np.allclose(fresh["W1"], old["W1"])
+    trials = pd.read_csv(built / "data/embodied/confirmation_trials.csv")
+    assert sorted(trials["network"].unique()) == list(range(first, first + count))
+    mapping = trials.drop_duplicates("network").set_index("network")["mapping"]
+    assert list(mapping) == ["A"] * (count // 2) + ["B"] * (count // 2)
+    table = pd.read_csv(built / "data/embodied/confirmation.csv")
+    assert list(table["seed_set"]) == ["exploration", "confirmation"]
+    assert list(table["run"]) == [explored, run]
+    assert list(table["networks"]) == [config["network"]["networks"], count]
+    assert list(table["trials"]) == [4 * config["network"]["networks"], 4 * count]

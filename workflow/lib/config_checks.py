@@ -264,6 +264,7 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             f"hidden {own[2]}, iterations {own[3]}, learning_rate_schedule {own[4]}) or an entry "
             "of robot.default. Fix: pick one of them or add it to robot.default."
         )
+    yield from _confirmation_problems(config, listed, key)
     if 0 not in robot["tolerance"]["noise"]:
         yield (
             f"{key('robot.tolerance.noise')}: {robot['tolerance']['noise']} does not list 0, the "
@@ -285,6 +286,42 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             f"{key('figures.embodied.sequence')}: {embodied['sequence']} does not exist; there "
             f"are demos.sequences = {sequences} per object and grip. Allowed: "
             f"0..{sequences - 1}. Fix: pick a sequence in that range."
+        )
+
+
+def _confirmation_problems(config: Mapping[str, Any], listed: list[tuple], key) -> Iterator[str]:
+    """Config robot.confirmation: variants tested in the default run, on network indices the
+    exploration never used, whose names fit the two-digit `net{NN}` folders."""
+    confirmation, network = config["robot"]["confirmation"], config["network"]
+    for i, variant in enumerate(confirmation["variants"]):
+        if robot_key(variant, network) not in listed:
+            yield (
+                f"{key(f'robot.confirmation.variants[{i}]')}: {variant} is not tested in the "
+                "default run, so there is no exploration to confirm. Allowed: the config's own "
+                "networks or an entry of robot.default. Fix: pick one of them or add it to "
+                "robot.default."
+            )
+    first, explored = confirmation["first_network"], network["networks"]
+    if first < explored:
+        yield (
+            f"{key('robot.confirmation.first_network')}: {first} reuses network indices that "
+            f"the exploration chose the variants on (0..{explored - 1}, network.networks = "
+            f"{explored}); a confirmation needs fresh ones. Allowed: at least {explored}. Fix: "
+            f"set first_network to {explored} or more."
+        )
+    most = max(confirmation["networks"], confirmation["robustness_networks"])
+    if first + most > 100:
+        yield (
+            f"{key('robot.confirmation.first_network')}: {first} + {most} networks runs past "
+            "index 99 (the networks' folders are net00..net99). Allowed: first_network + "
+            f"networks at most 100. Fix: lower first_network to at most {100 - most}."
+        )
+    if confirmation["robustness_networks"] < confirmation["networks"]:
+        yield (
+            f"{key('robot.confirmation.robustness_networks')}: "
+            f"{confirmation['robustness_networks']} is fewer than robot.confirmation.networks "
+            f"({confirmation['networks']}); robustness confirms on more networks, not fewer. "
+            f"Allowed: at least {confirmation['networks']}. Fix: raise it."
         )
 
 

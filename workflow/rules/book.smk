@@ -40,6 +40,7 @@ BOOK_DATA = {
     "robot_tolerance.csv": "data/embodied/tolerance.csv",
     "robot_trials.csv": "data/embodied/trials.csv",
     "robot_replay.csv": "data/embodied/replay.csv",
+    "robot_confirmation.csv": "data/embodied/confirmation.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
 } | {
@@ -86,6 +87,7 @@ FINDINGS_READS = [
     "robot_tolerance.csv",
     "robot_trials.csv",
     "robot_replay.csv",
+    "robot_confirmation.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]

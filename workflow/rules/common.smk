@@ -143,6 +143,27 @@ def robot_runs(known):
     return new, table
 
 
+def confirmation_runs(variants):
+    """The confirmation (config robot.confirmation): each variant chosen on the exploration (its
+    row of `variants`, the robot test's table) trained again on fresh network indices,
+    first_network.. (robustness_networks of them with robustness, else networks), its other
+    settings the variant's, so it shares the main run's demonstrations and maps (stage_run).
+    Returns the new runs (name -> overrides) and the confirmation table: the variant's keys, its
+    exploration run and its confirmation run."""
+    confirmation, network = config["robot"]["confirmation"], config["network"]
+    count = confirmation["robustness_networks" if config["robustness"] else "networks"]
+    fresh = {"networks": count, "first_network": confirmation["first_network"]}
+    new, table = {}, []
+    for variant in confirmation["variants"]:
+        key = robot_key(variant, network)
+        explored = next(r for r in variants if tuple(r[k] for k in ROBOT_KEYS) == key)
+        run = f"{explored['run']}_confirm"
+        new[run] = {"network": robot_variant(*key) | fresh}
+        row = dict(zip(ROBOT_KEYS, key, strict=True))
+        table.append(row | {"exploration": explored["run"], "confirmation": run})
+    return new, table
+
+
 ABLATION, _ablation_overrides = ablation_run()
 SWEEP_RUNS = sweep_runs()
 _EARLIER = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
@@ -154,15 +175,18 @@ ROBOT_RUNS, ROBOT_VARIANTS = robot_runs(
 )
 # the variants the robot test runs: those of the default run, or every one with robustness
 ROBOT_TESTED = [row for row in ROBOT_VARIANTS if row["default"] or config["robustness"]]
+CONFIRMATION_RUNS, CONFIRMATION = confirmation_runs(ROBOT_VARIANTS)
 # in this order, which decides whose demonstrations and SOMs a run shares (stage_run)
-RUNS = {**_EARLIER, **READING_RUNS, **ROBOT_RUNS}
+RUNS = {**_EARLIER, **READING_RUNS, **ROBOT_RUNS, **CONFIRMATION_RUNS}
 CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
 RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
 
 
 # each run of `runs:`, laid over the config: the schema and the rules between keys
 check_runs(
-    config, CONFIG_SCHEMA, taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS, *ROBOT_RUNS]
+    config,
+    CONFIG_SCHEMA,
+    taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS, *ROBOT_RUNS, *CONFIRMATION_RUNS],
 )
 
 
@@ -196,7 +220,11 @@ def stage_run(run, stage):
 
 
 def run_networks(run):
-    return [f"{i:02d}" for i in range(RUN_CONFIG[run]["network"]["networks"])]
+    """A run's network indices (each network's seed is network_seed(seed, index)): 0.. for
+    every run but a confirmation, whose fresh ones start at robot.confirmation.first_network."""
+    network = RUN_CONFIG[run]["network"]
+    first = network.get("first_network", 0)
+    return [f"{i:02d}" for i in range(first, first + network["networks"])]
 
 
 def run_section(section):

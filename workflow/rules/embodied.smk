@@ -71,6 +71,30 @@ use rule embodied as run_embodied with:
         "data/benchmarks/runs/{run}/embodied.tsv"
 
 
+# The confirmation (config robot.confirmation): each confirmed variant's fresh networks drive the
+# robot in one job, as a variant's do (rule run_embodied); the networks' indices are the fresh
+# ones (common.smk: run_networks), the same for every confirmation run.
+CONFIRMATION_NETWORKS = run_networks(next(iter(CONFIRMATION_RUNS))) if CONFIRMATION_RUNS else []
+
+
+if CONFIRMATION_RUNS:
+
+    use rule embodied as confirmation_embodied with:
+        output:
+            trials=[
+                f"data/runs/{{run,{runs_pattern(CONFIRMATION_RUNS)}}}/embodied/net{net}/trials.csv"
+                for net in CONFIRMATION_NETWORKS
+            ],
+            states=[
+                f"data/runs/{{run,{runs_pattern(CONFIRMATION_RUNS)}}}/embodied/net{net}/states.npz"
+                for net in CONFIRMATION_NETWORKS
+            ],
+        log:
+            "data/logs/runs/{run}/embodied.log",
+        benchmark:
+            "data/benchmarks/runs/{run}/embodied.tsv"
+
+
 rule embodied_replay:
     """Every demonstration replayed through the embodied controller: its servo targets and its
     sensed postures."""
@@ -155,6 +179,35 @@ rule embodied_summary:
         "data/benchmarks/embodied_summary.tsv"
     script:
         "../scripts/embodied_summary.py"
+
+
+rule embodied_confirmation:
+    """Explore, then confirm: each confirmed variant's share of grasping trials held (each
+    network and object once) on the networks it was chosen on and on fresh ones, with an
+    interval that takes a network's four objects as one cluster; and the fresh networks' robot
+    trials joined."""
+    input:
+        trials=rules.embodied_summary.output.trials,
+        confirmation=[
+            f for row in CONFIRMATION for f in embodied_files(row["confirmation"], "trials.csv")
+        ],
+        code=script_code("embodied_confirmation"),
+    output:
+        table="data/embodied/confirmation.csv",
+        trials="data/embodied/confirmation_trials.csv",
+    params:
+        confirmation=CONFIRMATION,
+        variant_keys=list(ROBOT_KEYS),
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/embodied/confirmation.log",
+    benchmark:
+        "data/benchmarks/embodied_confirmation.tsv"
+    script:
+        "../scripts/embodied_confirmation.py"
 
 
 rule embodied_filmstrip:

@@ -149,7 +149,8 @@ def run_files(run):
     if stage_run(run, "soms") == run:
         files += outputs("soms")
     files += outputs("train", net=run_networks(run))
-    if run in ROBOT_RUNS:  # a robot variant: trained, then tested on the robot (robot_files)
+    # a robot variant or a confirmation: trained, then tested on the robot (robot_files)
+    if run in ROBOT_RUNS or run in CONFIRMATION_RUNS:
         return files
     for name in ("evaluate", "stats", "figure5"):
         files += outputs(name)

@@ -18,10 +18,11 @@ with redirect_log(snakemake.log[0]):
     settings = snakemake.params.network
     weights_files = as_list(snakemake.input.weights)
     trials_files, states_files = as_list(snakemake.output.trials), as_list(snakemake.output.states)
+    first = settings.get("first_network", 0)  # a confirmation's fresh networks start here
     if "net" in snakemake.wildcards.keys():
         nets = [int(snakemake.wildcards.net)]
     else:
-        nets = list(range(settings["networks"]))
+        nets = list(range(first, first + settings["networks"]))
     if not len(nets) == len(weights_files) == len(trials_files) == len(states_files):
         raise ValueError(f"networks {nets}, but {len(weights_files)} weights files")
     materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
@@ -36,7 +37,7 @@ with redirect_log(snakemake.log[0]):
             materials,
             weights,
             net,
-            mapping_of(net, settings["networks"]),
+            mapping_of(net - first, settings["networks"]),  # by its place in the run
             settings["categorisation_cue"],
             settings["target"],
             DemoConfig(**snakemake.params.demos),

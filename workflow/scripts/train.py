@@ -34,17 +34,21 @@ def curve_rows(curve, objects):
 with redirect_log(snakemake.log[0]):
     settings = dict(snakemake.params.network)
     n_networks = settings.pop("networks")
+    # a confirmation's fresh networks start at this index (robot.confirmation); others at 0
+    first = settings.pop("first_network", 0)
     if "net" in snakemake.wildcards.keys():
         nets = [int(snakemake.wildcards.net)]
     else:
-        nets = list(range(n_networks))
+        nets = list(range(first, first + n_networks))
     curves, weights_files = as_list(snakemake.output.curve), as_list(snakemake.output.weights)
-    if len(curves) != len(nets) or max(nets) >= n_networks:
-        raise ValueError(f"networks {nets} asked for, but config network.networks is {n_networks}")
+    if len(curves) != len(nets) or not first <= min(nets) <= max(nets) < first + n_networks:
+        raise ValueError(
+            f"networks {nets} asked for, but the run's are {first}..{first + n_networks - 1}"
+        )
     config = TrainConfig(**settings)
     materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
     for net, curve_path, weights_path in zip(nets, curves, weights_files, strict=True):
-        mapping = mapping_of(net, n_networks)
+        mapping = mapping_of(net - first, n_networks)  # by its place in the run
         weights, curve = train_network(
             materials, config, mapping, network_seed(snakemake.params.seed, net)
         )

@@ -1,0 +1,249 @@
+"""Explore, then confirm (issue 24): the share held on the networks a variant was chosen on and on
+fresh ones, each grasping trial counted once, with an interval that takes a network's objects as
+one cluster (icub_affordance.confirmation)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy import stats
+
+from icub_affordance.confirmation import (
+    COLUMNS,
+    bar_verdict,
+    clustered_interval,
+    confirmation_table,
+)
+
+OBJECTS = ("big_ball", "small_ball", "big_cube", "small_cube")
+
+
+def robot_trials(run: str, held: dict[int, list[bool]], sequences: int = 5) -> pd.DataFrame:
+    """A run's robot trials: each network's grasping trial of each object repeated over the
+    test sequences (one movement), plus categorisation trials that must not count."""
+    rows = []
+    for net, outcomes in held.items():
+        for obj, ok in zip(OBJECTS, outcomes, strict=True):
+            for seq in range(sequences):
+                rows.append(dict(run=run, network=net, task="grasping", object=obj, success=ok))
+                rows.append(
+                    dict(run=run, network=net, task="categorisation", object=obj, success=True)
+                    | {"sequence": seq}
+                )
+    return pd.DataFrame(rows)
+
+
+def by_hand(held: list[int], trials: list[int], level: float = 0.95) -> tuple[float, float]:
+    """Korn and Graubard's interval, computed independently: the share's variance from an OLS
+    fit of each trial's outcome on a constant with standard errors clustered by network
+    (statsmodels, which scales by G / (G - 1)), then Clopper-Pearson's beta quantiles."""
+    import statsmodels.api as sm
+
+    y = np.concatenate([[1.0] * h + [0.0] * (n - h) for h, n in zip(held, trials, strict=True)])
+    groups = np.repeat(np.arange(len(held)), trials)
+    fit = sm.OLS(y, np.ones_like(y)).fit(cov_type="cluster", cov_kwds={"groups": groups})
+    p, var, n, m = float(fit.params[0]), float(fit.cov_params()[0, 0]), len(y), len(held)
+    n_eff = min(n, p * (1 - p) / var) if var > 0 else n
+    n_eff *= (stats.t.ppf(0.975, n - 1) / stats.t.ppf(0.975, m - 1)) ** 2
+    low = stats.beta.ppf(0.025, p * n_eff, n_eff * (1 - p) + 1) if p > 0 else 0.0
+    high = stats.beta.ppf(0.975, p * n_eff + 1, n_eff * (1 - p)) if p < 1 else 1.0
+    return low, high
+
+
+@pytest.mark.parametrize(
+    "held",
+    [
+        [4, 4, 4, 3, 4, 4, 3, 4, 4, 4, 3, 4],  # 45 of 48, the exploration's count
+        [4, 4, 0, 4, 4, 0, 4, 4, 4, 4, 0, 4],  # all or nothing: strongly clustered
+        [2, 3, 1, 4, 2, 3, 0, 4, 3, 2, 1, 3],
+    ],
+)
+def test_the_interval_matches_an_independent_computation(held):
+    got = clustered_interval(held, [4] * len(held))
+    low, high = by_hand(held, [4] * len(held))
+    assert got["share"] == pytest.approx(sum(held) / 48)
+    assert got["ci_low"] == pytest.approx(low, abs=1e-9)
+    assert got["ci_high"] == pytest.approx(high, abs=1e-9)
+
+
+def test_clusters_of_one_trial_give_clopper_pearson_at_one_trial_fewer():
+    """With one trial per network the design effect is m / (m - 1) and the t-correction 1: the
+    interval is the exact binomial one at m - 1 trials."""
+    held = [1] * 30 + [0] * 11  # 41 networks, one trial each; 30 of 41 held
+    got = clustered_interval(held, [1] * len(held))
+    x = 30 / 41 * 40  # the share, at m - 1 = 40 trials
+    low = stats.beta.ppf(0.025, x, 40 - x + 1)
+    high = stats.beta.ppf(0.975, x + 1, 40 - x)
+    assert got["effective_trials"] == pytest.approx(40)
+    assert (got["ci_low"], got["ci_high"]) == pytest.approx((low, high))
+
+
+def test_every_trial_held_gives_the_closed_form_lower_end():
+    """At a share of 1 the variance is 0 (design effect 1) and Clopper-Pearson's lower end is
+    (alpha / 2) ** (1 / n) at the df-corrected n."""
+    got = clustered_interval([4] * 12, [4] * 12)
+    n = 48 * (stats.t.ppf(0.975, 47) / stats.t.ppf(0.975, 11)) ** 2
+    assert got["design_effect"] == 1 and got["effective_trials"] == pytest.approx(n)
+    assert got["ci_low"] == pytest.approx(0.025 ** (1 / n)) and got["ci_high"] == 1
+    # 48 of 48 held with 12 networks does not reach what 48 independent trials would show
+    assert got["ci_low"] < stats.binomtest(48, 48).proportion_ci(method="exact").low
+
+
+def test_clustering_widens_the_interval():
+    """The same 36 of 48 held: spread evenly (3 per network) or all-or-nothing by network."""
+    even = clustered_interval([3] * 12, [4] * 12)
+    clustered = clustered_interval([4] * 9 + [0] * 3, [4] * 12)
+    assert even["share"] == clustered["share"] == 0.75
+    assert clustered["design_effect"] > 3 and even["design_effect"] == 1
+    assert clustered["ci_high"] - clustered["ci_low"] > 1.5 * (even["ci_high"] - even["ci_low"])
+
+
+def test_too_few_networks_are_refused():
+    with pytest.raises(ValueError, match="2 or more networks"):
+        clustered_interval([4], [4])
+
+
+def confirmed(**runs) -> list[dict]:
+    return [{"target": "commands", "hidden": 40} | runs]
+
+
+def test_the_table_counts_each_network_and_object_once():
+    """Five identical test sequences give the table of one; categorisation trials never count."""
+    explored = {n: [True, True, n % 3 > 0, True] for n in range(12)}
+    fresh = {n: [True, n % 2 == 0, True, True] for n in range(12, 24)}
+    variants = confirmed(exploration="explore", confirmation="confirm")
+    five = pd.concat([robot_trials("explore", explored), robot_trials("confirm", fresh)])
+    one = pd.concat([robot_trials("explore", explored, 1), robot_trials("confirm", fresh, 1)])
+    table = confirmation_table(five, variants)
+    pd.testing.assert_frame_equal(table, confirmation_table(one, variants))
+    assert list(table.columns) == ["target", "hidden", *COLUMNS]
+    assert list(table["seed_set"]) == ["exploration", "confirmation"]
+    assert list(table["networks"]) == [12, 12] and list(table["trials"]) == [48, 48]
+    assert list(table["held"]) == [44, 42]  # 4 networks miss a cube; 6 miss the small ball
+    assert list(table["first_network"]) == [0, 12] and list(table["last_network"]) == [11, 23]
+    row = table.iloc[1]
+    expected = clustered_interval([4 if n % 2 == 0 else 3 for n in range(12)], [4] * 12)
+    assert (row["ci_low"], row["ci_high"]) == pytest.approx(
+        (expected["ci_low"], expected["ci_high"])
+    )
+
+
+def test_sequences_that_disagree_are_refused():
+    trials = robot_trials("explore", {0: [True] * 4, 1: [True] * 4})
+    first = trials.index[(trials["task"] == "grasping")][0]
+    trials.loc[first, "success"] = False
+    variants = confirmed(exploration="explore", confirmation="explore")
+    with pytest.raises(ValueError, match="network 0 .*big_ball.*must agree"):
+        confirmation_table(trials, variants)
+
+
+def test_a_run_without_trials_is_refused():
+    trials = robot_trials("explore", {0: [True] * 4, 1: [True] * 4})
+    with pytest.raises(ValueError, match="'confirm'"):
+        confirmation_table(trials, confirmed(exploration="explore", confirmation="confirm"))
+
+
+@pytest.mark.parametrize(
+    ("low", "high", "verdict"),
+    [(0.91, 0.99, "above"), (0.85, 0.97, "includes"), (0.7, 0.89, "below"), (0.9, 1, "includes")],
+)
+def test_the_bar_verdict(low, high, verdict):
+    assert bar_verdict(low, high, 0.9) == verdict
+
+
+# -- the book's sentences: each a claim resting on the page's values, and moving with them -----
+
+
+def confirmation_csv(explore=(45, 0.83, 0.98), confirm=(44, 0.80, 0.97)) -> pd.DataFrame:
+    """data/embodied/confirmation.csv for one variant: (held of 48, ci_low, ci_high) per set."""
+    variant = {
+        "categorisation_cue": "all_steps",
+        "target": "commands",
+        "hidden": 40,
+        "iterations": 768000,
+        "learning_rate_schedule": "anneal",
+    }
+    rows = []
+    for name, (held, low, high), first in (
+        ("exploration", explore, 0),
+        ("confirmation", confirm, 12),
+    ):
+        rows.append(
+            variant
+            | {"seed_set": name, "run": name, "first_network": first, "last_network": first + 11}
+            | {"networks": 12, "trials": 48, "held": held, "share": held / 48}
+            | {"design_effect": 1.0, "effective_trials": 40.0, "ci_low": low, "ci_high": high}
+        )
+    return pd.DataFrame(rows)
+
+
+def sentences(table: pd.DataFrame) -> dict:
+    from icub_book import pages
+
+    return pages.traced({"grasping": pages._confirmation(table, 2009)})
+
+
+def test_the_sentences_are_claims_resting_on_the_pages_values():
+    out = sentences(confirmation_csv())
+    page, claims = out["grasping"], out["claims"]["grasping"]
+    assert set(claims) == {"exploration_sentence", "confirmation_sentence"}
+    for entries in claims.values():
+        assert entries and all(e.split(".", 1)[1] in page for e in entries)
+        assert all(isinstance(page[e.split(".", 1)[1]], int | float) for e in entries)
+    assert "grasping.confirmation_ci_low" in claims["confirmation_sentence"]
+    assert "grasping.exploration_share" in claims["exploration_sentence"]
+    explored = page["exploration_sentence"]
+    assert "45 of its 48" in explored and "networks 0-11" in explored and "chosen on" in explored
+    assert "83% to 98%" in explored and "not set against it" in explored
+    confirmed = page["confirmation_sentence"]
+    assert (
+        "44 of its 48" in confirmed and "networks 12-23" in confirmed and "80% to 97%" in confirmed
+    )
+
+
+@pytest.mark.parametrize(
+    ("low", "high", "words", "not_words"),
+    [
+        (0.92, 0.99, ["lies above 90%", "above 90% (at 95% confidence)"], ["includes", "below"]),
+        (0.80, 0.97, ["includes 90%", "cannot tell"], ["lies above", "lies below"]),
+        (0.70, 0.88, ["lies below 90%", "below 90% (at 95% confidence)"], ["includes", "above"]),
+    ],
+)
+def test_the_bar_is_set_against_the_confirmations_interval(low, high, words, not_words):
+    out = sentences(confirmation_csv(confirm=(44, low, high)))["grasping"]
+    assert out["confirmation_verdict"] == bar_verdict(low, high, 0.9)
+    for word in words:
+        assert word in out["confirmation_sentence"], (word, out["confirmation_sentence"])
+    for word in not_words:
+        assert word not in out["confirmation_sentence"]
+
+
+def test_the_exploration_alone_never_meets_the_bar():
+    """An exploration interval far above the bar changes its numbers, not the verdict, which is
+    the confirmation's."""
+    high = sentences(confirmation_csv(explore=(48, 0.95, 1.0)))["grasping"]
+    low = sentences(confirmation_csv(explore=(30, 0.45, 0.78)))["grasping"]
+    assert "48 of its 48" in high["exploration_sentence"]
+    assert "30 of its 48" in low["exploration_sentence"]
+    assert high["confirmation_sentence"] == low["confirmation_sentence"]
+    for verdict in ("lies above", "includes", "lies below", "clears", "cannot tell"):
+        assert verdict not in high["exploration_sentence"] + low["exploration_sentence"]
+
+
+def test_two_confirmed_variants_each_rest_on_their_own_numbers():
+    one = confirmation_csv(confirm=(44, 0.92, 0.99))
+    two = confirmation_csv(explore=(40, 0.7, 0.9), confirm=(30, 0.5, 0.8)).assign(hidden=20)
+    table = pd.concat(
+        [one[one["seed_set"] == "exploration"], two[two["seed_set"] == "exploration"]]
+    )
+    table = pd.concat([table, one[one["seed_set"] == "confirmation"]])
+    table = pd.concat([table, two[two["seed_set"] == "confirmation"]], ignore_index=True)
+    out = sentences(table)
+    page, claims = out["grasping"], out["claims"]["grasping"]
+    assert page["confirmation_verdict"] == "above" and page["confirmation_verdict_2"] == "below"
+    assert "grasping.confirmation_held_2" in claims["confirmation_sentence"]
+    assert "grasping.exploration_held_2" in claims["exploration_sentence"]
+    sentence = page["confirmation_sentence"]
+    assert "40 hidden" in sentence and "20 hidden" in sentence
+    assert sentence.index("lies above 90%") < sentence.index("lies below 90%")
