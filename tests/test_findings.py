@@ -233,6 +233,15 @@ def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
     assert "not significant" in text.discussion_size(Verdict(True, False), {}, no_drift).text
     assert "discussion.size_in_congruent_p_holm" in ruled_out.rests_on
     assert "discussion.size_p_holm" in ruled_out.rests_on
+    assert "among all the readings' tests" not in ruled_out.text
+    # not significant within the readings' whole family: said, and traced
+    narrower = text.discussion_size(Verdict(False, True), slower_congruent, no_drift, 0.17)
+    assert "not significant (Holm-adjusted p = 0.170)" in narrower.text
+    assert "discussion.size_p_readings_family" in narrower.rests_on
+    assert (
+        "among all"
+        not in text.discussion_size(Verdict(False, True), slower_congruent, no_drift, 0.01).text
+    )
 
 
 def test_the_teacher_forced_size_is_stated_with_its_interaction():

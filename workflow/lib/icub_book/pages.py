@@ -260,8 +260,22 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
     return out
 
 
-def discussion(anova: dict, demos: dict, cue: str) -> dict:
-    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``."""
+def _family_p(inputs: Mapping[str, str], config: dict) -> float:
+    """The Holm-adjusted p of this run's size effect on the paper's RMSE within the readings'
+    whole family of tests (``data/readings/summary.csv``; NaN if the run is no reading there)."""
+    summary = pd.read_csv(inputs["readings_summary.csv"])
+    row = summary[
+        (summary["cue"] == config["network"]["categorisation_cue"])
+        & (summary["goal_response"] == config["soms"]["goal_response"])
+        & (summary["measure"] == "rmse")
+        & (summary["effect"] == "size")
+    ]
+    return float(row["p_holm"].iloc[0]) if len(row) == 1 else float("nan")
+
+
+def discussion(anova: dict, demos: dict, cue: str, family_p: float = float("nan")) -> dict:
+    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``.
+    ``family_p``: the size effect's Holm-adjusted p among all the readings' tests."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
     simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
@@ -278,6 +292,7 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         | _term_values("forced_interaction", forced["congruency:size"])
         | {"wrong_congruent": wrong["congruent"], "wrong_incongruent": wrong["incongruent"]}
         | {f"{e}_p_holm": closed[e]["p_holm"] for e in ("congruency", "size")}
+        | {"size_p_readings_family": family_p}
     )
     for name, term in simple.items():
         out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}
@@ -290,7 +305,9 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         "congruency_text": text.discussion_congruency(
             science.contrast_verdict(closed, "congruency"), wrong, cue
         ),
-        "size_text": text.discussion_size(science.contrast_verdict(closed, "size"), simple, wrong),
+        "size_text": text.discussion_size(
+            science.contrast_verdict(closed, "size"), simple, wrong, family_p
+        ),
         "forced_text": text.discussion_forced(forced, forced_simple),
         "readings_text": text.discussion_readings(cue),
     }
@@ -1019,7 +1036,9 @@ def page_findings(
     pages = {
         "intro": intro(anova),
         "results": results(anova, curve, config["network"]["categorisation_cue"]),
-        "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
+        "discussion": discussion(
+            anova, demos, config["network"]["categorisation_cue"], _family_p(inputs, config)
+        ),
         "beyond": beyond_values,
         "grasping": grasping_values,
         "robustness": robustness_values,

@@ -141,10 +141,17 @@ def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str
     return Claim(text, (*rests, "discussion.wrong_incongruent", "discussion.wrong_congruent"))
 
 
-def discussion_size(size: Verdict, simple: dict[str, dict], wrong: dict[str, float]) -> Claim:
+def discussion_size(
+    size: Verdict,
+    simple: dict[str, dict],
+    wrong: dict[str, float],
+    family_p: float = float("nan"),
+) -> Claim:
     """The discussion's size paragraph (closed loop): the verdict and, where the size effect is
     reversed, what the data say of drift toward the wrong grip as its cause: the size effect
-    among congruent trials alone (where no trial drifts if their wrong-grip rate is 0)."""
+    among congruent trials alone (where no trial drifts if their wrong-grip rate is 0).
+    ``family_p``: the same effect's Holm-adjusted p among all the readings' tests; where it is
+    not significant the paragraph says so, since this run's verdict is then one family's only."""
     rests = ("discussion.size_estimate", "discussion.size_p_holm")
     if size.reproduced:
         return Claim(
@@ -178,6 +185,14 @@ def discussion_size(size: Verdict, simple: dict[str, dict], wrong: dict[str, flo
             + simple_size_phrase(congruent, "congruent")
             + ". "
         )
+    if not family_p < 0.05 and not math.isnan(family_p):
+        text += (
+            "This verdict corrects only over the paper's two effects; among all the readings' "
+            "tests, corrected together, the same reversal is not significant (Holm-adjusted "
+            f"{fmt_p(family_p)}), so it is a finding of this reading's test, not of the whole "
+            "comparison. "
+        )
+        rests += ("discussion.size_p_readings_family",)
     text += (
         "What does cause it is not known from this run; the chapter on the readings shows "
         "whether it survives other readings of the paper and other measures."
