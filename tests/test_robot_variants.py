@@ -315,3 +315,38 @@ def test_the_interval_of_a_share_held_is_clopper_pearson():
     assert low == pytest.approx(beta.ppf(0.025, 45, 4)) and low < 0.9 < 45 / 48
     assert high == pytest.approx(beta.ppf(0.975, 46, 3))
     assert held_interval(0, 10)[0] == 0.0 and held_interval(10, 10)[1] == 1.0
+
+
+def test_the_robots_tests_are_one_family_adjusted_by_holm():
+    """Two variants' defined tests, Holm-adjusted together (by hand: sorted p times the tests
+    left, made monotone), and the verdict reads the adjusted p."""
+    order = list(OBJECTS)
+    held = {(n, o): (n + order.index(o)) % 2 == 0 or (n == 5 and o == "big_ball")
+            for n in range(6) for o in OBJECTS}  # fmt: skip
+    df = pd.concat(
+        [
+            trials("a", success=lambda n, o: held[(n, o)], contact=lambda n, o: np.nan, networks=6),
+            trials(
+                "b", success=lambda n, o: not held[(n, o)], contact=lambda n, o: np.nan, networks=6
+            ),
+        ]
+    )
+    effects = variant_effects(df)
+    tests = [
+        t for run in ("a", "b") for m in ("success", "contact_time")
+        for t in effects[run][m]["tests"].values() if t["method"] != "none"
+    ]  # fmt: skip
+    raw = np.array([t["p"] for t in tests])
+    order_ = np.argsort(raw)
+    m = len(raw)
+    expected = np.empty(m)
+    running = 0.0
+    for rank, i in enumerate(order_):
+        running = max(running, min(1.0, (m - rank) * raw[i]))
+        expected[i] = running
+    np.testing.assert_allclose([t["p_holm"] for t in tests], expected, rtol=1e-12)
+    for run in ("a", "b"):
+        for factor in ("congruency", "size"):
+            test = effects[run]["success"]["tests"][factor]
+            verdict = robot_effect_verdict(effects[run]["success"], "success", factor)
+            assert verdict.significant == (test["p_holm"] < 0.05)

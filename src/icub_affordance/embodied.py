@@ -606,7 +606,8 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     the trials that touched, from the networks that touched in all four congruency x size cells;
     where that test is undefined (fewer than three such networks, or no variance) the effect is
     not estimable and says why. Each measure keeps its counts per level and the per-factor
-    ``tests`` ({"method": "contrasts" | "exact" | "none", ...}).
+    ``tests`` ({"method": "contrasts" | "exact" | "none", ...}); every defined test's p is also
+    given Holm-adjusted over all the variants' tests together (``p_holm``).
     """
     out = {}
     for run, df in distinct_trials(trials).groupby("run", sort=False):
@@ -654,4 +655,22 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
             "tests": tests,
         }
         out[str(run)] = {"success": success, "contact_time": contact}
+    _holm_over_family(out)
     return out
+
+
+def _holm_over_family(effects: dict[str, dict]) -> None:
+    """Every defined test of every variant, measure and factor is one family (the robot
+    chapter reads them together): each gains ``p_holm``, Holm's adjustment over the family,
+    which the verdicts read."""
+    from .stats import holm
+
+    tests = [
+        test
+        for measures in effects.values()
+        for measure in measures.values()
+        for test in measure["tests"].values()
+        if test["method"] != "none"
+    ]
+    for test, p in zip(tests, holm([t["p"] for t in tests]), strict=True):
+        test["p_holm"] = float(p)

@@ -226,18 +226,20 @@ def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float =
     """The verdict on ``factor`` (congruency or size) of one variant's robot ``measure``
     (``effects.json``: success or contact_time), from its test (``effect["tests"][factor]``):
     the per-network contrast, or Fisher's exact test over distinct trials where the contrast has
-    no variance; None where neither exists. The paper's direction: congruent and large objects
-    faster (shorter contact time) and more often held (higher success)."""
+    no variance; None where neither exists. Significance reads the p Holm-adjusted over all the
+    variants' robot tests where given (``p_holm``). The paper's direction: congruent and large
+    objects faster (shorter contact time) and more often held (higher success)."""
     test = effect["tests"][factor]
+    p = test.get("p_holm", test.get("p"))  # adjusted over the robot's family of tests
     if test["method"] == "contrasts":
         # incongruent / small minus the other, coded +-1/2
         positive = test["estimate"] > 0
         direction = positive if measure == "contact_time" else test["estimate"] < 0
-        return Verdict(paper_direction=bool(direction), significant=bool(test["p"] < alpha))
+        return Verdict(paper_direction=bool(direction), significant=bool(p < alpha))
     if test["method"] == "exact":
         (a_yes, a_no), (b_yes, b_no) = test["table"]
         rate_a, rate_b = a_yes / max(a_yes + a_no, 1), b_yes / max(b_yes + b_no, 1)
-        return Verdict(paper_direction=bool(rate_a > rate_b), significant=bool(test["p"] < alpha))
+        return Verdict(paper_direction=bool(rate_a > rate_b), significant=bool(p < alpha))
     return None
 
 

@@ -706,28 +706,36 @@ def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
         numbers = (
             f"{counts}; per-network contrast of the {what}, {second} minus {first}, "
             f"{test['estimate']:+.3f}{unit}, 95% interval {text.fmt_ci(test)}, "
-            f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}, "
+            f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}{_holm_words(test)}, "
             f"{test['networks']} networks"
         )
     else:
         (x, x_no), (y, y_no) = test["table"]
         if x * (y + y_no) == y * (x + x_no):  # the same rate in both conditions
             return f"no difference ({counts})"
-        numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}"
+        numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}{_holm_words(test)}"
     return f"{text.paper_agreement(verdict)} ({numbers})"
+
+
+def _holm_words(test: dict) -> str:
+    if "p_holm" not in test:
+        return ""
+    return f", Holm-adjusted over the robot's tests {text.fmt_p(test['p_holm'])}"
 
 
 def _robot_effect_statistics(effect: dict, factor: str) -> dict[str, float]:
     """The statistics a robot effect's sentence rests on: the difference, the paper's slower
     level minus its faster one (the contrast's estimate, or for the exact test the difference
-    of the shares held), and its p; NaN where the effect is not estimable."""
+    of the shares held), and the p its verdict reads (Holm-adjusted over the robot's tests where
+    given); NaN where the effect is not estimable."""
     test = effect["tests"][factor]
+    p = float(test.get("p_holm", test.get("p", float("nan"))))  # the p the verdict reads
     if test["method"] == "contrasts":
-        return {"estimate": float(test["estimate"]), "p": float(test["p"])}
+        return {"estimate": float(test["estimate"]), "p": p}
     if test["method"] == "exact":
         (x, x_no), (y, y_no) = test["table"]
         difference = y / max(y + y_no, 1) - x / max(x + x_no, 1)
-        return {"estimate": float(difference), "p": float(test["p"])}
+        return {"estimate": float(difference), "p": p}
     return {"estimate": float("nan"), "p": float("nan")}
 
 
