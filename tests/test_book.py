@@ -70,7 +70,7 @@ def test_anova_numbers_in_the_book_equal_anova_json(built, html):
             for effect, r in anova[mode][analysis].items():
                 assert f"{r['F']:.2f}" in html["results"], (mode, analysis, effect)
                 assert f"{r['p']:.2g}" in html["results"], (mode, analysis, effect)
-    # inference is the mixed model's: in the results and on the front page
+    # inference is the per-network contrasts': in the results and on the front page
     for mode in ("closed_loop", "teacher_forced"):
         for term, r in anova["contrasts"][mode].items():
             assert f"{r['estimate']:+.4f}" in html["results"], (mode, term)

@@ -1,5 +1,5 @@
-"""Every test trial's measures (data/eval/measures.csv), and their mixed models and per-object
-means (data/eval/measures.json)."""
+"""Every test trial's measures (data/eval/measures.csv), and their per-network contrasts and
+per-object means (data/eval/measures.json)."""
 
 import json
 
