@@ -176,11 +176,12 @@ def test_the_words_say_the_verdict():
     assert text.results_sentence("congruency", yes) == (
         "congruent trials were faster (lower RMSE) than incongruent ones, significantly"
     )
+    # size is said in RMSE, not speed (a large object's grips lie further apart)
     assert text.results_sentence("size", reversed_) == (
-        "large objects were slower (higher RMSE) than small ones, significantly"
+        "large objects gave a higher RMSE than small ones, significantly"
     )
     assert text.results_sentence("size", reversed_, interacts=True) == (
-        "large objects were slower (higher RMSE) than small ones on average over the other "
+        "large objects gave a higher RMSE than small ones on average over the other "
         "factor, which it interacts with, significantly"
     )
     # a difference that its test does not show is not stated, whichever way the means lie
@@ -213,34 +214,30 @@ def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
 
     slower_congruent = {"size_in_congruent": term(-0.03, 0.001)}
     no_drift = {"congruent": 0.0, "incongruent": 0.6}
-    ruled_out = text.discussion_size(Verdict(False, True), slower_congruent, no_drift)
-    assert "**The size effect is reversed.**" in ruled_out.text
-    assert "does not explain it" in ruled_out.text and "large objects are slower" in ruled_out.text
-    assert "not known" in ruled_out.text
-    # the congruent-only difference not significant: drift is not ruled out
+    size = term(-0.026, 0.17, holm_family="over the readings' 28 tests")
+    reversed_ = text.discussion_size(Verdict(False, True), slower_congruent, no_drift, size)
+    assert "**The size effect is reversed.**" in reversed_.text
+    assert "over the readings' 28 tests p = 0.170" in reversed_.text
+    assert "among congruent trials large objects give a higher RMSE" in reversed_.text
+    assert "is not drift toward the wrong grip" in reversed_.text and "not known" in reversed_.text
+    # not significant after the family's correction: said so, whichever way the estimate lies
+    not_shown = text.discussion_size(Verdict(False, False), slower_congruent, no_drift, size)
+    assert "**The size effect is not shown in closed loop**" in not_shown.text
+    assert "reversed" not in not_shown.text
+    # the congruent-only difference not significant: nothing is ruled out
     unsettled = text.discussion_size(
-        Verdict(False, True), {"size_in_congruent": term(-0.03, 0.2)}, no_drift
+        Verdict(False, True), {"size_in_congruent": term(-0.03, 0.2)}, no_drift, size
     )
-    assert "not settled" in unsettled.text and "not significant" in unsettled.text
-    # congruent trials that drift: not ruled out either
+    assert "size difference is not significant" in unsettled.text
+    # congruent trials that drift: drift is not ruled out
     drifting = text.discussion_size(
-        Verdict(False, True), slower_congruent, {"congruent": 0.1, "incongruent": 0.6}
+        Verdict(False, True), slower_congruent, {"congruent": 0.1, "incongruent": 0.6}, size
     )
-    assert "not settled" in drifting.text
-    assert (
-        "reproduced" in text.discussion_size(Verdict(True, True), slower_congruent, no_drift).text
-    )
-    assert "not significant" in text.discussion_size(Verdict(True, False), {}, no_drift).text
-    assert "discussion.size_in_congruent_p_holm" in ruled_out.rests_on
-    assert "discussion.size_p_holm" in ruled_out.rests_on
-    assert "among all the readings' tests" not in ruled_out.text
-    # not significant within the readings' whole family: said, and traced
-    narrower = text.discussion_size(Verdict(False, True), slower_congruent, no_drift, 0.17)
-    assert "not significant (Holm-adjusted p = 0.170)" in narrower.text
-    assert "discussion.size_p_readings_family" in narrower.rests_on
-    assert (
-        "among all"
-        not in text.discussion_size(Verdict(False, True), slower_congruent, no_drift, 0.01).text
+    assert "not drift" not in drifting.text
+    good = text.discussion_size(Verdict(True, True), slower_congruent, no_drift, size)
+    assert "reproduced" in good.text
+    assert {"discussion.size_p_holm", "discussion.size_in_congruent_p_holm"} <= set(
+        reversed_.rests_on
     )
 
 
@@ -248,14 +245,17 @@ def test_the_teacher_forced_size_is_stated_with_its_interaction():
     from icub_book import text
 
     simple = {"size_in_congruent": term(-0.01, 0.01), "size_in_incongruent": term(0.05, 0.001)}
-    forced = {"size": term(0.014, 0.03), "congruency:size": term(0.038, 0.001)}
+    forced = {
+        "size": term(0.014, 0.03, p_table=0.03),
+        "congruency:size": term(0.038, 0.001, p_table=0.001),
+    }
     words = text.discussion_forced(forced, simple).text
     assert "the size term is +0.0140" in words and "interaction +0.0380" in words
     assert "depends on congruency" in words
-    assert "among congruent trials large objects are slower" in words
-    assert "among incongruent trials large objects are faster" in words
-    # without the interaction, the simple effects are not brought in
-    calm = forced | {"congruency:size": term(0.002, 0.6)}
+    assert "among congruent trials large objects give a higher RMSE" in words
+    assert "among incongruent trials large objects give a lower RMSE" in words
+    # without the interaction (after the table's correction), the simple effects are not brought in
+    calm = forced | {"congruency:size": term(0.038, 0.01, p_table=0.08)}
     assert "depends on congruency" not in text.discussion_forced(calm, simple).text
     simple_ns = simple | {"size_in_congruent": term(-0.01, 0.3)}
     assert "among congruent trials the size difference is not significant" in (
@@ -267,12 +267,14 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
     from icub_book import text
 
     larger = text.cue_difference(term(0.03, 0.001))
+    # the verdict reads the readings' table's Holm p where given
+    assert "do not differ" in text.cue_difference(term(0.03, 0.001, p_holm=0.2)).text
     assert "significantly larger with the cue at the first step only" in larger.text
     assert "One reading of this" in larger.text
     assert "at every step" in text.cue_difference(term(-0.03, 0.001)).text
     same = text.cue_difference(term(0.03, 0.2))
     assert "do not differ significantly" in same.text and "does not show" in same.text
-    assert larger.rests_on == ("beyond.cue_difference_estimate", "beyond.cue_difference_p")
+    assert larger.rests_on == ("beyond.cue_difference_estimate", "beyond.cue_difference_p_holm")
 
 
 def test_a_claim_must_rest_on_findings_the_book_has():

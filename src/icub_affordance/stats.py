@@ -369,6 +369,10 @@ def analyse(trials: pd.DataFrame) -> dict[str, object]:
         }
         contrasts[mode] = network_contrasts(df)
         # the paper's two hypotheses are one family (per test mode): Holm over them
+        # and every term of the mode's table together, for a sentence that reads other terms
+        table = holm([contrasts[mode][t]["p"] for t in TERMS])
+        for term, p in zip(TERMS, table, strict=True):
+            contrasts[mode][term]["p_table"] = float(p)
         adjusted = holm([contrasts[mode][t]["p"] for t in PAPER_EFFECTS])
         for term, p in zip(PAPER_EFFECTS, adjusted, strict=True):
             contrasts[mode][term]["p_holm"] = float(p)

@@ -260,22 +260,28 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
     return out
 
 
-def _family_p(inputs: Mapping[str, str], config: dict) -> float:
-    """The Holm-adjusted p of this run's size effect on the paper's RMSE within the readings'
-    whole family of tests (``data/readings/summary.csv``; NaN if the run is no reading there)."""
-    summary = pd.read_csv(inputs["readings_summary.csv"])
-    row = summary[
+def with_readings_family(anova: dict, summary: pd.DataFrame, config: dict) -> dict:
+    """``anova`` with its closed-loop congruency and size tests Holm-adjusted over the readings'
+    whole family (``data/readings/summary.csv``): the run is one reading among equals, so its
+    test of an effect is one of the family's and gets the family's verdict, not a second one
+    from a smaller family. Unchanged where the run is no reading of that table."""
+    rows = summary[
         (summary["cue"] == config["network"]["categorisation_cue"])
         & (summary["goal_response"] == config["soms"]["goal_response"])
         & (summary["measure"] == "rmse")
-        & (summary["effect"] == "size")
-    ]
-    return float(row["p_holm"].iloc[0]) if len(row) == 1 else float("nan")
+    ].set_index("effect")
+    family = int(summary["p_holm"].notna().sum())
+    out = json.loads(json.dumps(anova))  # a copy
+    for effect in ("congruency", "size"):
+        if effect in rows.index and np.isfinite(rows.loc[effect, "p_holm"]):
+            term = out["contrasts"]["closed_loop"][effect]
+            term["p_holm"] = float(rows.loc[effect, "p_holm"])
+            term["holm_family"] = f"over the readings' {family} tests"
+    return out
 
 
-def discussion(anova: dict, demos: dict, cue: str, family_p: float = float("nan")) -> dict:
-    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``.
-    ``family_p``: the size effect's Holm-adjusted p among all the readings' tests."""
+def discussion(anova: dict, demos: dict, cue: str) -> dict:
+    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
     simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
@@ -288,11 +294,12 @@ def discussion(anova: dict, demos: dict, cue: str, family_p: float = float("nan"
         {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"]}
         | _term_values("congruency", closed["congruency"])
         | _term_values("size", closed["size"])
-        | _term_values("forced_size", forced["size"])
-        | _term_values("forced_interaction", forced["congruency:size"])
+        | {"forced_size_estimate": forced["size"]["estimate"]}
+        | {"forced_size_p_table": forced["size"]["p_table"]}
+        | {"forced_interaction_estimate": forced["congruency:size"]["estimate"]}
+        | {"forced_interaction_p_table": forced["congruency:size"]["p_table"]}
         | {"wrong_congruent": wrong["congruent"], "wrong_incongruent": wrong["incongruent"]}
         | {f"{e}_p_holm": closed[e]["p_holm"] for e in ("congruency", "size")}
-        | {"size_p_readings_family": family_p}
     )
     for name, term in simple.items():
         out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}
@@ -306,7 +313,7 @@ def discussion(anova: dict, demos: dict, cue: str, family_p: float = float("nan"
             science.contrast_verdict(closed, "congruency"), wrong, cue
         ),
         "size_text": text.discussion_size(
-            science.contrast_verdict(closed, "size"), simple, wrong, family_p
+            science.contrast_verdict(closed, "size"), simple, wrong, closed["size"]
         ),
         "forced_text": text.discussion_forced(forced, forced_simple),
         "readings_text": text.discussion_readings(cue),
@@ -486,7 +493,18 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         cue: categorisation_trials(pd.read_csv(path), "closed_loop") for cue, path in runs.items()
     }
     difference = difference_tests(trials["first_step"], trials["all_steps"])["congruency"]
+    # its verdict is the readings' table's, Holm-adjusted over that table's family of tests
+    differences = pd.read_csv(inputs["readings_differences.csv"])
+    row = differences[
+        (differences["comparison"] == "cue_timing")
+        & (differences["at"] == config["soms"]["goal_response"])
+        & (differences["measure"] == "rmse")
+        & (differences["effect"] == "congruency")
+    ]
+    if len(row) == 1:
+        difference["p_holm"] = float(row["p_holm"].iloc[0])
     out |= _term_values("cue_difference", difference)
+    out["cue_difference_p_holm"] = difference.get("p_holm", difference["p"])
     out |= {
         "main_cue_phrase": text.CUES[main_cue],
         "ablation_cue_phrase": text.CUES[ablation_cue],
@@ -1034,7 +1052,9 @@ def page_findings(
     as ``curves/netNN.csv``) to their files; ``config`` is the run's, ``ablation_cue`` the cue
     timing the ablation trained with.
     """
-    anova = _json(inputs["anova.json"])
+    anova = with_readings_family(
+        _json(inputs["anova.json"]), pd.read_csv(inputs["readings_summary.csv"]), config
+    )
     curve = science.curve_summary(_curves(inputs), config["network"]["phase1_iterations"])
     demos = load_npz(inputs["demos.npz"])
     beyond_values, cue_table = beyond(inputs, config, ablation_cue)
@@ -1044,9 +1064,7 @@ def page_findings(
     pages = {
         "intro": intro(anova),
         "results": results(anova, curve, config["network"]["categorisation_cue"]),
-        "discussion": discussion(
-            anova, demos, config["network"]["categorisation_cue"], _family_p(inputs, config)
-        ),
+        "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
         "beyond": beyond_values,
         "grasping": grasping_values,
         "robustness": robustness_values,

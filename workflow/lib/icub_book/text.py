@@ -45,12 +45,16 @@ def fmt_ci(term: dict) -> str:
     return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
 
 
+def _family(term: dict) -> str:
+    return term.get("holm_family", "over the paper's two effects")
+
+
 def fmt_term(term: dict) -> str:
     """A tested term: estimate, 95% t-interval, t with its degrees of freedom, p."""
     return (
         f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
         f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
-        + (f", Holm-adjusted {fmt_p(term['p_holm'])}" if "p_holm" in term else "")
+        + (f", Holm-adjusted {_family(term)} {fmt_p(term['p_holm'])}" if "p_holm" in term else "")
     )
 
 
@@ -87,6 +91,10 @@ def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> 
     else:
         faster, slower, pair = "large objects", "small ones", "large and small objects"
     average = " on average over the other factor, which it interacts with" if interacts else ""
+    if verdict.significant and effect == "size":
+        # in RMSE, not speed: a large object's grips lie further apart
+        word = "a lower" if verdict.paper_direction else "a higher"
+        return f"{faster} gave {word} RMSE than {slower}{average}, significantly"
     if verdict.significant:
         if verdict.paper_direction:
             return f"{faster} were faster (lower RMSE) than {slower}{average}, significantly"
@@ -99,13 +107,15 @@ def p_word(p: float, alpha: float = 0.05) -> str:
 
 
 def simple_size_phrase(term: dict, where: str, alpha: float = 0.05) -> str:
-    """Size within one congruency level (``stats.simple_effects``; its Holm-adjusted p)."""
+    """Size within one congruency level (``stats.simple_effects``; its Holm-adjusted p). Said in
+    RMSE, not speed: a large object's two grips lie further apart, so its RMSE is not a plain
+    stand-in for time."""
     numbers = f"small − large {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
     numbers += f"Holm-adjusted {fmt_p(term['p_holm'])}"
     if term["p_holm"] >= alpha:
         return f"among {where} trials the size difference is not significant ({numbers})"
-    word = "faster" if term["estimate"] > 0 else "slower"
-    return f"among {where} trials large objects are {word} ({numbers})"
+    word = "lower" if term["estimate"] > 0 else "higher"
+    return f"among {where} trials large objects give a {word} RMSE ({numbers})"
 
 
 def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str) -> Claim:
@@ -142,80 +152,71 @@ def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str
 
 
 def discussion_size(
-    size: Verdict,
-    simple: dict[str, dict],
-    wrong: dict[str, float],
-    family_p: float = float("nan"),
+    size: Verdict, simple: dict[str, dict], wrong: dict[str, float], term: dict
 ) -> Claim:
-    """The discussion's size paragraph (closed loop): the verdict and, where the size effect is
-    reversed, what the data say of drift toward the wrong grip as its cause: the size effect
-    among congruent trials alone (where no trial drifts if their wrong-grip rate is 0).
-    ``family_p``: the same effect's Holm-adjusted p among all the readings' tests; where it is
-    not significant the paragraph says so, since this run's verdict is then one family's only."""
+    """The discussion's size paragraph (closed loop): the verdict (``term``: the size test, its
+    p Holm-adjusted over its family) and what the data say of drift toward the wrong grip: the
+    size effect among congruent trials alone (where no trial drifts if their wrong-grip rate is
+    0), a simple effect with its own family."""
     rests = ("discussion.size_estimate", "discussion.size_p_holm")
+    numbers = (
+        f"small − large {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
+        f"Holm-adjusted {term.get('holm_family', '')} {fmt_p(term['p_holm'])}".replace("  ", " ")
+    )
     if size.reproduced:
         return Claim(
             "**The size effect is reproduced:** large objects give a lower RMSE than small ones "
-            "in closed loop, as the paper reports.",
-            rests,
-        )
-    if not size.reversed:
-        return Claim(
-            "**The size effect is not significant in closed loop.** The paper reports faster "
-            "responses for large objects.",
+            f"in closed loop ({numbers}), as the paper reports.",
             rests,
         )
     congruent = simple["size_in_congruent"]
-    text = (
-        "**The size effect is reversed.** The paper reports faster responses for large objects; "
-        "here, in closed loop, large objects give a significantly *higher* RMSE than small ones. "
-    )
     rests += ("discussion.size_in_congruent_estimate", "discussion.size_in_congruent_p_holm")
     rests += ("discussion.wrong_congruent",)
-    shown_without_drift = congruent["p_holm"] < 0.05 and congruent["estimate"] < 0
-    if wrong["congruent"] == 0 and shown_without_drift:
-        text += (
-            "Drift toward the wrong grip does not explain it: no congruent trial ends nearer the "
-            "other grip, yet " + simple_size_phrase(congruent, "congruent") + ". "
+    if size.reversed:
+        text = (
+            "**The size effect is reversed.** The paper reports a lower RMSE for large objects; "
+            f"here, in closed loop, large objects give a significantly *higher* RMSE ({numbers}). "
         )
     else:
+        text = (
+            "**The size effect is not shown in closed loop** "
+            f"({numbers}): the paper reports a lower RMSE for large objects, and this run's "
+            "test, corrected over its family, shows no size difference either way. "
+        )
+    if wrong["congruent"] == 0:
         text += (
-            "Whether drift toward the wrong grip explains it is not settled by these data: "
-            f"{pct(wrong['congruent'])} of congruent trials end nearer the other grip, and "
+            "No congruent trial ends nearer the other grip, and "
             + simple_size_phrase(congruent, "congruent")
-            + ". "
+            + " (a follow-up test, Holm-adjusted over the four simple effects)"
+            + (
+                ": whatever sets the large and small objects' RMSE apart there is not drift "
+                "toward the wrong grip. "
+                if congruent["p_holm"] < 0.05
+                else ". "
+            )
         )
-    if not family_p < 0.05 and not math.isnan(family_p):
-        text += (
-            "This verdict corrects only over the paper's two effects; among all the readings' "
-            "tests, corrected together, the same reversal is not significant (Holm-adjusted "
-            f"{fmt_p(family_p)}), so it is a finding of this reading's test, not of the whole "
-            "comparison. "
-        )
-        rests += ("discussion.size_p_readings_family",)
-    text += (
-        "What does cause it is not known from this run; the chapter on the readings shows "
-        "whether it survives other readings of the paper and other measures."
-    )
+    text += "What makes large objects' RMSE differ from small ones' is not known from this run."
     return Claim(text, rests)
 
 
 def discussion_forced(forced: dict[str, dict], simple: dict[str, dict]) -> Claim:
     """The teacher-forced size result, stated with the interaction it comes with: where
     congruency x size is significant, the size main effect alone does not say where large
-    objects are faster, the simple effects do."""
+    objects' RMSE is lower, the simple effects do. Both terms read their p Holm-adjusted over
+    the mode's table of terms (``p_table``)."""
     size, inter = forced["size"], forced["congruency:size"]
     text = (
         "In teacher-forced testing, where each step starts from the demonstrated posture and no "
         f"drift can build up, the size term is {size['estimate']:+.4f} "
-        f"(t({size['df']:.0f}) = {size['t']:.2f}, {fmt_p(size['p'])}, {p_word(size['p'])}) and "
-        f"the congruency × size interaction {inter['estimate']:+.4f} "
-        f"(t({inter['df']:.0f}) = {inter['t']:.2f}, {fmt_p(inter['p'])}, {p_word(inter['p'])})"
+        f"(t({size['df']:.0f}) = {size['t']:.2f}, Holm-adjusted over the table's terms "
+        f"{fmt_p(size['p_table'])}, {p_word(size['p_table'])}) and the congruency × size "
+        f"interaction {inter['estimate']:+.4f} (t({inter['df']:.0f}) = {inter['t']:.2f}, "
+        f"Holm-adjusted {fmt_p(inter['p_table'])}, {p_word(inter['p_table'])})"
     )
-    if inter["p"] < 0.05:
+    if inter["p_table"] < 0.05:
         text += (
             ": the size difference depends on congruency, so the main effect alone does not say "
-            "where large objects are faster. Within each level, "
+            "where large objects' RMSE is lower. Within each level, "
             + simple_size_phrase(simple["size_in_congruent"], "congruent")
             + ", and "
             + simple_size_phrase(simple["size_in_incongruent"], "incongruent")
@@ -225,9 +226,9 @@ def discussion_forced(forced: dict[str, dict], simple: dict[str, dict]) -> Claim
         text += "."
     rests = (
         "discussion.forced_size_estimate",
-        "discussion.forced_size_p",
+        "discussion.forced_size_p_table",
         "discussion.forced_interaction_estimate",
-        "discussion.forced_interaction_p",
+        "discussion.forced_interaction_p_table",
         "discussion.forced_size_in_congruent_p_holm",
         "discussion.forced_size_in_incongruent_p_holm",
     )
@@ -286,9 +287,15 @@ def cue_difference(difference: dict, alpha: float = 0.05) -> Claim:
         f"first step only − every step {difference['estimate']:+.4f}, 95% interval "
         f"{fmt_ci(difference)}, t({difference['df']:.0f}) = {difference['t']:.2f}, "
         f"{fmt_p(difference['p'])}, paired over networks"
+        + (
+            f"; Holm-adjusted over the readings' differences {fmt_p(difference['p_holm'])}"
+            if "p_holm" in difference
+            else ""
+        )
     )
-    rests = ("beyond.cue_difference_estimate", "beyond.cue_difference_p")
-    if difference["p"] >= alpha:
+    p = difference.get("p_holm", difference["p"])
+    rests = ("beyond.cue_difference_estimate", "beyond.cue_difference_p_holm")
+    if p >= alpha:
         return Claim(
             "The two timings' congruency effects do not differ significantly "
             f"({numbers}), so this run does not show that the cue's timing decides the effect.",
