@@ -732,6 +732,8 @@ def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
         if x * (y + y_no) == y * (x + x_no):  # the same rate in both conditions
             return f"no difference ({counts})"
         numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}{_holm_words(test)}"
+    if not verdict.significant:  # a direction is not claimed from a test that does not show it
+        return f"not shown ({numbers})"
     return f"{text.paper_agreement(verdict)} ({numbers})"
 
 

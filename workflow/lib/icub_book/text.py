@@ -246,13 +246,16 @@ def discussion_readings(cue: str) -> str:
 
 
 def robot_error_sentence(verdict: Verdict) -> str:
-    """The congruency effect on the robot's final posture error."""
-    words = (
-        "the arm ended further from the demonstrated grasp in incongruent trials"
+    """The congruency effect on the robot's final posture error; no direction without its test."""
+    if not verdict.significant:
+        return (
+            "the final error did not differ significantly between congruent and incongruent trials"
+        )
+    return (
+        "the arm ended further from the demonstrated grasp in incongruent trials, significantly"
         if verdict.paper_direction
-        else "the arm ended nearer the demonstrated grasp in incongruent trials"
+        else "the arm ended nearer the demonstrated grasp in incongruent trials, significantly"
     )
-    return words + significance(verdict)
 
 
 def anova_or_undefined(anova: dict | None, effect: str) -> str:
@@ -800,23 +803,33 @@ def goal_response_conclusion(differences) -> Claim | None:
             "The Goal response changes these effects (a widening bump minus a fixed one, paired "
             "by network, significant after Holm's adjustment): " + "; ".join(parts) + "."
         )
-    if not same.empty:
+    constant = (same["diff"] == 0) & (same["ci_low"] == 0) & (same["ci_high"] == 0)
+    identical, tested = same[constant], same[~constant]
+    if not tested.empty:
         parts = []
-        for cue, group in same.groupby("at", sort=False):
+        for cue, group in tested.groupby("at", sort=False):
             items = [
-                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} ("
-                + (
-                    "the same on every network under both responses"
-                    if r["diff"] == r["ci_low"] == r["ci_high"] == 0
-                    else f"within ±{r['margin']:g}, TOST {fmt_holm(r['p_equivalence_holm'])}"
-                )
-                + ")"
+                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} (within "
+                f"±{r['margin']:g}, TOST {fmt_holm(r['p_equivalence_holm'])})"
                 for _, r in group.iterrows()
             ]
             parts.append(f"with {CUES[cue]}, " + "; ".join(items))
         sentences.append(
             "Within the margins declared in the config, the Goal response is shown to make no "
             "difference (equivalence tests) to these effects: " + "; ".join(parts) + "."
+        )
+    if not identical.empty:
+        parts = [
+            f"with {CUES[cue]}, "
+            + "; ".join(
+                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]}"
+                for _, r in group.iterrows()
+            )
+            for cue, group in identical.groupby("at", sort=False)
+        ]
+        sentences.append(
+            "These effects are identical on every network under both responses (nothing "
+            "varies, so no test is needed or possible): " + "; ".join(parts) + "."
         )
     if len(same) == len(rows):
         sentences.append(
