@@ -201,8 +201,12 @@ def intro(anova: dict) -> dict:
             "small": means["small"],
             "cong_stats": text.fmt_term(contrasts["congruency"]),
             "size_stats": text.fmt_term(contrasts["size"]),
-            "cong_dir": text.lower_or_higher(cong),
-            "size_dir": text.lower_or_higher(size),
+            "cong_dir": text.Claim(
+                text.lower_or_higher(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
+            ),
+            "size_dir": text.Claim(
+                text.lower_or_higher(size), ("intro.size_estimate", "intro.size_p_holm")
+            ),
             "cong_verdict": text.Claim(
                 text.paper_agreement(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
             ),
@@ -444,7 +448,11 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
 def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
     """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
     emb = _json(inputs["embodied_analysis.json"])
-    main, ablation = _json(inputs["anova.json"]), _json(inputs["ablation_anova.json"])
+    # each run's verdicts are its reading's in the readings' whole family (as on the other pages)
+    summary = pd.read_csv(inputs["readings_summary.csv"])
+    other = {**config, "network": {**config["network"], "categorisation_cue": ablation_cue}}
+    main = with_readings_family(_json(inputs["anova.json"]), summary, config)
+    ablation = with_readings_family(_json(inputs["ablation_anova.json"]), summary, other)
     divergence = pd.read_csv(inputs["divergence.csv"])
     first_step = _json(inputs["divergence.json"])["first_divergent_step"]
     explained = pd.read_csv(inputs["hidden_explained.csv"])

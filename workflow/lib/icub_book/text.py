@@ -66,16 +66,20 @@ def pct(x: float) -> str:
 
 
 def lower_or_higher(verdict: Verdict) -> str:
-    """The RMSE of the condition the paper reports as faster, against the other's."""
+    """The RMSE of the condition the paper reports as faster, against the other's: a direction
+    only where the test shows one."""
+    if not verdict.significant:
+        return "not significantly different"
     return "lower" if verdict.paper_direction else "higher"
 
 
 def paper_agreement(verdict: Verdict) -> str:
     """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
-    words = (
+    if not verdict.significant:
+        return "unlike the paper, which reports a significant difference"
+    return (
         "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
     )
-    return words if verdict.significant else f"{words}, though not significantly"
 
 
 def significance(verdict: Verdict) -> str:
