@@ -56,7 +56,7 @@ rule readings:
     params:
         table=READINGS,
         measures=config["readings"]["measures"],
-        margins=config["readings"]["equivalence_margin"],
+        margins=settings(config["readings"]["equivalence_margin"]),
     threads: 1
     resources:
         mem_mb=500,
