@@ -90,6 +90,8 @@ def test_the_cue_timing_reruns_training_too(built, tmp_path):
         # the robot grid and the animated variant follow (the test config names its cue timing)
         c["robot"].update(categorisation_cue=["all_steps"])
         c["robot"]["animation"]["variant"].update(categorisation_cue="all_steps")
+        for variant in c["robot"]["confirmation"]["variants"]:  # so does the confirmation's
+            variant.update(categorisation_cue="all_steps")
 
     path = changed_config(tmp_path, change)
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
