@@ -2,7 +2,6 @@
 #   snakemake -c2                                   reproduce everything with config/config.yaml
 #   snakemake -c2 --configfile .test/config/config.yaml   the small test configuration
 import os
-import sys
 from pathlib import Path
 
 from snakemake.utils import min_version, update_config
@@ -18,12 +17,11 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 configfile: "config/config.yaml"
 
 
-# The config is checked here, before any job (workflow/lib/config_checks.py): the schema (each key
+# The config is checked here, before any job (src/icub_workflow/config_checks.py): the schema (each key
 # alone, workflow/schemas/config.schema.yaml), the rules between keys, and the scene itself.
 # Nested `--config` values reach here as text (Snakemake reads them with YAML's BaseLoader): they
 # are read again as a config file's would be.
-sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
-from config_checks import (  # noqa: E402
+from icub_workflow.config_checks import (
     check_command_line,
     check_config,
     check_scene,

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import os
-import sys
 import time
 from pathlib import Path
 
@@ -23,21 +22,18 @@ import numpy as np
 import torch
 import yaml
 
-# the tests' synthetic materials (tests/), and what their conftest imports (workflow/lib)
-REPO = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(REPO / "tests"), str(REPO / "workflow" / "lib")]
-
-from test_jordan import synthetic_materials  # noqa: E402
-
-from icub_affordance.jordan import Weights  # noqa: E402
-from icub_affordance.jordan_torch import JordanNet, train_sequence_torch  # noqa: E402
-from icub_affordance.train import (  # noqa: E402
+from icub_affordance.jordan import Weights
+from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
+from icub_affordance.train import (
     TrainConfig,
     context,
     schedule,
+    synthetic_materials,
     target_grip,
     train_network,
 )
+
+REPO = Path(__file__).resolve().parents[1]
 
 
 def main(plain_sample: int = 1500) -> None:

@@ -8,12 +8,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from configs import merged
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
 from icub_affordance.som import SOMConfig
 from icub_affordance.train import TrainConfig
+from icub_workflow.configs import merged
 
 REPO = Path(__file__).resolve().parents[1]
 

@@ -1,6 +1,6 @@
 """A code change reruns exactly the rules that run that code (issue 14, item 2).
 
-Each rule's code inputs are derived from its script's imports (workflow/lib/code_deps.py, with
+Each rule's code inputs are derived from its script's imports (src/icub_workflow/code_deps.py, with
 `ast`). Here they are checked against Python's own import machinery, and against Snakemake:
 edit a module, dry-run, and every rule whose code imports it is scheduled.
 """
@@ -18,11 +18,12 @@ import time
 from pathlib import Path
 
 import pytest
-from code_deps import CodeGraph, page_code
 from conftest import REPO, run_snakemake
 
+from icub_workflow.code_deps import CodeGraph, page_code
+
 SCRIPTS = REPO / "workflow" / "scripts"
-ROOTS = [REPO / "src", REPO / "workflow" / "lib", REPO / "benchmarks"]  # the project's code
+ROOTS = [REPO / "src"]  # the project's code
 
 
 def write_package(root: Path, modules: dict[str, str]) -> Path:
@@ -157,7 +158,7 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
     imports = {s: imported_by_python(script_sources(s)) for s in {*rule_scripts().values()}}
     in_target = rules_in_target(work)
     modules = sorted({m for files in imports.values() for m in files})
-    assert "src/icub_affordance/train.py" in modules and "workflow/lib/icub_book/text.py" in modules
+    assert "src/icub_affordance/train.py" in modules and "src/icub_workflow/book/text.py" in modules
     for module in modules:
         path = work / module
         before = path.stat()

@@ -1,4 +1,4 @@
-"""The config's checks beyond the schema (workflow/lib/config_checks.py), tried directly: every
+"""The config's checks beyond the schema (src/icub_workflow/config_checks.py), tried directly: every
 refusal names the key, the value, what is allowed and the fix."""
 
 from __future__ import annotations
@@ -7,14 +7,15 @@ import shutil
 
 import pytest
 import yaml
-from config_checks import (
+from conftest import REPO, load_config
+
+from icub_workflow.config_checks import (
     ConfigError,
     check_command_line,
     check_config,
     check_scene,
     typed_overrides,
 )
-from conftest import REPO, load_config
 
 
 def refusal(change, prefix: str = "") -> str:
@@ -285,7 +286,7 @@ SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
     ],
 )
 def test_a_schema_refusal_names_key_value_allowed_and_fix(change, words):
-    from config_checks import check_schema, load_schema
+    from icub_workflow.config_checks import check_schema, load_schema
 
     config = load_config()
     check_schema(config, load_schema(SCHEMA))

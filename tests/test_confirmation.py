@@ -179,7 +179,7 @@ def confirmation_csv(explore=(45, 0.83, 0.98), confirm=(44, 0.80, 0.97)) -> pd.D
 
 
 def sentences(table: pd.DataFrame) -> dict:
-    from icub_book import pages
+    from icub_workflow.book import pages
 
     return pages.traced({"grasping": pages._confirmation(table, 2009)})
 

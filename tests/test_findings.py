@@ -165,7 +165,7 @@ def term(estimate: float, p: float, df: float = 10.0, se: float = 0.01, **extra)
 
 
 def test_the_words_say_the_verdict():
-    from icub_book import text
+    from icub_workflow.book import text
 
     yes, weak = Verdict(True, True), Verdict(True, False)
     reversed_, against = Verdict(False, True), Verdict(False, False)
@@ -200,7 +200,7 @@ def test_the_words_say_the_verdict():
 
 
 def test_the_congruency_paragraph_follows_its_test_and_the_cue():
-    from icub_book import text
+    from icub_workflow.book import text
 
     wrong = {"congruent": 0.0, "incongruent": 0.6}
     shown = text.discussion_congruency(Verdict(True, True), wrong, "first_step")
@@ -217,7 +217,7 @@ def test_the_congruency_paragraph_follows_its_test_and_the_cue():
 
 
 def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
-    from icub_book import text
+    from icub_workflow.book import text
 
     slower_congruent = {"size_in_congruent": term(-0.03, 0.001)}
     no_drift = {"congruent": 0.0, "incongruent": 0.6}
@@ -249,7 +249,7 @@ def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
 
 
 def test_the_teacher_forced_size_is_stated_with_its_interaction():
-    from icub_book import text
+    from icub_workflow.book import text
 
     simple = {"size_in_congruent": term(-0.01, 0.01), "size_in_incongruent": term(0.05, 0.001)}
     forced = {
@@ -271,7 +271,7 @@ def test_the_teacher_forced_size_is_stated_with_its_interaction():
 
 
 def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
-    from icub_book import text
+    from icub_workflow.book import text
 
     larger = text.cue_difference(term(0.03, 0.001))
     # the verdict reads the readings' table's Holm p where given
@@ -285,7 +285,7 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
 
 
 def test_a_claim_must_rest_on_findings_the_book_has():
-    from icub_book import pages, text
+    from icub_workflow.book import pages, text
 
     ok = pages.traced({"p": {"x": 1.0, "s": text.Claim("x is one", ("p.x",))}})
     assert ok["p"]["s"] == "x is one" and ok["claims"] == {"p": {"s": ["p.x"]}}
@@ -408,11 +408,12 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     import shutil
 
     from conftest import load_test_config
-    from icub_book import pages
-    from icub_book.notebooks import execute_pages
     from jupyter_cache import get_cache
     from myst_nb.core.read import read_myst_markdown_notebook
-    from sweep_cost import cost_table, write_cost_table
+
+    from icub_workflow.book import pages
+    from icub_workflow.book.notebooks import execute_pages
+    from icub_workflow.sweep_timing import cost_table, write_cost_table
 
     config = load_test_config() | {"robustness": True}
     config["sweep"] |= {"seeds": [1, 2, 3], "categorisation_cue": ["first_step"]}
@@ -477,7 +478,7 @@ def test_the_package_is_the_science():
 
 
 def test_the_hidden_layer_sentence_follows_the_adjusted_tests():
-    from icub_book import text
+    from icub_workflow.book import text
 
     assert text.divergence_sentence(3).text.startswith("From step 3 on, incongruent trials are")
     assert "not significantly further" in text.divergence_sentence(None).text

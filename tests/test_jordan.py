@@ -15,34 +15,14 @@ from icub_affordance.jordan import N_INPUT, Weights, run_closed_loop, train_onli
 from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
 from icub_affordance.spec import CATEGORISATION, GRASPING
 from icub_affordance.train import (
-    Materials,
     context,
     learning_rates,
     mapping_of,
     schedule,
+    synthetic_materials,
     target_grip,
     train_network,
 )
-
-
-def synthetic_materials(seed: int = 0) -> Materials:
-    """Small stand-ins for the pipeline's outputs with the real shapes."""
-    rng = np.random.default_rng(seed)
-    start = rng.uniform(0.2, 0.8, 16)
-    ends = rng.uniform(0, 1, (4, 2, 16))
-    steps = np.linspace(0, 1, 10)[:, None]
-    demos = np.empty((4, 2, 5, 10, 16))
-    for o, g, s in np.ndindex(4, 2, 5):
-        end = np.clip(ends[o, g] + rng.normal(0, 0.02, 16), 0, 1)
-        demos[o, g, s] = start + steps * (end - start)
-    return Materials(
-        objects=("big_ball", "small_ball", "big_cube", "small_cube"),
-        grips=("power", "precision"),
-        visual=rng.integers(0, 2, (4, 100)).astype(float),
-        goal=rng.uniform(0, 1, (4, 2, 100)),
-        demos=demos,
-        commands=np.clip(demos + 0.05, 0, 1),
-    )
 
 
 def test_network_shapes_and_outputs():
@@ -90,7 +70,7 @@ def test_fast_trainer_equals_the_plain_torch_loop():
 KERNEL_RUN = """
 import hashlib, sys
 import numba
-from test_jordan import synthetic_materials
+from icub_affordance.train import synthetic_materials
 from conftest import train_config
 import icub_affordance.jordan_kernel as kernel
 from icub_affordance.train import train_network
@@ -112,9 +92,7 @@ def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
 
     def run(mode: str) -> tuple[str, str]:
         env = os.environ | {"NUMBA_CACHE_DIR": str(tmp_path / "cache"), "NUMBA_DEBUG_CACHE": "1"}
-        env["PYTHONPATH"] = os.pathsep.join(
-            [str(REPO / "tests"), str(REPO / "src"), str(REPO / "workflow" / "lib")]
-        )
+        env["PYTHONPATH"] = os.pathsep.join([str(REPO / "tests"), str(REPO / "src")])
         result = subprocess.run(
             [sys.executable, "-c", KERNEL_RUN, mode], env=env, capture_output=True, text=True
         )

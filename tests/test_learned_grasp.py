@@ -15,7 +15,6 @@ import numpy as np
 import pandas as pd
 import pytest
 from conftest import demo_config, initial_posture_deg, load_config, train_config
-from test_jordan import synthetic_materials
 
 from icub_affordance.body import (
     OBJECT_NAMES,
@@ -40,7 +39,14 @@ from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
 from icub_affordance.io import save_npz
 from icub_affordance.jordan import Weights, run_closed_loop, train_online
 from icub_affordance.spec import GRASPING, TASKS
-from icub_affordance.train import Materials, context, load_materials, target_grip, train_network
+from icub_affordance.train import (
+    Materials,
+    context,
+    load_materials,
+    synthetic_materials,
+    target_grip,
+    train_network,
+)
 
 CUE = "first_step"
 

@@ -8,9 +8,9 @@ import mujoco
 import numpy as np
 import pytest
 from conftest import REPO, initial_posture_deg
-from scene_files import scene_files
 
 from icub_affordance.body import OBJECT_NAMES, Robot
+from icub_workflow.scene_files import scene_files
 
 SCENE = REPO / "assets" / "icub_scene.xml"
 ROBOT = REPO / "assets" / "icub_right_arm.xml"

@@ -9,9 +9,6 @@ import numpy as np
 import pandas as pd
 import pytest
 from conftest import REPO, load_config, run_snakemake, scratch_workflow
-from icub_book import text
-from icub_book.pages import readings as readings_page
-from icub_book.pages import traced
 from scipy import stats as sps
 
 from icub_affordance.readings import (
@@ -25,6 +22,9 @@ from icub_affordance.readings import (
     summary,
 )
 from icub_affordance.stats import difference_tests, holm
+from icub_workflow.book import text
+from icub_workflow.book.pages import readings as readings_page
+from icub_workflow.book.pages import traced
 
 READINGS = ("first_step+fixed", "first_step+grows", "all_steps+fixed", "all_steps+grows")
 

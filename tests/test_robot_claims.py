@@ -5,8 +5,9 @@ sentence accordingly. Made-up effects, in the shape ``embodied.variant_effects``
 import copy
 
 import pytest
-from icub_book import pages, text
 from scipy.stats import fisher_exact
+
+from icub_workflow.book import pages, text
 
 
 def counts(first_held: int, second_held: int, n: int = 24, factor: str = "congruency") -> dict:

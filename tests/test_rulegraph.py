@@ -10,7 +10,8 @@ import sys
 
 import pytest
 from conftest import TEST_CONFIG, scratch_workflow
-from rulegraph import canonical_dot
+
+from icub_workflow.dot import canonical_dot
 
 DOT = """digraph snakemake_dag {
     graph[bgcolor=white, margin=0];

@@ -6,8 +6,10 @@ import re
 
 import pytest
 import yaml
-from configs import check_runs, merged
 from conftest import REPO, load_test_config, run_snakemake, scratch_workflow
+
+from icub_workflow.config_checks import check_runs
+from icub_workflow.configs import merged
 
 SCHEMA = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
 

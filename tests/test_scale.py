@@ -6,7 +6,8 @@ import itertools
 
 import pytest
 from conftest import REPO, load_config, load_test_config, run_snakemake, scratch_workflow
-from sweep_cost import planned_jobs
+
+from icub_workflow.sweep_timing import planned_jobs
 
 COMPARED = [
     "data/demos/demos.npz",
@@ -153,7 +154,7 @@ def dry_run(workdir, *args, rule="book"):
 
 @pytest.mark.slow
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
-    from icub_book.text import sweep_size
+    from icub_workflow.book.text import sweep_size
 
     workdir = scratch_workflow(tmp_path)
     config = load_test_config()
@@ -225,7 +226,7 @@ def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_pat
 
 
 def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
-    from sweep_cost import SWEEP_INPUTS, measure
+    from icub_workflow.sweep_timing import SWEEP_INPUTS, measure
 
     config = load_test_config()
     table = measure(built, config, [1], cores=2, log=lambda _: None)
@@ -241,7 +242,7 @@ def test_the_cost_of_one_replication_is_timed_in_a_scratch_copy(built):
 
 
 def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
-    from sweep_cost import cost_table, read_cost_table, write_cost_table
+    from icub_workflow.sweep_timing import cost_table, read_cost_table, write_cost_table
 
     table = cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2, other_load=[0.0, 0.01, 0.5])
     assert table["seconds_per_replication"].tolist() == [20.0, 12.5, 11.0]
@@ -261,14 +262,14 @@ def test_the_cost_table_is_written_whole_and_read_back_checked(tmp_path):
 
 @pytest.mark.parametrize("counts", [[], [0, 4], [1, 1], [1.5], ["4"]])
 def test_bad_replication_counts_are_refused(counts):
-    from sweep_cost import check_counts
+    from icub_workflow.sweep_timing import check_counts
 
     with pytest.raises(ValueError, match="sweep_cost"):
         check_counts(counts)
 
 
 def test_the_cost_config_times_replications_of_the_main_runs_networks():
-    from sweep_cost import cost_config
+    from icub_workflow.sweep_timing import cost_config
 
     config = load_test_config() | {"robustness": True}
     scratch = cost_config(config, 3)
@@ -282,8 +283,8 @@ def test_the_cost_config_times_replications_of_the_main_runs_networks():
 
 
 def test_the_cost_words_follow_the_numbers():
-    from icub_book.text import cost_findings
-    from sweep_cost import cost_table
+    from icub_workflow.book.text import cost_findings
+    from icub_workflow.sweep_timing import cost_table
 
     linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
     assert "10.0 s per replication and an intercept of 10.0 s" in linear
@@ -303,7 +304,8 @@ def test_the_cost_words_follow_the_numbers():
 
 def test_the_sweep_words_follow_the_numbers():
     import pandas as pd
-    from icub_book.text import sweep_findings, sweep_summary_display
+
+    from icub_workflow.book.text import sweep_findings, sweep_summary_display
 
     row = {
         "learning_rate": 0.075,
@@ -338,7 +340,7 @@ def test_the_sweep_words_follow_the_numbers():
 
 
 def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers():
-    from icub_book.text import ROBUSTNESS_COMMAND, robustness_not_run
+    from icub_workflow.book.text import ROBUSTNESS_COMMAND, robustness_not_run
 
     config = load_config()
     text = robustness_not_run(config)

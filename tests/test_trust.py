@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 import yaml
 from conftest import REPO, TEST_CONFIG, load_test_config, run_snakemake, scratch_workflow
-from sweep_cost import planned_jobs
 
 from icub_affordance.body import Robot
 from icub_affordance.io import load_npz
+from icub_workflow.sweep_timing import planned_jobs
 
 COMPARED = [
     "data/vision/visual_maps.npz",
@@ -125,7 +125,7 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         (lambda c: c["network"].pop("hidden"), ["hidden", "required"]),
         (lambda c: c["network"].update(iterations="many"), ["many", "integer"]),
         (lambda c: c["network"].update(categorisation_cue="sometimes"), ["sometimes", "all_steps"]),
-        # rules between keys (workflow/lib/config_checks.py), checked when the config is read
+        # rules between keys (src/icub_workflow/config_checks.py), checked when the config is read
         (lambda c: c["network"].update(phase1_iterations=1300), ["phase1_iterations", "1300"]),
         (lambda c: c["vision"].update(window=300), ["vision.window", "300", "320x240"]),
         (lambda c: c["initial_posture_deg"].__setitem__(3, 150), ["initial_posture_deg[3]", "150"]),

@@ -138,7 +138,7 @@ def main() -> None:
     args = parser.parse_args()
     code = args.code.resolve()
     env = os.environ | {
-        "PYTHONPATH": os.pathsep.join(str(code / p) for p in ("src", "workflow/lib", "benchmarks")),
+        "PYTHONPATH": os.pathsep.join(str(code / p) for p in ("src",)),
         "MUJOCO_GL": "egl",
     }
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,7 +1,7 @@
 """What the run's outputs say: the verdicts and summaries the book reports, as numbers and flags.
 
 Each function takes the pipeline's outputs (already loaded) and returns plain numbers, booleans
-or labels; the words the book puts around them are the book's own (``workflow/lib``). The rule
+or labels; the words the book puts around them are the book's own (``icub_workflow.book``). The rule
 ``findings`` runs these once per build, so a verdict such as "the congruency effect is
 reproduced" has a single definition here, and a test.
 """

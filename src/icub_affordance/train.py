@@ -80,6 +80,27 @@ class Materials:
         return self.demos.shape[2] - 1  # the last sequence is held out
 
 
+def synthetic_materials(seed: int = 0) -> Materials:
+    """Small stand-ins for the pipeline's outputs with the real shapes: what the tests and the
+    training benchmark train on without running the pipeline."""
+    rng = np.random.default_rng(seed)
+    start = rng.uniform(0.2, 0.8, 16)
+    ends = rng.uniform(0, 1, (4, 2, 16))
+    steps = np.linspace(0, 1, 10)[:, None]
+    demos = np.empty((4, 2, 5, 10, 16))
+    for o, g, s in np.ndindex(4, 2, 5):
+        end = np.clip(ends[o, g] + rng.normal(0, 0.02, 16), 0, 1)
+        demos[o, g, s] = start + steps * (end - start)
+    return Materials(
+        objects=("big_ball", "small_ball", "big_cube", "small_cube"),
+        grips=("power", "precision"),
+        visual=rng.integers(0, 2, (4, 100)).astype(float),
+        goal=rng.uniform(0, 1, (4, 2, 100)),
+        demos=demos,
+        commands=np.clip(demos + 0.05, 0, 1),
+    )
+
+
 def mapping_of(network: int, n_networks: int) -> str:
     """The first half of the networks learn mapping A, the second half mapping B (paper, sec. 3)."""
     return "A" if network < n_networks // 2 else "B"

@@ -2,19 +2,16 @@
 # each rule runs.
 import itertools
 import re
-import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "lib"))
-from code_deps import CodeGraph, page_code  # noqa: E402
-from configs import ROBOT_KEYS, check_runs, merged, robot_grid, robot_key  # noqa: E402
-from scene_files import scene_files  # noqa: E402
+from icub_workflow.code_deps import CodeGraph, page_code
+from icub_workflow.configs import ROBOT_KEYS, merged, robot_grid, robot_key
+from icub_workflow.config_checks import check_runs
+from icub_workflow.scene_files import scene_files
 
 
-# the project's own code: the package, the workflow's and the book's machinery, the benchmarks
-_CODE = CodeGraph(
-    [Path(workflow.basedir) / folder for folder in ("src", "workflow/lib", "benchmarks")]
-)
+# the project's own code: the science package and the workflow's (src/)
+_CODE = CodeGraph([Path(workflow.basedir) / "src"])
 
 
 def script_code(*scripts, pages=()):

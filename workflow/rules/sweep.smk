@@ -74,7 +74,7 @@ rule sweep_cost:
     """Does the sweep's cost grow linearly? Wall time of `snakemake sweep` for each number of
     replications in config `sweep_cost`, in scratch copies (in the book with robustness=True)."""
     input:
-        # the sweep's only input from the main run (benchmarks/sweep_cost.py: SWEEP_INPUTS)
+        # the sweep's only input from the main run (icub_workflow.sweep_timing: SWEEP_INPUTS)
         data=rules.visual_maps.output,
         rules=sorted(glob.glob("workflow/rules/*.smk")),
         # the measuring, and the code of the rules it times

@@ -6,16 +6,10 @@ import subprocess
 import sys
 from pathlib import Path
 
-# The book's machinery (workflow/lib) and the benchmarks (benchmarks/) are not in the package:
-# put them on the path (Snakemake adds only this script's own folder, at the end).
-WORKFLOW = Path(snakemake.scriptdir).resolve().parent
-sys.path[:0] = [str(WORKFLOW / "lib"), str(WORKFLOW.parent / "benchmarks")]
-
-from collect import benchmark_table, read_benchmarks  # noqa: E402
-from icub_book.notebooks import execute_pages, is_notebook  # noqa: E402
-from icub_book.run import provenance, stage  # noqa: E402
-
-from icub_affordance.io import atomic_path, redirect_log, write_text  # noqa: E402
+from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_workflow.benchmark_tables import benchmark_table, read_benchmarks
+from icub_workflow.book.notebooks import execute_pages, is_notebook
+from icub_workflow.book.run import provenance, stage
 
 with redirect_log(snakemake.log[0]):
     book = Path("book")

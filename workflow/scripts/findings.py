@@ -2,17 +2,10 @@
 data/book/findings.json (one entry per page) and data/book/tables/*.csv."""
 
 import json
-import sys
 from pathlib import Path
 
-# The book's machinery (workflow/lib) and the benchmarks (benchmarks/) are not in the package:
-# put them on the path (Snakemake adds only this script's own folder, at the end).
-WORKFLOW = Path(snakemake.scriptdir).resolve().parent
-sys.path[:0] = [str(WORKFLOW / "lib"), str(WORKFLOW.parent / "benchmarks")]
-
-from icub_book.pages import page_findings  # noqa: E402
-
-from icub_affordance.io import atomic_path, redirect_log, write_text  # noqa: E402
+from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_workflow.book.pages import page_findings
 
 with redirect_log(snakemake.log[0]):
     inputs = dict(zip(snakemake.params.names, snakemake.input.data, strict=True))

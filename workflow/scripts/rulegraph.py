@@ -7,10 +7,8 @@ from pathlib import Path
 
 import yaml
 
-sys.path.insert(0, str(Path(snakemake.scriptdir).parent / "lib"))  # the workflow's machinery
-from rulegraph import canonical_dot  # noqa: E402
-
-from icub_affordance.io import redirect_log, write_text  # noqa: E402
+from icub_affordance.io import redirect_log, write_text
+from icub_workflow.dot import canonical_dot
 
 #: What the graph is drawn from: the workflow's code, config and assets, not its data.
 NOT_LINKED = {"data", ".snakemake", ".git", ".venv"}

@@ -4,7 +4,7 @@ run's config. Key by key, as Snakemake lays `--configfile` files over the Snakef
 from __future__ import annotations
 
 import copy
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping
 from typing import Any
 
 
@@ -17,31 +17,6 @@ def merged(base: Mapping[str, Any], overrides: Mapping[str, Any]) -> dict[str, A
         else:
             out[key] = copy.deepcopy(value)
     return out
-
-
-def check_runs(
-    config: Mapping[str, Any], schema: Mapping[str, Any], taken: Iterable[str] = ()
-) -> None:
-    """Refuse a run of config `runs` whose name is `taken`, whose entry changes what a run may
-    not, or whose overrides, laid over the config, break the schema or a rule between keys
-    (workflow/lib/config_checks.py), naming the run and the key."""
-    from config_checks import ConfigError, check_config, check_schema
-
-    taken = set(taken)
-    for name, overrides in config["runs"].items():
-        prefix = f"runs.{name}."
-        if name in taken:
-            raise ConfigError(
-                f"config key runs.{name}: the name {name!r} is taken (the main run, the cue "
-                "ablation, a sweep point or a reading). Allowed: any other name. Fix: rename the "
-                "run."
-            )
-        # the entry itself: only the sections a run may change, and at least one
-        check_schema(overrides, schema["properties"]["runs"]["additionalProperties"], prefix)
-        # the run's whole config (its own `runs` aside: the entries are checked one by one)
-        run = merged(config, overrides) | {"runs": {}}
-        check_schema(run, schema, prefix)
-        check_config(run, prefix)
 
 
 #: What tells the robot test's variants apart (config `robot`), in the order of their run names.

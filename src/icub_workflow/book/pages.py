@@ -969,10 +969,10 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     """The sweep's sentences and table, or what the page says when this build did not run it."""
     if not config["robustness"]:
         return {"ran": False, "not_run": text.robustness_not_run(config)}, None
-    import sweep_cost  # benchmarks/sweep_cost.py: the cost table's columns, checked
+    from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
 
     summary = pd.read_csv(inputs["sweep_summary.csv"])
-    cost = sweep_cost.read_cost_table(inputs["sweep_cost.csv"])
+    cost = read_cost_table(inputs["sweep_cost.csv"])
     n_points, n_networks = text.sweep_size(config)
     seeds = config["sweep"]["seeds"]
     settings = f"each of {len(summary)} settings" if len(summary) > 1 else "one setting"

@@ -3,8 +3,8 @@
 Snakemake does not track what a `script:` imports, so every rule lists that code as inputs, and
 editing a module reruns exactly the rules that run it. The lists are derived here from the
 sources themselves (with `ast`), never typed by hand, so they cannot drift. Only the project's
-own code counts: modules found under the given roots (the package's `src/`, `workflow/lib/`,
-`benchmarks/`); everything else (NumPy, MuJoCo, ...) is pinned by the lock.
+own code counts: modules found under the given roots (`src/`: the science package and the
+workflow's); everything else (NumPy, MuJoCo, ...) is pinned by the lock.
 """
 
 from __future__ import annotations

@@ -10,14 +10,14 @@ once, with MuJoCo). Every refusal names the config key, the value, what is allow
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
 import yaml
-from configs import robot_grid, robot_key
 
 from icub_affordance.spec import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
+from icub_workflow.configs import merged, robot_grid, robot_key
 
 #: Where a user changes a value (named in every fix).
 WHERE = "config/config.yaml (or your --configfile / --config)"
@@ -380,3 +380,26 @@ def check_scene(config: Mapping[str, Any]) -> None:
             )
     finally:
         robot.close()
+
+
+def check_runs(
+    config: Mapping[str, Any], schema: Mapping[str, Any], taken: Iterable[str] = ()
+) -> None:
+    """Refuse a run of config `runs` whose name is `taken`, whose entry changes what a run may
+    not, or whose overrides, laid over the config, break the schema or a rule between keys
+    (src/icub_workflow/config_checks.py), naming the run and the key."""
+    taken = set(taken)
+    for name, overrides in config["runs"].items():
+        prefix = f"runs.{name}."
+        if name in taken:
+            raise ConfigError(
+                f"config key runs.{name}: the name {name!r} is taken (the main run, the cue "
+                "ablation, a sweep point or a reading). Allowed: any other name. Fix: rename the "
+                "run."
+            )
+        # the entry itself: only the sections a run may change, and at least one
+        check_schema(overrides, schema["properties"]["runs"]["additionalProperties"], prefix)
+        # the run's whole config (its own `runs` aside: the entries are checked one by one)
+        run = merged(config, overrides) | {"runs": {}}
+        check_schema(run, schema, prefix)
+        check_config(run, prefix)

@@ -5,7 +5,4 @@
 - ``text``: the words: numbers formatted for reading and the generated sentences.
 - ``run``: the run's provenance and the staging of outputs into ``book/_data``.
 - ``notebooks``: the pages executed ahead of Sphinx, two at a time.
-
-The rules' scripts put ``workflow/lib`` on ``sys.path`` themselves (Snakemake adds only the
-script's own folder); the tests get it from ``pythonpath`` in ``pyproject.toml``.
 """
