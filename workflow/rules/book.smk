@@ -21,9 +21,9 @@ BOOK_DATA = {
     "embodied_analysis.json": "data/embodied/analysis.json",
     "embodied_success.csv": "data/embodied/success.csv",
     "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
-    "ablation_anova.json": f"data/runs/{ABLATION}/eval/anova.json",
-    "ablation_trials.csv": f"data/runs/{ABLATION}/eval/trials.csv",
-    "ablation_figure5.png": f"data/runs/{ABLATION}/figures/figure5.png",
+    "ablation_anova.json": PLAN.path(PLAN.ablation, "eval/anova.json"),
+    "ablation_trials.csv": PLAN.path(PLAN.ablation, "eval/trials.csv"),
+    "ablation_figure5.png": PLAN.path(PLAN.ablation, "figures/figure5.png"),
     "divergence.csv": "data/eval/divergence.csv",
     "divergence.json": "data/eval/divergence.json",
     "hidden_explained.csv": "data/eval/hidden_explained.csv",
@@ -47,9 +47,15 @@ BOOK_DATA = {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
 # the Goal map under the other response, if a reading uses it (the readings chapter)
-_GROWS = [r["run"] for r in READINGS if r["goal_response"] == "grows" and r["seed"] == config["seed"]]
+_GROWS = [
+    r["run"]
+    for r in PLAN.readings
+    if r["goal_response"] == "grows" and r["seed"] == config["seed"]
+]
 if _GROWS and config["soms"]["goal_response"] != "grows":
-    BOOK_DATA["readings_grows_soms.npz"] = f"{run_dir(stage_run(_GROWS[0], 'soms'))}/soms/soms.npz"
+    BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(
+        PLAN.stage_run(_GROWS[0], "soms"), "soms/soms.npz"
+    )
 
 # With `--config robustness=True` the book also shows the sweep and its cost (robustness.md);
 # without, that page says that this build did not run them.
@@ -155,8 +161,8 @@ rule findings:
     params:
         # the settings the pages quote or the findings depend on (not, say, the figures')
         config=settings({key: config[key] for key in FINDINGS_CONFIG}),
-        # the cue timing the ablation trained with (common.smk: ablation_run)
-        ablation_cue=RUN_CONFIG[ABLATION]["network"]["categorisation_cue"],
+        # the cue timing the ablation trained with (common.smk: PLAN.ablation)
+        ablation_cue=PLAN.config(PLAN.ablation)["network"]["categorisation_cue"],
         names=FINDINGS_READS,
     threads: 1
     resources:

@@ -1,12 +1,13 @@
-# Shared helpers of the rules: the runs of the model, their settings and paths, and the code
-# each rule runs.
-import itertools
+# Shared helpers of the rules (no rules here): the runs of the model, their settings and paths,
+# and the code each rule runs.
+import glob
 import re
 from pathlib import Path
 
+from icub_affordance.variants import NetworkVariant
 from icub_workflow.code_deps import CodeGraph, page_code
-from icub_workflow.configs import ROBOT_KEYS, merged, robot_grid, robot_key
 from icub_workflow.config_checks import check_runs
+from icub_workflow.runs import OWN, plan_runs
 from icub_workflow.scene_files import scene_files
 
 
@@ -43,190 +44,65 @@ def settings(value):
 
 
 # ---- Runs --------------------------------------------------------------------------------------
-# A run is the model run once: the config itself (the main run, at the paths under data/), or
-# the config with some sections overridden (every other run, under data/runs/{name}/). Runs come
-# from config `runs:`, from the cue ablation (the other cue timing), from the sweep and from the
-# readings (those not already among the others).
+# A run is the model made once, for the config with some settings laid over it: the config's own
+# run, config `runs`, the cue ablation, the sweep's points, the readings, the robot variants and
+# their confirmations. They are planned by icub_workflow.runs.plan_runs, which the tests try
+# directly; the rules only ask the plan. A run's files live in its folder under data/
+# (PLAN.folder: the config's own at the top, every other under runs/{run}/), which the rules
+# serving every run take as the wildcard `folder`.
 
-MAIN = "main"
-
-
-def ablation_run():
-    """The cue ablation: the main run with the other categorisation cue timing (MODEL.md 7)."""
-    other = {"first_step": "all_steps", "all_steps": "first_step"}[
-        config["network"]["categorisation_cue"]
-    ]
-    return f"cue_{other}", {"network": {"categorisation_cue": other}}
-
-
-def sweep_runs():
-    """Every combination of the `sweep` section's values, a run each (not in the default run)."""
-    sweep = config["sweep"]
-    runs = {}
-    for seed, lr, hidden, cue in itertools.product(
-        sweep["seeds"], sweep["learning_rate"], sweep["hidden"], sweep["categorisation_cue"]
-    ):
-        runs[f"sweep_seed{seed}_lr{lr}_h{hidden}_{cue}"] = {
-            "seed": seed,
-            "network": {"learning_rate": lr, "hidden": hidden, "categorisation_cue": cue},
-        }
-    return runs
-
-
-def reading_runs(known):
-    """The readings (config `readings`, MODEL.md sections 5, 7, 8): every combination of cue
-    timing and Goal response, each replicated at the config's seed and, with robustness, at each
-    of `readings.seeds`. A replication is the run whose config equals the config with that
-    reading and seed laid over it: an existing run (in `known`, name -> config) if one has those
-    settings, else a new run. Returns the new runs (name -> overrides) and the readings table,
-    one row per reading and replication: reading, cue, goal_response, seed, run."""
-    readings = config["readings"]
-    seeds = [config["seed"], *(readings["seeds"] if config["robustness"] else [])]
-    known, new, table = dict(known), {}, []
-    for cue, goal in itertools.product(readings["categorisation_cue"], readings["goal_response"]):
-        for seed in dict.fromkeys(seeds):
-            overrides = {
-                "seed": seed,
-                "network": {"categorisation_cue": cue},
-                "soms": {"goal_response": goal},
-            }
-            run_config = merged(config, overrides)
-            run = next((name for name, c in known.items() if c == run_config), None)
-            if run is None:
-                run = f"reading_{cue}_{goal}" + ("" if seed == config["seed"] else f"_seed{seed}")
-                new[run], known[run] = overrides, run_config
-            row = {"reading": f"{cue}+{goal}", "cue": cue, "goal_response": goal}
-            table.append(row | {"seed": seed, "run": run})
-    return new, table
-
-
-def robot_variant(cue, target, hidden, iterations, schedule):
-    """The network settings of a robot variant: the config's, with phase 1 keeping its share of
-    the iterations (rounded so that phase 2 splits evenly between the tasks)."""
-    network = config["network"]
-    phase1 = round(iterations * network["phase1_iterations"] / network["iterations"])
-    phase1 += (iterations - phase1) % 2
-    return {
-        "categorisation_cue": cue, "target": target, "hidden": hidden, "iterations": iterations,
-        "phase1_iterations": phase1, "learning_rate_schedule": schedule,
-    }  # fmt: skip
-
-
-def robot_runs(known):
-    """The robot test's variants (config `robot`): every combination of cue timing x target x
-    hidden x iterations x learning-rate schedule, plus the config's own networks (the reference row, the main run). A
-    variant is the run whose config equals the config with its network settings laid over it: an
-    existing run if one has them (the main run for the config's own, the cue ablation for the
-    other cue timing's), else a new one, named by what differs from the config's own cue timing
-    and schedule. Returns the new runs (name -> overrides) and the variants table: run,
-    categorisation_cue, target, hidden, iterations, learning_rate_schedule, default (run without
-    robustness)."""
-    robot, network = config["robot"], config["network"]
-    own = robot_key(network, network)
-    chosen = {own} | {robot_key(v, network) for v in robot["default"]}
-    known, new, table = dict(known), {}, []
-    for variant in dict.fromkeys([own, *robot_grid(robot)]):
-        cue, target, hidden, iterations, schedule = variant
-        overrides = {"network": robot_variant(*variant)}
-        run_config = merged(config, overrides)
-        run = next((name for name, c in known.items() if c == run_config), None)
-        if run is None:
-            run = f"robot_{target}_h{hidden}_it{iterations}"
-            run += "" if cue == network["categorisation_cue"] else f"_{cue}"
-            run += "" if schedule == network["learning_rate_schedule"] else f"_{schedule}"
-            new[run], known[run] = overrides, run_config
-        row = {"run": run} | dict(zip(ROBOT_KEYS, variant, strict=True))
-        table.append(row | {"default": variant in chosen})
-    return new, table
-
-
-def confirmation_runs(variants):
-    """The confirmation (config robot.confirmation): each variant chosen on the exploration (its
-    row of `variants`, the robot test's table) trained again on fresh network indices,
-    first_network.. (robustness_networks of them with robustness, else networks), its other
-    settings the variant's, so it shares the main run's demonstrations and maps (stage_run).
-    Returns the new runs (name -> overrides) and the confirmation table: the variant's keys, its
-    exploration run and its confirmation run."""
-    confirmation, network = config["robot"]["confirmation"], config["network"]
-    count = confirmation["robustness_networks" if config["robustness"] else "networks"]
-    fresh = {"networks": count, "first_network": confirmation["first_network"]}
-    new, table = {}, []
-    for variant in confirmation["variants"]:
-        key = robot_key(variant, network)
-        explored = next(r for r in variants if tuple(r[k] for k in ROBOT_KEYS) == key)
-        run = f"{explored['run']}_confirm"
-        new[run] = {"network": robot_variant(*key) | fresh}
-        row = dict(zip(ROBOT_KEYS, key, strict=True))
-        table.append(row | {"exploration": explored["run"], "confirmation": run})
-    return new, table
-
-
-ABLATION, _ablation_overrides = ablation_run()
-SWEEP_RUNS = sweep_runs()
-_EARLIER = {**config["runs"], ABLATION: _ablation_overrides, **SWEEP_RUNS}
-READING_RUNS, READINGS = reading_runs(
-    {MAIN: config} | {name: merged(config, o) for name, o in _EARLIER.items()}
-)
-ROBOT_RUNS, ROBOT_VARIANTS = robot_runs(
-    {MAIN: config} | {name: merged(config, o) for name, o in {**_EARLIER, **READING_RUNS}.items()}
-)
-# the variants the robot test runs: those of the default run, or every one with robustness
-ROBOT_TESTED = [row for row in ROBOT_VARIANTS if row["default"] or config["robustness"]]
-CONFIRMATION_RUNS, CONFIRMATION = confirmation_runs(ROBOT_VARIANTS)
-# in this order, which decides whose demonstrations and SOMs a run shares (stage_run)
-RUNS = {**_EARLIER, **READING_RUNS, **ROBOT_RUNS, **CONFIRMATION_RUNS}
-CONFIGURED_RUNS = [*config["runs"], ABLATION]  # in the default target
-RUN_CONFIG = {MAIN: config} | {name: merged(config, o) for name, o in RUNS.items()}
-
-
+PLAN = plan_runs(config)
 # each run of `runs:`, laid over the config: the schema and the rules between keys
-check_runs(
-    config,
-    CONFIG_SCHEMA,
-    taken=[MAIN, ABLATION, *SWEEP_RUNS, *READING_RUNS, *ROBOT_RUNS, *CONFIRMATION_RUNS],
+check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
+NETWORKS = PLAN.networks(OWN)
+# A run's networks are trained in one job (runs.smk: run_train): a network takes about 0.15 s of
+# arithmetic and a job about 1 s to start. The exceptions, a job per network (rule train): the
+# config's own run, whose networks start in parallel at the start (the robot test waits on
+# them), and a run with another number of networks (a rule's outputs are fixed when the rules
+# are read, so run_train serves the runs with the config's number).
+NETWORK_JOB_RUNS = [
+    run for run in PLAN.runs if PLAN.jobs_per_network(run) or PLAN.networks(run) != NETWORKS
+]
+GROUPED_RUNS = [run for run in PLAN.runs if run not in NETWORK_JOB_RUNS]
+# The runs whose networks drive the robot (every robot variant and confirmation), and those
+# tested in one job (all but the config's own), grouped by their network indices: a rule's
+# outputs are fixed when the rules are read, so each group has its rule (embodied.smk).
+ROBOT_TESTED_RUNS = list(
+    dict.fromkeys([row["run"] for row in PLAN.robot_variants] + PLAN.confirmation_runs)
 )
+ROBOT_GROUPS = {}
+for _run in ROBOT_TESTED_RUNS:
+    if not PLAN.jobs_per_network(_run):
+        ROBOT_GROUPS.setdefault(tuple(PLAN.networks(_run)), []).append(_run)
+# the confirmations' fresh network indices (config robot.confirmation), the same for each
+FRESH_NETWORKS = next((list(nets) for nets in ROBOT_GROUPS if list(nets) != NETWORKS), [])
+if len(ROBOT_GROUPS.keys() - {tuple(NETWORKS), tuple(FRESH_NETWORKS)}):
+    raise ValueError(f"robot runs with more than two sets of network indices: {ROBOT_GROUPS}")
+# The filmstrip and the films show the first network of each mapping: for any object one of them
+# categorises it with its natural grip (congruent) and the other with the other grip.
+EMBODIED_FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
 
 
-def run_dir(run):
-    return "data" if run == MAIN else f"data/runs/{run}"
-
-
-def run_of(wildcards):
-    return wildcards.get("run", MAIN)
+def folders_pattern(runs):
+    """A wildcard constraint that matches exactly these runs' folders ((?!) matches nothing)."""
+    # in a group: an empty pattern (the config's own folder alone) would count as no constraint
+    folders = "|".join(re.escape(PLAN.folder(run)) for run in runs) if runs else "(?!)"
+    return f"(?:{folders})"
 
 
 wildcard_constraints:
-    run="|".join(map(re.escape, RUNS)),  # names may hold dots (lr0.075)
+    folder=folders_pattern(PLAN.runs),  # names may hold dots (lr0.075)
     net=r"\d\d",
 
 
-# The settings each shared stage depends on: a run uses the stage of the first run (in the order
-# of RUN_CONFIG: main, config `runs`, the ablation, the sweep) whose settings for it are equal, so
-# a run that changes only the network reuses the main run's demonstrations and maps, and two
-# sweep points with one seed share theirs.
-STAGE_SETTINGS = {
-    "demos": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "demos"),
-    "soms": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "vision", "soms"),
-}
-
-
-def stage_run(run, stage):
-    """The run whose `stage` outputs this run reads."""
-    key = [RUN_CONFIG[run][k] for k in STAGE_SETTINGS[stage]]
-    return next(r for r in RUN_CONFIG if [RUN_CONFIG[r][k] for k in STAGE_SETTINGS[stage]] == key)
-
-
-def run_networks(run):
-    """A run's network indices (each network's seed is network_seed(seed, index)): 0.. for
-    every run but a confirmation, whose fresh ones start at robot.confirmation.first_network."""
-    network = RUN_CONFIG[run]["network"]
-    first = network.get("first_network", 0)
-    return [f"{i:02d}" for i in range(first, first + network["networks"])]
+def run_of(wildcards):
+    """The run a job serves, from its wildcard `folder`."""
+    return PLAN.run_in(wildcards["folder"])
 
 
 def run_section(section):
     """A job parameter: this run's config section (keys sorted)."""
-    return lambda wildcards: settings(RUN_CONFIG[run_of(wildcards)][section])
+    return lambda wildcards: settings(PLAN.config(run_of(wildcards))[section])
 
 
 def model_inputs(wildcards):
@@ -234,14 +110,14 @@ def model_inputs(wildcards):
     run = run_of(wildcards)
     return {
         "maps": "data/vision/visual_maps.npz",
-        "soms": f"{run_dir(stage_run(run, 'soms'))}/soms/soms.npz",
-        "demos": f"{run_dir(stage_run(run, 'demos'))}/demos/demos.npz",
+        "soms": PLAN.path(PLAN.stage_run(run, "soms"), "soms/soms.npz"),
+        "demos": PLAN.path(PLAN.stage_run(run, "demos"), "demos/demos.npz"),
     }
 
 
 def run_file(path):
-    """An input: this run's file at `path` under its folder (`{net}` kept as a wildcard)."""
-    return lambda wildcards: f"{run_dir(run_of(wildcards))}/{path}"
+    """An input: this run's file at `path` in its folder."""
+    return lambda wildcards: PLAN.path(run_of(wildcards), path)
 
 
 def run_network_files(path):
@@ -249,6 +125,60 @@ def run_network_files(path):
 
     def files(wildcards):
         run = run_of(wildcards)
-        return [f"{run_dir(run)}/{path}".format(net=net) for net in run_networks(run)]
+        return [PLAN.path(run, path.format(net=net)) for net in PLAN.networks(run)]
 
     return files
+
+
+def embodied_weights(wildcards):
+    """The weights the robot test of a run drives with: the wildcard `net`'s (one network a job),
+    or every network's of the run (one job)."""
+    run = run_of(wildcards)
+    nets = [wildcards.net] if "net" in wildcards.keys() else PLAN.networks(run)
+    return [PLAN.path(run, f"train/net{net}/weights.npz") for net in nets]
+
+
+def outputs(rule, run, **wildcards):
+    """The files `rule` makes for `run`."""
+    return expand(list(getattr(rules, rule).output), folder=PLAN.folder(run), **wildcards)
+
+
+def embodied_files(run, name):
+    """A tested variant's per-network robot-test files (`name`: trials.csv or states.npz)."""
+    return [PLAN.path(run, f"embodied/net{net}/{name}") for net in PLAN.networks(run)]
+
+
+def robot_files(run):
+    """A run's robot test, for a run that is a tested robot variant."""
+    return embodied_files(run, "trials.csv") + embodied_files(run, "states.npz")
+
+
+def run_files(run, tests=True):
+    """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
+    PLAN.stage_run), each network's curve and weights, and (`tests`) the in-silico tests,
+    ANOVAs and Figure 5. A robot variant is tested on the robot only: its in-silico closed loop
+    would feed a servo target back as the posture reached (icub_affordance.evaluate).
+
+    All of them are inputs of the run's target, not only its last files: Snakemake does not
+    remake a missing file that no job still to run needs, so a deleted (or corrupt, and deleted
+    as the error says) intermediate file would otherwise stay missing after a green run.
+    """
+    files = []
+    if PLAN.makes(run, "demos"):
+        if PLAN.jobs_per_network(run):
+            files += outputs("demos_object", run, object=config["objects"]) + outputs("demos", run)
+        else:
+            files += outputs("run_demos", run)
+    if PLAN.makes(run, "soms"):
+        files += outputs("soms", run)
+    files += outputs("train", run, net=PLAN.networks(run))
+    if tests and not PLAN.trained_for_robot(run):
+        files += [f for rule in ("evaluate", "stats", "figure5") for f in outputs(rule, run)]
+    return files
+
+
+def reading_files(run):
+    """Every file a reading's replication makes: its demonstrations, SOMs and networks, its
+    measures, and, for the runs the default target makes whole, their tests too; a reading's
+    own run is not tested otherwise (its trials are scored by rule `measures`)."""
+    return run_files(run, tests=run in PLAN.whole) + outputs("measures", run)

@@ -1,4 +1,5 @@
-# Demonstration grasps (paper sections 2.3 and 3): the sequences the network learns from.
+# Demonstration grasps (paper sections 2.3 and 3): the sequences the network learns from. For the
+# config's own run a job per object (the other runs: runs.smk, run_demos).
 
 
 rule demos_object:
@@ -8,7 +9,7 @@ rule demos_object:
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("demos_object"),
     output:
-        "data/demos/parts/{object}.npz",
+        "data/{folder}demos/parts/{object}.npz",
     params:
         object_sizes=settings(config["object_sizes_m"]),
         demos=settings(config["demos"]),
@@ -16,14 +17,15 @@ rule demos_object:
         posture=settings(config["initial_posture_deg"]),
     wildcard_constraints:
         object="|".join(config["objects"]),
+        folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
     threads: 1
     resources:
         mem_mb=1000,
         runtime=10,
     log:
-        "data/logs/demos_object/{object}.log",
+        "data/logs/{folder}demos_object/{object}.log",
     benchmark:
-        "data/benchmarks/demos_object/{object}.tsv"
+        "data/benchmarks/{folder}demos_object/{object}.tsv"
     script:
         "../scripts/demos_object.py"
 
@@ -32,12 +34,14 @@ rule demos:
     """The 4 x 2 x 5 demonstrations in one file, and a readable summary."""
     input:
         parts=lambda w: [
-            f"{run_dir(run_of(w))}/demos/parts/{obj}.npz" for obj in config["objects"]
+            PLAN.path(run_of(w), f"demos/parts/{obj}.npz") for obj in config["objects"]
         ],
         code=script_code("demos_merge"),
     output:
-        demos="data/demos/demos.npz",
-        summary="data/demos/summary.csv",
+        demos="data/{folder}demos/demos.npz",
+        summary="data/{folder}demos/summary.csv",
+    wildcard_constraints:
+        folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
     params:
         objects=settings(config["objects"]),
         demos=settings(config["demos"]),
@@ -46,9 +50,9 @@ rule demos:
         mem_mb=500,
         runtime=5,
     log:
-        "data/logs/demos.log",
+        "data/logs/{folder}demos.log",
     benchmark:
-        "data/benchmarks/demos.tsv"
+        "data/benchmarks/{folder}demos.tsv"
     script:
         "../scripts/demos_merge.py"
 
@@ -56,7 +60,7 @@ rule demos:
 rule demo_filmstrip:
     """Filmstrips of chosen demonstrations, replayed from their recorded states (render only)."""
     input:
-        demos=rules.demos.output.demos,
+        demos=PLAN.path(OWN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("demo_filmstrip"),

@@ -1,24 +1,6 @@
 # Beyond the paper: the trained networks drive the simulated arm (one job per network), the
 # demonstrations are replayed through the same controller, and the robot's success is summarised.
 
-# The filmstrip shows the first network of each mapping: for any object one of them categorises
-# it with its natural grip (congruent) and the other with the other grip (incongruent).
-EMBODIED_FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
-
-
-def embodied_weights(wildcards):
-    """The weights the robot test of a run drives with: the wildcard `net`'s (rule embodied, the
-    main run), or every network's of the run (rule run_embodied, one job)."""
-    run = run_of(wildcards)
-    nets = [wildcards.net] if "net" in wildcards.keys() else run_networks(run)
-    return [f"{run_dir(run)}/train/net{net}/weights.npz" for net in nets]
-
-
-def embodied_files(run, name):
-    """A tested variant's per-network robot-test files (`name`: trials.csv or states.npz)."""
-    folder = "data/embodied" if run == MAIN else f"data/runs/{run}/embodied"
-    return [f"{folder}/net{net}/{name}" for net in run_networks(run)]
-
 
 rule embodied:
     """One network drives the MuJoCo arm through every test trial, closed loop on its senses."""
@@ -29,77 +11,63 @@ rule embodied:
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied"),
     output:
-        trials="data/embodied/net{net}/trials.csv",
-        states="data/embodied/net{net}/states.npz",
+        trials="data/{folder}embodied/net{net}/trials.csv",
+        states="data/{folder}embodied/net{net}/states.npz",
     params:
         network=run_section("network"),
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
     wildcard_constraints:
         net=r"\d\d",
+        folder=folders_pattern([run for run in ROBOT_TESTED_RUNS if PLAN.jobs_per_network(run)]),
     threads: 1
     priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
         mem_mb=500,
         runtime=10,
     log:
-        "data/logs/embodied/net{net}.log",
+        "data/logs/{folder}embodied/net{net}.log",
     benchmark:
-        "data/benchmarks/embodied/net{net}.tsv"
+        "data/benchmarks/{folder}embodied/net{net}.tsv"
     script:
         "../scripts/embodied.py"
 
 
-# A robot variant's networks drive the robot in one job, one network after another (the main
-# run keeps a job per network, in parallel).
-ROBOT_RUN_NAMES = [row["run"] for row in ROBOT_VARIANTS if row["run"] != MAIN]
-
-
+# A robot variant's networks drive the robot in one job, one network after another (the config's
+# own run keeps a job per network, in parallel): rule run_embodied for the runs with the
+# config's network indices, rule confirmation_embodied for the confirmations' fresh ones
+# (common.smk: ROBOT_GROUPS).
 use rule embodied as run_embodied with:
     output:
-        trials=[
-            f"data/runs/{{run,{runs_pattern(ROBOT_RUN_NAMES)}}}/embodied/net{net}/trials.csv"
-            for net in NETWORKS
-        ],
-        states=[
-            f"data/runs/{{run,{runs_pattern(ROBOT_RUN_NAMES)}}}/embodied/net{net}/states.npz"
-            for net in NETWORKS
-        ],
+        trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in NETWORKS],
+        states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in NETWORKS],
+    wildcard_constraints:
+        folder=folders_pattern(ROBOT_GROUPS.get(tuple(NETWORKS), [])),
     log:
-        "data/logs/runs/{run}/embodied.log",
+        "data/logs/{folder}embodied.log",
     benchmark:
-        "data/benchmarks/runs/{run}/embodied.tsv"
+        "data/benchmarks/{folder}embodied.tsv"
 
 
-# The confirmation (config robot.confirmation): each confirmed variant's fresh networks drive the
-# robot in one job, as a variant's do (rule run_embodied); the networks' indices are the fresh
-# ones (common.smk: run_networks), the same for every confirmation run.
-CONFIRMATION_NETWORKS = run_networks(next(iter(CONFIRMATION_RUNS))) if CONFIRMATION_RUNS else []
-
-
-if CONFIRMATION_RUNS:
+if FRESH_NETWORKS:
 
     use rule embodied as confirmation_embodied with:
         output:
-            trials=[
-                f"data/runs/{{run,{runs_pattern(CONFIRMATION_RUNS)}}}/embodied/net{net}/trials.csv"
-                for net in CONFIRMATION_NETWORKS
-            ],
-            states=[
-                f"data/runs/{{run,{runs_pattern(CONFIRMATION_RUNS)}}}/embodied/net{net}/states.npz"
-                for net in CONFIRMATION_NETWORKS
-            ],
+            trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in FRESH_NETWORKS],
+            states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in FRESH_NETWORKS],
+        wildcard_constraints:
+            folder=folders_pattern(ROBOT_GROUPS[tuple(FRESH_NETWORKS)]),
         log:
-            "data/logs/runs/{run}/embodied.log",
+            "data/logs/{folder}embodied.log",
         benchmark:
-            "data/benchmarks/runs/{run}/embodied.tsv"
+            "data/benchmarks/{folder}embodied.tsv"
 
 
 rule embodied_replay:
     """Every demonstration replayed through the embodied controller: its servo targets and its
     sensed postures."""
     input:
-        demos=rules.demos.output.demos,
+        demos=PLAN.path(OWN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied_replay"),
@@ -126,7 +94,7 @@ rule embodied_tolerance:
     demonstrations, replayed with its arm targets offset by Gaussian noise: success against the
     palm's distance from where the demonstrator put it (config robot.tolerance)."""
     input:
-        demos=rules.demos.output.demos,
+        demos=PLAN.path(OWN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("embodied_tolerance"),
@@ -156,7 +124,7 @@ rule embodied_summary:
     the wrong grip, and their congruency and size effects. Every count and test is over distinct
     trials, one per network x object x task (the test sequences are one movement)."""
     input:
-        trials=[f for row in ROBOT_TESTED for f in embodied_files(row["run"], "trials.csv")],
+        trials=[f for run in PLAN.robot_runs for f in embodied_files(run, "trials.csv")],
         replay=rules.embodied_replay.output[0],
         code=script_code("embodied_summary"),
     output:
@@ -166,9 +134,9 @@ rule embodied_summary:
         variants="data/embodied/variants.csv",
         effects="data/embodied/effects.json",
     params:
-        variants=ROBOT_TESTED,
+        variants=PLAN.robot_tested,
         networks=len(NETWORKS),
-        main=MAIN,
+        own=OWN,
     threads: 1
     resources:
         mem_mb=500,
@@ -189,15 +157,15 @@ rule embodied_confirmation:
     input:
         trials=rules.embodied_summary.output.trials,
         confirmation=[
-            f for row in CONFIRMATION for f in embodied_files(row["confirmation"], "trials.csv")
+            f for run in PLAN.confirmation_runs for f in embodied_files(run, "trials.csv")
         ],
         code=script_code("embodied_confirmation"),
     output:
         table="data/embodied/confirmation.csv",
         trials="data/embodied/confirmation_trials.csv",
     params:
-        confirmation=CONFIRMATION,
-        variant_keys=list(ROBOT_KEYS),
+        confirmation=PLAN.confirmation,
+        variant_keys=list(NetworkVariant.keys()),
     threads: 1
     resources:
         mem_mb=500,
@@ -215,12 +183,12 @@ rule embodied_filmstrip:
     (render only)."""
     input:
         states=lambda w: [
-            f"data/embodied/net{net}/states.npz" for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(OWN, f"embodied/net{net}/states.npz") for net in EMBODIED_FILM_NETWORKS
         ],
         # each film network's own trials, not the joined table: the picture need not wait
         # for the other networks
         trials=lambda w: [
-            f"data/embodied/net{net}/trials.csv" for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(OWN, f"embodied/net{net}/trials.csv") for net in EMBODIED_FILM_NETWORKS
         ],
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
@@ -267,10 +235,7 @@ rule robot_variants_figure:
 
 # The variant the book animates (config robot.animation.variant): the config's own networks or
 # one of robot.default, so its robot test is part of the default run.
-_animated = robot_key(config["robot"]["animation"]["variant"], config["network"])
-ANIMATED_RUN = next(
-    row["run"] for row in ROBOT_VARIANTS if tuple(row[k] for k in ROBOT_KEYS) == _animated
-)
+ANIMATED_RUN = PLAN.variant_run(config["robot"]["animation"]["variant"])
 
 
 rule robot_animation:
@@ -278,9 +243,9 @@ rule robot_animation:
     object, and one object's congruent and incongruent categorisation (render only; each
     re-run trial is checked against the recorded one)."""
     input:
-        unpack(lambda w: model_inputs({"run": ANIMATED_RUN})),
+        unpack(lambda w: model_inputs({"folder": PLAN.folder(ANIMATED_RUN)})),
         weights=[
-            f"{run_dir(ANIMATED_RUN)}/train/net{net}/weights.npz" for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in EMBODIED_FILM_NETWORKS
         ],
         trials=[embodied_files(ANIMATED_RUN, "trials.csv")[int(net)] for net in EMBODIED_FILM_NETWORKS],
         scene=config["scene"],
@@ -290,7 +255,7 @@ rule robot_animation:
         grasps="data/figures/robot_grasps.gif",
         categorise="data/figures/robot_categorise.gif",
     params:
-        network=settings(RUN_CONFIG[ANIMATED_RUN]["network"]),
+        network=settings(PLAN.config(ANIMATED_RUN)["network"]),
         networks=[int(net) for net in EMBODIED_FILM_NETWORKS],
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),

@@ -1,8 +1,6 @@
 # The learning model (paper sections 2.2, 2.3 and 3): SOMs, 12 Jordan networks, tests, ANOVA.
-# Every rule here serves every run (workflow/rules/runs.smk gives the other runs' paths): the
-# inputs and parameters are the run's own, found from the wildcard `run` (absent: the main run).
-
-NETWORKS = run_networks(MAIN)
+# The rules with the wildcard `folder` serve every run (common.smk: PLAN): their inputs and
+# parameters are the run's own. The plot rules without it draw the config's own run.
 
 
 rule soms:
@@ -11,7 +9,7 @@ rule soms:
         maps=rules.visual_maps.output.maps,
         code=script_code("soms"),
     output:
-        "data/soms/soms.npz",
+        "data/{folder}soms/soms.npz",
     params:
         soms=run_section("soms"),
         seed=run_section("seed"),
@@ -21,9 +19,9 @@ rule soms:
         mem_mb=500,
         runtime=5,
     log:
-        "data/logs/soms.log",
+        "data/logs/{folder}soms.log",
     benchmark:
-        "data/benchmarks/soms.tsv"
+        "data/benchmarks/{folder}soms.tsv"
     script:
         "../scripts/soms.py"
 
@@ -31,7 +29,7 @@ rule soms:
 rule figure2_maps:
     """The three maps' activations for every object and task (plot only)."""
     input:
-        soms=rules.soms.output[0],
+        soms=PLAN.path(OWN, "soms/soms.npz"),
         code=script_code("figure2_maps"),
     output:
         "data/soms/figure2_maps.png",
@@ -48,17 +46,21 @@ rule figure2_maps:
 
 
 rule train:
-    """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B."""
+    """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B. One job
+    per network for the config's own run (in parallel at the start) and for a run with its own
+    number of networks; every other run's networks in one job (runs.smk: run_train)."""
     input:
         unpack(model_inputs),
         code=script_code("train"),
     output:
-        curve="data/train/net{net}/curve.csv",
-        weights="data/train/net{net}/weights.npz",
+        curve="data/{folder}train/net{net}/curve.csv",
+        weights="data/{folder}train/net{net}/weights.npz",
     params:
         network=run_section("network"),
         seed=run_section("seed"),
     threads: 1
+    wildcard_constraints:
+        folder=folders_pattern(NETWORK_JOB_RUNS),
     # before the cue ablation's training when both are ready: the robot test waits on these
     # networks, and its jobs are the longest that follow (see workflow/rules/embodied.smk)
     priority: 1
@@ -66,9 +68,9 @@ rule train:
         mem_mb=500,
         runtime=10,
     log:
-        "data/logs/train/net{net}.log",
+        "data/logs/{folder}train/net{net}.log",
     benchmark:
-        "data/benchmarks/train/net{net}.tsv"
+        "data/benchmarks/{folder}train/net{net}.tsv"
     script:
         "../scripts/train.py"
 
@@ -80,8 +82,8 @@ rule evaluate:
         weights=run_network_files("train/net{net}/weights.npz"),
         code=script_code("evaluate"),
     output:
-        trials="data/eval/trials.csv",
-        hidden="data/eval/hidden.npz",
+        trials="data/{folder}eval/trials.csv",
+        hidden="data/{folder}eval/hidden.npz",
     params:
         network=run_section("network"),
     threads: 1
@@ -89,9 +91,9 @@ rule evaluate:
         mem_mb=1000,
         runtime=10,
     log:
-        "data/logs/evaluate.log",
+        "data/logs/{folder}evaluate.log",
     benchmark:
-        "data/benchmarks/evaluate.tsv"
+        "data/benchmarks/{folder}evaluate.tsv"
     script:
         "../scripts/evaluate.py"
 
@@ -102,16 +104,16 @@ rule stats:
         trials=run_file("eval/trials.csv"),
         code=script_code("stats"),
     output:
-        json="data/eval/anova.json",
-        table="data/eval/anova_table.md",
+        json="data/{folder}eval/anova.json",
+        table="data/{folder}eval/anova_table.md",
     threads: 1
     resources:
         mem_mb=500,
         runtime=5,
     log:
-        "data/logs/stats.log",
+        "data/logs/{folder}stats.log",
     benchmark:
-        "data/benchmarks/stats.tsv"
+        "data/benchmarks/{folder}stats.tsv"
     script:
         "../scripts/stats.py"
 
@@ -119,7 +121,7 @@ rule stats:
 rule figure4:
     """Figure 4: training RMSE over iterations, mean and range over the networks (plot only)."""
     input:
-        curves=expand("data/train/net{net}/curve.csv", net=NETWORKS),
+        curves=[PLAN.path(OWN, f"train/net{net}/curve.csv") for net in NETWORKS],
         code=script_code("figure4"),
     output:
         "data/figures/figure4.png",
@@ -143,16 +145,16 @@ rule figure5:
         trials=run_file("eval/trials.csv"),
         code=script_code("figure5"),
     output:
-        figure5="data/figures/figure5.png",
-        timecourse="data/figures/conflict_timecourse.png",
+        figure5="data/{folder}figures/figure5.png",
+        timecourse="data/{folder}figures/conflict_timecourse.png",
     threads: 1
     resources:
         mem_mb=500,
         runtime=5,
     log:
-        "data/logs/figure5.log",
+        "data/logs/{folder}figure5.log",
     benchmark:
-        "data/benchmarks/figure5.tsv"
+        "data/benchmarks/{folder}figure5.tsv"
     script:
         "../scripts/figure5.py"
 
@@ -161,8 +163,8 @@ rule representations:
     """The hidden units over the steps: how far categorisation trials are from grasping, and
     each network's trajectories on its first two principal axes."""
     input:
-        trials=rules.evaluate.output.trials,
-        hidden=rules.evaluate.output.hidden,
+        trials=PLAN.path(OWN, "eval/trials.csv"),
+        hidden=PLAN.path(OWN, "eval/hidden.npz"),
         code=script_code("representations"),
     output:
         divergence="data/eval/divergence.csv",

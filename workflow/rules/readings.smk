@@ -1,5 +1,5 @@
-# Which reading of the paper reproduces it (MODEL.md sections 5, 7, 8): every reading (config
-# `readings`: cue timing x Goal response) is a run of the model (common.smk: reading_runs), one
+# Which reading of the paper reproduces it (the book's reproduction notes): every reading (config
+# `readings`: cue timing x Goal response) is a run of the model (common.smk: PLAN.readings), one
 # replication at the config's seed and, with robustness, one per `readings.seeds`. Each run's
 # trials are scored on the declared measures (rule `measures`, for every run), and the rule
 # `readings` sets each effect against the paper over the replications, and tests the differences
@@ -14,8 +14,8 @@ rule measures:
         weights=run_network_files("train/net{net}/weights.npz"),
         code=script_code("measures"),
     output:
-        trials="data/eval/measures.csv",
-        json="data/eval/measures.json",
+        trials="data/{folder}eval/measures.csv",
+        json="data/{folder}eval/measures.json",
     params:
         network=run_section("network"),
         measures=config["readings"]["measures"],
@@ -24,21 +24,11 @@ rule measures:
         mem_mb=1000,
         runtime=10,
     log:
-        "data/logs/measures.log",
+        "data/logs/{folder}measures.log",
     benchmark:
-        "data/benchmarks/measures.tsv"
+        "data/benchmarks/{folder}measures.tsv"
     script:
         "../scripts/measures.py"
-
-
-use rule measures as run_measures with:
-    output:
-        trials="data/runs/{run}/eval/measures.csv",
-        json="data/runs/{run}/eval/measures.json",
-    log:
-        "data/logs/runs/{run}/measures.log",
-    benchmark:
-        "data/benchmarks/runs/{run}/measures.tsv"
 
 
 rule readings:
@@ -46,15 +36,15 @@ rule readings:
     each effect's t-test and Holm's p; and the tests of the differences between the cue timings
     and between the Goal responses, paired by network (data/readings/differences.csv)."""
     input:
-        measures=[f"{run_dir(row['run'])}/eval/measures.json" for row in READINGS],
-        trials=[f"{run_dir(row['run'])}/eval/measures.csv" for row in READINGS],
+        measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.readings],
+        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.readings],
         code=script_code("readings"),
     output:
         summary="data/readings/summary.csv",
         replications="data/readings/replications.csv",
         differences="data/readings/differences.csv",
     params:
-        table=READINGS,
+        table=PLAN.readings,
         measures=config["readings"]["measures"],
         margins=settings(config["readings"]["equivalence_margin"]),
     threads: 1
@@ -87,21 +77,3 @@ rule readings_figure:
         "data/benchmarks/readings/figure.tsv"
     script:
         "../scripts/readings_figure.py"
-
-
-def reading_files(run):
-    """Every file a reading's replication makes (common.smk: reading_runs): its demonstrations,
-    SOMs and networks (runs.smk: run_files), its measures, and, for the main run and the runs of
-    the default target, their tests too; a reading's own run is not tested otherwise (its trials
-    are scored by rule `measures`)."""
-    files = run_files(run)
-    if run != MAIN and run not in CONFIGURED_RUNS:
-        tests = {
-            f"{run_dir(run)}/{f.removeprefix('data/')}"
-            for name in ("evaluate", "stats", "figure5")
-            for f in getattr(rules, name).output
-        }
-        files = [f for f in files if f not in tests]
-    return files + [
-        f"{run_dir(run)}/{f.removeprefix('data/')}" for f in rules.measures.output
-    ]

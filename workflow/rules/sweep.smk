@@ -1,30 +1,22 @@
 # Sweeps (not part of the default target): replications and hyperparameter grids.
 #   snakemake -c2 sweep                                   the points of config `sweep`
 #   snakemake --profile workflow/profiles/slurm sweep     the same on a cluster
-# A point is a run (common.smk: sweep_runs) of one seed and one value of each swept setting: a
+# A point is a run (common.smk: PLAN.sweep) of one seed and one value of each swept setting: a
 # whole replication, whose seed reseeds the demonstrations, the SOMs and the networks. Its
-# networks are trained, tested and analysed by the rules of every run, under data/runs/{point}/.
-
-
-def sweep_point(run):
-    """A sweep point's seed and network settings, the columns of the sweep's tables."""
-    network = RUN_CONFIG[run]["network"]
-    return {"seed": RUN_CONFIG[run]["seed"]} | {
-        key: network[key] for key in ("learning_rate", "hidden", "categorisation_cue")
-    }
+# networks are trained, tested and analysed by the rules of every run, in its folder (PLAN.folder).
 
 
 rule sweep_summary:
     """Each point's congruency and size effects, with 95% intervals, and how many are significant."""
     input:
-        trials=expand("data/runs/{run}/eval/trials.csv", run=SWEEP_RUNS),
-        anova=expand("data/runs/{run}/eval/anova.json", run=SWEEP_RUNS),
+        trials=[PLAN.path(run, "eval/trials.csv") for run in PLAN.sweep],
+        anova=[PLAN.path(run, "eval/anova.json") for run in PLAN.sweep],
         code=script_code("sweep_summary"),
     output:
         points="data/sweep/points.csv",
         summary="data/sweep/summary.csv",
     params:
-        points={run: sweep_point(run) for run in SWEEP_RUNS},
+        points=PLAN.sweep,
     threads: 1
     resources:
         mem_mb=1000,
@@ -58,7 +50,7 @@ rule sweep_figure:
 
 # every file of the sweep, each point's too (see run_files)
 SWEEP_OUTPUTS = [
-    *(f for run in SWEEP_RUNS for f in run_files(run)),
+    *(f for run in PLAN.sweep for f in run_files(run)),
     *rules.sweep_summary.output,
     *rules.sweep_figure.output,
 ]

@@ -32,7 +32,7 @@ with redirect_log(snakemake.log[0]):
     with atomic_path(snakemake.output.trials) as tmp:
         trials.to_csv(tmp, index=False, float_format="%.6f")
     trials = pd.read_csv(snakemake.output.trials)  # as readers see it
-    own = trials[trials["run"] == snakemake.params.main].drop(columns=list(VARIANT_COLUMNS))
+    own = trials[trials["run"] == snakemake.params.own].drop(columns=list(VARIANT_COLUMNS))
     replay = pd.read_csv(snakemake.input.replay)
     with atomic_path(snakemake.output.success) as tmp:
         success_table(own).to_csv(tmp, index=False, float_format="%.4f")

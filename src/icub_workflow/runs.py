@@ -1,0 +1,281 @@
+"""The runs of the model a config asks for, planned once and before any rule: a pure function.
+
+A run is the model made once: demonstrations, maps, networks and their tests, for one config.
+The config's own run (its networks are the paper's model) is one run among the others: the runs
+of config ``runs``, the cue ablation (the other cue timing), the sweep's points, the readings'
+replications, the robot test's variants and their confirmations. Each is the config with a few
+settings laid over it. :func:`plan_runs` names them, finds which of them are one and the same run
+(a reading at the config's own settings *is* the config's run), and records which earlier run's
+demonstrations and maps each one reuses. The rules ask the plan; only :meth:`RunPlan.folder`
+knows where a run's files live.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from icub_affordance.variants import NetworkVariant
+from icub_workflow.configs import merged
+
+#: The config's own run: its name in the tables (column ``run``).
+OWN = "main"
+
+#: The settings each shared stage depends on: a run reuses the stage of the first run (in the
+#: plan's order) whose settings for it are equal, so a run that changes only the network reuses
+#: the config's demonstrations and maps, and two sweep points with one seed share theirs.
+STAGE_SETTINGS = {
+    "demos": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "demos"),
+    "soms": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "vision", "soms"),
+}
+
+
+@dataclass(frozen=True)
+class Run:
+    """One run: its name, the settings laid over the config, the config that results, and what
+    asked for it first (own, configured, ablation, sweep, reading, robot, confirmation)."""
+
+    name: str
+    overrides: Mapping[str, Any]
+    config: Mapping[str, Any]
+    origin: str
+
+    def networks(self) -> list[str]:
+        """The run's network indices, as two digits (each network's seed comes from its index):
+        0.. for every run but a confirmation, whose fresh ones start at its first_network."""
+        network = self.config["network"]
+        first = network.get("first_network", 0)
+        return [f"{i:02d}" for i in range(first, first + network["networks"])]
+
+
+@dataclass(frozen=True)
+class RunPlan:
+    """Every run a config asks for, in the order that decides whose stages a run shares, and the
+    tables that say which run answers which question."""
+
+    runs: dict[str, Run]
+    #: the runs the default target makes in full beside the config's own: config ``runs`` and
+    #: the cue ablation
+    configured: list[str]
+    ablation: str
+    sweep: dict[str, dict[str, Any]]  # point -> its seed and swept network settings
+    #: one row per reading and replication: reading, cue, goal_response, seed, run
+    readings: list[dict[str, Any]]
+    #: one row per robot variant: run, the variant's keys, default (tested without robustness)
+    robot_variants: list[dict[str, Any]]
+    #: one row per confirmed variant: its keys, its exploration run and its confirmation run
+    confirmation: list[dict[str, Any]]
+    robustness: bool
+
+    # ---- where a run's files live (the one place that knows) ----------------------------------
+
+    def folder(self, run: str) -> str:
+        """A run's folder under ``data/``: the config's own at the top, every other run under
+        ``runs/{run}/`` (ends with a slash, or is empty)."""
+        return "" if self.runs[run].origin == "own" else f"runs/{run}/"
+
+    def path(self, run: str, relative: str) -> str:
+        """A run's file: ``relative`` in its folder under ``data/``."""
+        return f"data/{self.folder(run)}{relative}"
+
+    def run_in(self, folder: str) -> str:
+        """The run whose folder is ``folder`` (the inverse of :meth:`folder`)."""
+        return self._by_folder()[folder]
+
+    def folders(self, runs: list[str] | None = None) -> list[str]:
+        return [self.folder(run) for run in (self.runs if runs is None else runs)]
+
+    def _by_folder(self) -> dict[str, str]:
+        return {self.folder(run): run for run in self.runs}
+
+    # ---- what a run makes and reuses -----------------------------------------------------------
+
+    @property
+    def own(self) -> Run:
+        return self.runs[OWN]
+
+    def config(self, run: str) -> Mapping[str, Any]:
+        return self.runs[run].config
+
+    def networks(self, run: str) -> list[str]:
+        return self.runs[run].networks()
+
+    def stage_run(self, run: str, stage: str) -> str:
+        """The run whose ``stage`` (demos, soms) outputs this run reads: the first with equal
+        settings for it (itself, if none before it has them)."""
+        key = [self.config(run)[k] for k in STAGE_SETTINGS[stage]]
+        return next(
+            r for r in self.runs if [self.config(r)[k] for k in STAGE_SETTINGS[stage]] == key
+        )
+
+    def makes(self, run: str, stage: str) -> bool:
+        """Does this run make its own ``stage`` (rather than read an earlier run's)?"""
+        return self.stage_run(run, stage) == run
+
+    def jobs_per_network(self, run: str) -> bool:
+        """Is each network (and each object's demonstrations) a job of its own? For the config's
+        own run, whose networks every later stage waits on: in parallel at the start. Any other
+        run trains its networks in one job (a network is short beside a job's start-up)."""
+        return self.runs[run].origin == "own"
+
+    @property
+    def whole(self) -> list[str]:
+        """The runs the default target makes in full, their in-silico tests included: the
+        config's own, config ``runs`` and the cue ablation."""
+        return [OWN, *self.configured]
+
+    @property
+    def robot_runs(self) -> list[str]:
+        """The robot variants tested in this build: those of robot.default (and the config's
+        own), or every one with robustness."""
+        return [row["run"] for row in self.robot_tested]
+
+    @property
+    def robot_tested(self) -> list[dict[str, Any]]:
+        return [row for row in self.robot_variants if row["default"] or self.robustness]
+
+    @property
+    def confirmation_runs(self) -> list[str]:
+        return [row["confirmation"] for row in self.confirmation]
+
+    def trained_for_robot(self, run: str) -> bool:
+        """A robot variant or confirmation of its own: trained, then tested on the robot only
+        (its in-silico closed loop would feed a servo target back as the posture reached)."""
+        return self.runs[run].origin in ("robot", "confirmation")
+
+    def variant_run(self, entry: Mapping[str, Any]) -> str:
+        """The run of a variant as written in the config (e.g. robot.animation.variant)."""
+        variant = NetworkVariant.of(entry, self.own.config["network"])
+        keys = NetworkVariant.keys()
+        return next(
+            row["run"]
+            for row in self.robot_variants
+            if tuple(row[k] for k in keys) == variant.values()
+        )
+
+
+def plan_runs(config: Mapping[str, Any]) -> RunPlan:
+    """Every run of ``config``, named and ordered; see the module's docstring."""
+    planner = _Planner(config)
+    planner.add(OWN, {}, "own")
+    for name, overrides in config["runs"].items():
+        planner.add(name, overrides, "configured")
+    ablation = planner.add(*_ablation(config), "ablation")
+    sweep = {}
+    for name, overrides in _sweep(config):
+        planner.add(name, overrides, "sweep")
+        network = overrides["network"]
+        sweep[name] = {"seed": overrides["seed"]} | {
+            key: network[key] for key in ("learning_rate", "hidden", "categorisation_cue")
+        }
+    readings = _readings(config, planner)
+    variants = _robot_variants(config, planner)
+    confirmation = _confirmation(config, planner, variants)
+    return RunPlan(
+        runs=planner.runs,
+        configured=[*config["runs"], ablation],
+        ablation=ablation,
+        sweep=sweep,
+        readings=readings,
+        robot_variants=variants,
+        confirmation=confirmation,
+        robustness=bool(config["robustness"]),
+    )
+
+
+class _Planner:
+    """The runs so far, in order; a run asked for again (the same config) is found, not added."""
+
+    def __init__(self, config: Mapping[str, Any]) -> None:
+        self.config = config
+        self.runs: dict[str, Run] = {}
+
+    def add(self, name: str, overrides: Mapping[str, Any], origin: str) -> str:
+        self.runs[name] = Run(name, overrides, merged(self.config, overrides), origin)
+        return name
+
+    def find_or_add(self, name: str, overrides: Mapping[str, Any], origin: str) -> str:
+        """The run whose config equals the config with ``overrides`` laid over it, if one exists
+        (whatever its name), else a new run called ``name``."""
+        run_config = merged(self.config, overrides)
+        same = next((r.name for r in self.runs.values() if r.config == run_config), None)
+        return same or self.add(name, overrides, origin)
+
+
+def _ablation(config: Mapping[str, Any]) -> tuple[str, dict[str, Any]]:
+    """The cue ablation: the config's run with the other categorisation cue timing."""
+    own = config["network"]["categorisation_cue"]
+    other = {"first_step": "all_steps", "all_steps": "first_step"}[own]
+    return f"cue_{other}", {"network": {"categorisation_cue": other}}
+
+
+def _sweep(config: Mapping[str, Any]) -> list[tuple[str, dict[str, Any]]]:
+    """Every combination of the ``sweep`` section's values (a target of its own)."""
+    sweep = config["sweep"]
+    return [
+        (
+            f"sweep_seed{seed}_lr{lr}_h{hidden}_{cue}",
+            {
+                "seed": seed,
+                "network": {"learning_rate": lr, "hidden": hidden, "categorisation_cue": cue},
+            },
+        )
+        for seed, lr, hidden, cue in itertools.product(
+            sweep["seeds"], sweep["learning_rate"], sweep["hidden"], sweep["categorisation_cue"]
+        )
+    ]
+
+
+def _readings(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
+    """Every combination of cue timing and Goal response (config ``readings``), replicated at
+    the config's seed and, with robustness, at each of ``readings.seeds``."""
+    readings = config["readings"]
+    seeds = [config["seed"], *(readings["seeds"] if config["robustness"] else [])]
+    table = []
+    for cue, goal in itertools.product(readings["categorisation_cue"], readings["goal_response"]):
+        for seed in dict.fromkeys(seeds):
+            overrides = {
+                "seed": seed,
+                "network": {"categorisation_cue": cue},
+                "soms": {"goal_response": goal},
+            }
+            name = f"reading_{cue}_{goal}" + ("" if seed == config["seed"] else f"_seed{seed}")
+            run = planner.find_or_add(name, overrides, "reading")
+            row = {"reading": f"{cue}+{goal}", "cue": cue, "goal_response": goal}
+            table.append(row | {"seed": seed, "run": run})
+    return table
+
+
+def _robot_variants(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
+    """The config's own networks and every variant of the grid (config ``robot``), each the run
+    with its network settings; ``default`` marks those tested without robustness."""
+    robot, network = config["robot"], config["network"]
+    own = NetworkVariant.of(network, network)
+    chosen = {own} | {NetworkVariant.of(entry, network) for entry in robot["default"]}
+    table = []
+    for variant in dict.fromkeys([own, *NetworkVariant.grid(robot)]):
+        overrides = {"network": variant.network(network)}
+        run = planner.find_or_add(variant.run_name(network), overrides, "robot")
+        table.append({"run": run} | variant.row() | {"default": variant in chosen})
+    return table
+
+
+def _confirmation(
+    config: Mapping[str, Any], planner: _Planner, variants: list[dict[str, Any]]
+) -> list[dict[str, Any]]:
+    """Each variant of robot.confirmation trained again on fresh network indices (its other
+    settings the variant's, so it shares the config's demonstrations and maps)."""
+    confirmation, network = config["robot"]["confirmation"], config["network"]
+    count = confirmation["robustness_networks" if config["robustness"] else "networks"]
+    fresh = {"networks": count, "first_network": confirmation["first_network"]}
+    keys = NetworkVariant.keys()
+    table = []
+    for entry in confirmation["variants"]:
+        variant = NetworkVariant.of(entry, network)
+        explored = next(r for r in variants if tuple(r[k] for k in keys) == variant.values())
+        overrides = {"network": variant.network(network) | fresh}
+        run = planner.add(f"{explored['run']}_confirm", overrides, "confirmation")
+        table.append(variant.row() | {"exploration": explored["run"], "confirmation": run})
+    return table
