@@ -9,8 +9,9 @@ from PIL import Image
 
 from icub_affordance.animation import compose, trial_frames, write_gif
 from icub_affordance.body import to_normalised
-from icub_affordance.demos import DEMO_S, make_demo
+from icub_affordance.demos import make_demo
 from icub_affordance.embodied import replay_policy, run_trial
+from icub_affordance.grasp import DEMO_S
 
 
 def film(n: int, colour: tuple[int, int, int], height: int = 30, width: int = 40) -> list:

@@ -41,8 +41,9 @@ from .body import (
     to_degrees,
     to_normalised,
 )
-from .demos import DEMO_S, DemoConfig, grip_in_contact, grip_used, lift_arm, move
+from .demos import DemoConfig
 from .evaluate import TrialSet, trial_row
+from .grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
 from .jordan import Weights, network_step
 from .train import Materials
 
@@ -179,7 +180,7 @@ def outcome_columns(
     the palm for this object and grip (``reference_palms``), None where nobody asks.
 
     ``grip_used`` is the grip the touch sensors read at the end of the movement
-    (``demos.grip_used``: power where power's criterion holds, thumb and the palm or at least
+    (``grasp.grip_used``: power where power's criterion holds, thumb and the palm or at least
     three fingers, else precision where thumb and index touch, else none). ``success``: that grip
     is the required one and the object rose with the lifted hand. ``wrong_grip_hold``: the
     object rose but the touch read the other grip; only a precision trial can be one, since a
