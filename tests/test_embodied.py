@@ -16,8 +16,8 @@ from icub_affordance.embodied import (
     outcome_columns,
     replay_policy,
     run_trial,
-    success_table,
 )
+from icub_affordance.embodied_stats import success_table
 from icub_affordance.grasp import grip_in_contact, grip_used
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
