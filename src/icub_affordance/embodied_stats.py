@@ -284,6 +284,38 @@ def _defined(term: dict) -> bool:
     return bool(np.isfinite(term["se"]) and term["se"] > 0 and np.isfinite(term["p"]))
 
 
+def _measure_effects(
+    tested: pd.DataFrame, counted: pd.DataFrame, measure: str, exact: pd.DataFrame | None
+) -> dict[str, object]:
+    """One measure's effects in one variant: the per-network contrasts over ``tested``; per
+    factor the contrast's test where it is defined, else Fisher's exact test over ``exact``
+    (success, as booleans) or, without it (contact time), no test and why; and the counts per
+    level over ``counted``, the variant's distinct trials."""
+    contrasts, networks = _contrasts_or_none(tested, measure)
+    tests: dict[str, object] = {}
+    for factor in FACTOR_LEVELS:
+        if contrasts is not None and _defined(contrasts[factor]):
+            tests[factor] = {"method": "contrasts"} | contrasts[factor]
+        elif exact is not None:
+            tests[factor] = _exact_test(exact, factor)
+        else:
+            reason = (
+                f"{networks} network(s) touched in all four congruency x size cells, "
+                "fewer than the three a test over networks needs"
+                if contrasts is None
+                else "every network that touched in all four cells shows the same contrast"
+            )
+            tests[factor] = {"method": "none", "reason": reason}
+    return {
+        "distinct_trials": int(len(counted)),
+        "congruency": _counts(counted, "congruency", measure),
+        "size": _counts(counted, "size", measure),
+        "networks": networks,
+        "contrasts": contrasts,
+        "tests": tests,
+    }
+
+
 def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     """Congruency and size effects on the robot's categorisation, per variant, over distinct
     trials (``distinct_trials``: each network x object counted once, whatever the number of test
@@ -307,43 +339,9 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
         )
         df["success"] = df["success"].astype(bool)
         held = df.assign(success=df["success"].astype(float))
-        contrasts, networks = _contrasts_or_none(held, "success")
-        tests: dict[str, object] = {}
-        for factor in FACTOR_LEVELS:
-            if contrasts is not None and _defined(contrasts[factor]):
-                tests[factor] = {"method": "contrasts"} | contrasts[factor]
-            else:
-                tests[factor] = _exact_test(df, factor)
-        success = {
-            "distinct_trials": int(len(df)),
-            "congruency": _counts(held, "congruency", "success"),
-            "size": _counts(held, "size", "success"),
-            "networks": networks,
-            "contrasts": contrasts,
-            "tests": tests,
-        }
+        success = _measure_effects(held, held, "success", exact=df)
         touched = df[df["contact_time"].notna()]
-        contrasts, networks = _contrasts_or_none(touched, "contact_time")
-        tests = {}
-        for factor in FACTOR_LEVELS:
-            if contrasts is not None and _defined(contrasts[factor]):
-                tests[factor] = {"method": "contrasts"} | contrasts[factor]
-            else:
-                reason = (
-                    f"{networks} network(s) touched in all four congruency x size cells, "
-                    "fewer than the three a test over networks needs"
-                    if contrasts is None
-                    else "every network that touched in all four cells shows the same contrast"
-                )
-                tests[factor] = {"method": "none", "reason": reason}
-        contact = {
-            "distinct_trials": int(len(df)),
-            "congruency": _counts(df, "congruency", "contact_time"),
-            "size": _counts(df, "size", "contact_time"),
-            "networks": networks,
-            "contrasts": contrasts,
-            "tests": tests,
-        }
+        contact = _measure_effects(touched, df, "contact_time", exact=None)
         out[str(run)] = {"success": success, "contact_time": contact}
     _holm_over_family(out)
     return out
