@@ -7,10 +7,11 @@ import pytest
 from conftest import demo_config, initial_posture_deg, load_config
 from PIL import Image
 
-from icub_affordance.animation import compose, trial_frames, write_gif
+from icub_affordance.animation import compose, filmed_networks, trial_frames, write_gif
 from icub_affordance.body import to_normalised
-from icub_affordance.demos import DEMO_S, make_demo
+from icub_affordance.demos import make_demo
 from icub_affordance.embodied import replay_policy, run_trial
+from icub_affordance.grasp import DEMO_S
 
 
 def film(n: int, colour: tuple[int, int, int], height: int = 30, width: int = 40) -> list:
@@ -101,3 +102,11 @@ def test_filming_a_trial_does_not_change_it(robot):
     assert len(frames) == -(-physics_steps // 150) + 1
     assert all(f.shape == (48, 64, 3) and f.dtype == np.uint8 for f in frames)
     assert not np.array_equal(frames[0], frames[-1])  # the arm moved
+
+
+def test_the_films_want_two_networks_one_of_each_mapping():
+    settings = {"networks": 4, "categorisation_cue": "first_step", "target": "commands"}
+    with pytest.raises(ValueError, match="two networks"):
+        filmed_networks(None, settings, [0], ["w0.npz"], ["t0.csv"])
+    with pytest.raises(ValueError, match="one of each is needed"):  # 0 and 1 both learn A
+        filmed_networks(None, settings, [0, 1], ["w0.npz", "w1.npz"], ["t0.csv", "t1.csv"])

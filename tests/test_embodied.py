@@ -10,15 +10,15 @@ import pytest
 from conftest import demo_config, load_test_config
 
 from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
-from icub_affordance.demos import grip_in_contact, grip_used
 from icub_affordance.embodied import (
     Outcome,
     network_policy,
     outcome_columns,
     replay_policy,
     run_trial,
-    success_table,
 )
+from icub_affordance.embodied_stats import success_table
+from icub_affordance.grasp import grip_in_contact, grip_used
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
     distances_to_grasping,

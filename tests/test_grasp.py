@@ -11,7 +11,7 @@ import pytest
 from conftest import initial_posture_deg
 
 from icub_affordance.body import TOUCH_NAMES, Robot
-from icub_affordance.demos import GraspPlan, execute_grasp, pinch_point
+from icub_affordance.grasp import GraspPlan, execute_grasp, pinch_point
 
 INITIAL = initial_posture_deg()  # config/config.yaml
 

@@ -24,7 +24,7 @@ from icub_affordance.body import (
     to_degrees,
     to_normalised,
 )
-from icub_affordance.demos import DEMO_S, merge_demos, move, object_demos
+from icub_affordance.demos import merge_demos, object_demos
 from icub_affordance.embodied import (
     body_tolerance,
     demo_palms,
@@ -36,6 +36,7 @@ from icub_affordance.embodied import (
     run_trial,
 )
 from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
+from icub_affordance.grasp import DEMO_S, move
 from icub_affordance.io import save_npz
 from icub_affordance.jordan import Weights, run_closed_loop, train_online
 from icub_affordance.spec import GRASPING, TASKS

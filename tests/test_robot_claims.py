@@ -1,6 +1,6 @@
 """The robot's effect sentences (issue 24): each is a ``text.Claim`` resting on the statistics
 stored beside it, and changing a statistic (its sign, its p across 0.05, its counts) changes the
-sentence accordingly. Made-up effects, in the shape ``embodied.variant_effects`` writes."""
+sentence accordingly. Made-up effects, in the shape ``embodied_stats.variant_effects`` writes."""
 
 import copy
 

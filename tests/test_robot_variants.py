@@ -11,7 +11,7 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
-from icub_affordance.embodied import (
+from icub_affordance.embodied_stats import (
     VARIANT_COLUMNS,
     distinct_trials,
     success_analysis,

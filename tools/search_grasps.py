@@ -20,14 +20,8 @@ import numpy as np
 import yaml
 
 from icub_affordance.body import OBJECTS, Robot
-from icub_affordance.demos import (
-    DemoConfig,
-    GraspPlan,
-    cage_point,
-    execute_grasp,
-    is_grasp,
-    pinch_point,
-)
+from icub_affordance.demos import DemoConfig, is_grasp
+from icub_affordance.grasp import GraspPlan, cage_point, execute_grasp, pinch_point
 
 
 def candidates(robot: Robot, grip: str, size: str):

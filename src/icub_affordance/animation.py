@@ -3,24 +3,31 @@
 A filmstrip shows a few recorded postures; an animation shows the movement itself (the approach,
 the fingers closing, the object lifted or left behind). The states between the ten recorded
 steps are not stored, so the trial is run again and filmed as it runs. MuJoCo is deterministic
-from a reset and rendering only reads the state, so the re-run is the trial that was recorded:
-the pipeline's script checks its outcome against the recorded one.
+from a reset and rendering only reads the state, so the re-run is the trial that was recorded,
+and each film checks its outcome against the one the robot test recorded (``film_trial``): a
+film that showed another trial than the tables would be refused.
 
-No science here: only the camera and the file.
+No new science here: the robot test's own trials, the camera and the file.
 """
 
 from __future__ import annotations
 
+import csv
 import os
 import textwrap
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
 from .body import Robot
 from .demos import DemoConfig
-from .embodied import Outcome, Policy, run_trial
-from .io import atomic_path
+from .embodied import Outcome, Policy, network_policy, outcome_columns, run_trial
+from .evaluate import TrialSet, describe_trial
+from .io import atomic_path, load_npz
+from .jordan import Weights
+from .spec import TASKS
+from .train import Materials, mapping_of
 
 
 def trial_frames(
@@ -53,6 +60,139 @@ def trial_frames(
     out = run_trial(robot, obj, policy, start, steps, grip, config, watch=film)
     frames.append(robot.render(camera, width, height))  # after the lift test (or none)
     return frames, out
+
+
+#: The test sequence filmed (the sequences of one task and object move alike).
+SEQUENCE = 0
+
+
+@dataclass(frozen=True)
+class FilmedNetwork:
+    """A network to film: its weights, its test, and the trials the robot test recorded of it
+    (the rows of its trials.csv, in the test's order)."""
+
+    network: int
+    mapping: str
+    weights: Weights
+    setup: TrialSet
+    recorded: list[dict[str, str]]
+
+
+def filmed_networks(
+    m: Materials,
+    settings: Mapping[str, object],
+    nets: list[int],
+    weights_files: list[str],
+    trials_files: list[str],
+) -> list[FilmedNetwork]:
+    """The two networks to film, one of each mapping, from their weights and the robot test's
+    trials files; ``settings`` is the run's ``network`` section. Raises where they are not two
+    networks of different mappings, or a trials file is not as long as the test (stale)."""
+    if not len(nets) == len(weights_files) == len(trials_files) == 2:
+        raise ValueError(
+            f"two networks (one of each mapping) with their weights and trials, not {nets}, "
+            f"{len(weights_files)} weights and {len(trials_files)} trials files"
+        )
+    mappings = [mapping_of(net, settings["networks"]) for net in nets]
+    if sorted(mappings) != ["A", "B"]:
+        raise ValueError(f"networks {nets} learned mappings {mappings}: one of each is needed")
+    films = []
+    for net, mapping, weights_path, trials_path in zip(
+        nets, mappings, weights_files, trials_files, strict=True
+    ):
+        stored = load_npz(weights_path, required=("W1", "b1", "W2", "b2"))
+        weights = Weights(**{k: stored[k] for k in ("W1", "b1", "W2", "b2")})
+        setup = TrialSet.of(m, mapping, settings["categorisation_cue"], settings["target"])
+        with open(trials_path, newline="") as f:
+            recorded = list(csv.DictReader(f))
+        if len(recorded) != len(setup.trials):
+            raise ValueError(
+                f"{trials_path} has {len(recorded)} trials, the test {len(setup.trials)}: "
+                "stale; rerun the robot test (rule embodied)"
+            )
+        films.append(FilmedNetwork(net, mapping, weights, setup, recorded))
+    return films
+
+
+def film_trial(
+    robot: Robot, m: Materials, film: FilmedNetwork, i: int, config: DemoConfig
+) -> tuple[list[np.ndarray], str, dict[str, object]]:
+    """Trial ``i`` of one network re-run and filmed (``trial_frames``' camera, size and frame
+    rate): its frames, its panel title and what the trial was (``describe_trial``). Raises if
+    its outcome is not the recorded one."""
+    setup, net, mapping, recorded = film.setup, film.network, film.mapping, film.recorded
+    _task, o, _s = setup.trials[i]
+    grip = m.grips[setup.grips[i]]
+    frames, out = trial_frames(
+        robot,
+        m.objects[o],
+        network_policy(film.weights, setup.context[i]),
+        setup.teacher[i, 0],
+        len(setup.teacher[i]),
+        grip,
+        config,
+    )
+    trial = describe_trial(m, setup, i, net, mapping, "embodied")
+    row = recorded[i]
+    for key in ("task", "object", "target_grip", "sequence"):
+        if str(row[key]) != str(trial[key]):
+            raise ValueError(
+                f"network {net}: recorded trial {i} is {row['task']} {row['object']} "
+                f"sequence {row['sequence']}, not {trial['task']} {trial['object']} sequence "
+                f"{trial['sequence']}: the trials file is not in the test's order, or stale"
+            )
+    outcome = outcome_columns(out, grip, setup.teacher[i, -1], None, config)
+    seen = {"success": str(outcome["success"]), "grip_used": outcome["grip_used"]}
+    was = {"success": row["success"], "grip_used": row["grip_used"]}
+    if seen != was:
+        raise RuntimeError(
+            f"network {net}, {trial['task']} {trial['object']} sequence {trial['sequence']}: "
+            f"the re-run trial gives {seen}, the robot test recorded {was}. The film would not "
+            "show the recorded trial: rerun the robot test (rule embodied) with this code."
+        )
+    held = "held" if outcome["success"] else "not held"
+    return (
+        frames,
+        (
+            f"network {net} ({mapping}), {trial['task']}: {trial['object'].replace('_', ' ')}, "
+            f"{grip} grip. Touch reads {outcome['grip_used']}: {held}"
+        ),
+        trial,
+    )
+
+
+def trial_index(setup: TrialSet, task: str, obj: int) -> int:
+    """The filmed trial (test sequence ``SEQUENCE``) of a task and an object (its index)."""
+    return setup.trials.index((TASKS.index(task), obj, SEQUENCE))
+
+
+def grasp_panels(
+    robot: Robot, m: Materials, film: FilmedNetwork, config: DemoConfig
+) -> dict[str, list[np.ndarray]]:
+    """The network grasping each object, a titled panel each."""
+    panels = {}
+    for o in range(len(m.objects)):
+        i = trial_index(film.setup, "grasping", o)
+        frames, title, _ = film_trial(robot, m, film, i, config)
+        panels[title] = frames
+    return panels
+
+
+def categorise_panels(
+    robot: Robot, m: Materials, films: list[FilmedNetwork], obj: str, config: DemoConfig
+) -> dict[str, list[np.ndarray]]:
+    """One object categorised by each network (one of each mapping), a titled panel each: the
+    congruent trial's first, then the incongruent one's."""
+    o = m.objects.index(obj)
+    panels = {}
+    for film in films:
+        i = trial_index(film.setup, "categorisation", o)
+        frames, title, trial = film_trial(robot, m, film, i, config)
+        kind = "congruent" if trial["congruent"] == "True" else "incongruent"
+        panels[kind] = (f"{kind}, {title}", frames)
+    if set(panels) != {"congruent", "incongruent"}:
+        raise ValueError(f"the two networks' trials of {obj} are {set(panels)}")
+    return dict(panels[kind] for kind in ("congruent", "incongruent"))
 
 
 def _font(size: int):

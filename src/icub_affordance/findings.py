@@ -188,7 +188,7 @@ def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) ->
     """Robot variants that differ in ``column`` alone, compared on the same networks.
 
     ``trials``: ``data/embodied/trials.csv``; ``keys``: the columns that tell variants apart
-    (``embodied.VARIANT_COLUMNS`` without ``run``). Variants of one group share everything but
+    (``embodied_stats.VARIANT_COLUMNS`` without ``run``). Variants of one group share everything but
     ``column``, so network k of each starts from the same initial weights and sees the same
     presentations: its grasping trial of an object (one physical trial, however many test
     sequences share it) pairs with the other variant's. Per pair of values: the distinct trials,
@@ -244,8 +244,9 @@ def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float =
 
 
 def tolerated_noise(table: pd.DataFrame, bar: float = GRASPS) -> pd.Series | None:
-    """The body's tolerance (``embodied.tolerance_table``): the row of the largest arm noise at
-    which the demonstrations' mean plan still holds the object in ``bar`` of the trials, if any.
+    """The body's tolerance (``embodied_stats.tolerance_table``): the row of the largest arm
+    noise at which the demonstrations' mean plan still holds the object in ``bar`` of the trials,
+    if any.
     """
     ok = table[table["success"] >= bar]
     return None if ok.empty else ok.sort_values("noise").iloc[-1]

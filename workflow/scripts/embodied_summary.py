@@ -1,13 +1,13 @@
 """Join every tested variant's robot trials (every test sequence a row, as the robot test wrote
 them); the config's own networks' success by condition and congruency effect; each variant's
 success and contact time, and their effects: the summaries count each network x object x task
-once (``embodied.distinct_trials``)."""
+once (``embodied_stats.distinct_trials``)."""
 
 import json
 
 import pandas as pd
 
-from icub_affordance.embodied import (
+from icub_affordance.embodied_stats import (
     VARIANT_COLUMNS,
     success_analysis,
     success_table,

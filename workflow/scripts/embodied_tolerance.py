@@ -1,9 +1,12 @@
 """The body's tolerance: each object's natural grasp replayed as the demonstrations' mean plan
 with its arm targets offset, success against the palm's error."""
 
+import pandas as pd
+
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.embodied import body_tolerance, tolerance_table
+from icub_affordance.embodied import body_tolerance
+from icub_affordance.embodied_stats import tolerance_table
 from icub_affordance.io import load_npz, redirect_log, write_csv
 
 with redirect_log(snakemake.log[0]):
@@ -15,6 +18,4 @@ with redirect_log(snakemake.log[0]):
         DemoConfig(**snakemake.params.demos),
     )  # fmt: skip
     write_csv(snakemake.output[0], rows)
-    import pandas as pd
-
     print(tolerance_table(pd.DataFrame(rows)).to_string())

@@ -18,7 +18,7 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied import (
+from icub_affordance.embodied_stats import (
     FACTOR_LEVELS,
     VARIANT_COLUMNS,
     held_by_palm_error,
