@@ -40,6 +40,14 @@ check_scene(config)
 
 
 include: "workflow/rules/common.smk"
+
+
+# A run's folder (common.smk: PLAN.folder; names may hold dots, lr0.075) and a network's index.
+wildcard_constraints:
+    folder=folders_pattern(PLAN.runs),
+    net=r"\d\d",
+
+
 include: "workflow/rules/body.smk"
 include: "workflow/rules/vision.smk"
 include: "workflow/rules/demos.smk"

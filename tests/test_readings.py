@@ -406,11 +406,11 @@ def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
     readings = load_config()["readings"]
     n_readings = len(readings["categorisation_cue"]) * len(readings["goal_response"])
     n_reps = 1 + (len(readings["seeds"]) if robustness else 0)
-    assert counts["measures"] == 1  # the main run
-    assert counts["run_measures"] == n_readings * n_reps - 1
+    assert counts["measures"] == n_readings * n_reps  # every replication, the main run's too
     assert counts["run_train"] == n_readings * n_reps - 1  # a run's networks in one job
     # the Goal response changes the SOMs only: one set per seed and response, demos per seed
-    assert counts.get("run_soms", 0) == n_reps * (len(readings["goal_response"]) - 1) + (n_reps - 1)
+    # (rule soms: the main run's and the others')
+    assert counts["soms"] == 1 + n_reps * (len(readings["goal_response"]) - 1) + (n_reps - 1)
     assert counts.get("run_demos", 0) == n_reps - 1
 
 

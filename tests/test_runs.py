@@ -74,9 +74,9 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
     jobs = planned(run_snakemake(built, "-n", config=path))
     assert jobs == {
         "run_train": 1,  # the run's networks in one job
-        "run_evaluate": 1,
-        "run_stats": 1,
-        "run_figure5": 1,
+        "evaluate": 1,  # the rules of every run
+        "stats": 1,
+        "figure5": 1,
         "all": 1,
     }
     plan = run_snakemake(built, "-n", config=path).stdout
@@ -151,7 +151,7 @@ def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tm
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
     jobs = planned(run_snakemake(built, "-n", config=path))
     # its four objects' demonstrations in one job
-    assert "run_demos_object" not in jobs and jobs["run_soms"] == jobs["run_demos"] == 1
+    assert "demos_object" not in jobs and jobs["soms"] == jobs["run_demos"] == 1
     assert "visual_maps" not in jobs  # the scene and the eye do not depend on the seed
 
 
@@ -187,7 +187,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     # the plan: the run's networks, from the main run's demonstrations and maps
     plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
     jobs = [job for job in re.split(r"^(?=rule \w+:$)", plan, flags=re.M) if f"runs/{run}/" in job]
-    trainings = [job for job in jobs if "rule run_train_network:" in job]
+    trainings = [job for job in jobs if "rule train:" in job]  # a job per network
     assert len(trainings) == count
     for job in trainings:
         inputs = re.search(r"input: (.*)", job)[1].split(", ")

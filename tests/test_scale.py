@@ -74,9 +74,9 @@ def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
     assert counts["run_train"] == points  # a point's 12 networks in one job
-    assert counts["run_evaluate"] == points and counts["sweep_summary"] == 1
+    assert counts["evaluate"] == points and counts["sweep_summary"] == 1
     # whole replications: each seed makes its own demonstrations and SOMs, once
-    assert counts["run_demos"] == counts["run_soms"] == len(sweep["seeds"])
+    assert counts["run_demos"] == counts["soms"] == len(sweep["seeds"])
 
 
 def test_sweep_tables_count_significant_replications():
@@ -164,7 +164,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     assert networks == points * n
     # a run's networks in one job: every run trains, the cue ablation, the sweep points, and the
     # readings' replications that are neither (a reading at a sweep point's settings is that
-    # point); every reading but the main run is scored by run_measures (common.smk: reading_runs)
+    # point); every reading is scored by rule measures (icub_workflow.runs: plan_runs)
     net, readings = config["network"], config["readings"]
     shared = sum(
         1
@@ -186,8 +186,9 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         robot["target"], robot["hidden"], robot["iterations"]
     )
     assert counts["run_embodied"] == variants - own
-    assert counts["run_train"] == counts["run_measures"] + points - shared + variants - own
-    assert counts["run_evaluate"] - 1 == counts["run_stats"] - 1 == points
+    assert counts["run_train"] == counts["measures"] - 1 + points - shared + variants - own
+    # the main run, the cue ablation and the sweep points are tested in silico
+    assert counts["evaluate"] - 2 == counts["stats"] - 2 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == counts["sweep_cost"] == 1
     assert counts["book"] == 1
     for output in (

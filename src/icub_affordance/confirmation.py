@@ -108,7 +108,8 @@ def confirmation_table(
 
     ``trials``: robot trials with columns run, network, task, object, success (e.g.
     data/embodied/trials.csv with the confirmation's joined); ``confirmation``: one mapping per
-    variant, its keys (``configs.ROBOT_KEYS``) and the runs ``exploration`` and ``confirmation``.
+    variant, its keys (``variants.NetworkVariant.keys()``) and the runs ``exploration`` and
+    ``confirmation``.
     """
     rows = []
     for variant in confirmation:

@@ -27,6 +27,7 @@ from .stats import (
     repeated_measures_anova,
     trial_conditions,
 )
+from .variants import NetworkVariant
 
 #: The columns a robot trial's physics decides: the same in every test sequence of one network x
 #: object x task, which are one movement on the robot (``embodied_network``).
@@ -161,14 +162,7 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
 # -- the variants (target x hidden units x iterations) ------------------------------------------
 
 #: What tells the robot test's variants apart, the first columns of data/embodied/trials.csv.
-VARIANT_COLUMNS = (
-    "run",
-    "categorisation_cue",
-    "target",
-    "hidden",
-    "iterations",
-    "learning_rate_schedule",
-)
+VARIANT_COLUMNS = ("run", *NetworkVariant.keys())
 
 
 def variant_table(trials: pd.DataFrame) -> pd.DataFrame:

@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .io import atomic_path  # noqa: E402
+from .variants import NetworkVariant  # noqa: E402
 
 LABELS = {
     "big_ball": "big ball",
@@ -345,7 +346,7 @@ def robot_variants(variants, path) -> None:
     markers = {"first_step": "o", "all_steps": "^"}
     hiddens = sorted(variants["hidden"].unique())
     colours = {h: f"C{k}" for k, h in enumerate(hiddens)}
-    keys = ["categorisation_cue", "target", "hidden", "learning_rate_schedule"]
+    keys = [k for k in NetworkVariant.keys() if k != "iterations"]  # the x axis
     for ax, task in zip(axes, ("grasping", "categorisation"), strict=True):
         for (cue, target, hidden, schedule), g in variants.groupby(keys, sort=True):
             g = g.sort_values("iterations")
@@ -389,7 +390,7 @@ def robot_tolerance(tolerance, variants, path) -> None:
             rates.append(held[inside].mean())
     ax.plot(centres, rates, "-", color="k", lw=1.5, label="its success rate, in bins of palm error")
     markers = {"first_step": "o", "all_steps": "^"}
-    keys = ["categorisation_cue", "target", "learning_rate_schedule"]
+    keys = [k for k in NetworkVariant.keys() if k not in ("hidden", "iterations")]
     for (cue, target, schedule), mine in variants.groupby(keys, sort=True):
         colour = "tab:red" if target == "commands" else "tab:blue"
         rate = ", annealed" if schedule == "anneal" else ""

@@ -11,26 +11,37 @@ dimension is a new field here (and its key in the config schema's ``robot`` sect
 from __future__ import annotations
 
 import itertools
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import astuple, dataclass, field, fields
 from typing import Any
 
 
-def _dimension(name: str, always: bool, order: int) -> Any:
+def _dimension(name: str, always: bool, order: int, label: Callable[[Any], str]) -> Any:
     """A field of the grid: its part of a run's name (``name`` formats the value), whether that
-    part is written when the value is the config's own (``always``), and where it goes."""
-    return field(metadata={"name": name, "always": always, "order": order})
+    part is written when the value is the config's own (``always``), where it goes, and its
+    words in a label (``label``)."""
+    return field(metadata={"name": name, "always": always, "order": order, "label": label})
+
+
+#: The learning-rate schedules in words.
+SCHEDULE_WORDS = {"constant": "constant rate", "anneal": "annealed rate"}
 
 
 @dataclass(frozen=True)
 class NetworkVariant:
     """One point of the robot test's grid, keyed as in config ``network``."""
 
-    categorisation_cue: str = _dimension("{}", always=False, order=3)
-    target: str = _dimension("{}", always=True, order=0)
-    hidden: int = _dimension("h{}", always=True, order=1)
-    iterations: int = _dimension("it{}", always=True, order=2)
-    learning_rate_schedule: str = _dimension("{}", always=False, order=4)
+    categorisation_cue: str = _dimension(
+        "{}", always=False, order=3, label=lambda v: f"cue {str(v).replace('_', ' ')}"
+    )
+    target: str = _dimension("{}", always=True, order=0, label=str)
+    hidden: int = _dimension("h{}", always=True, order=1, label=lambda v: f"{int(v)} hidden")
+    iterations: int = _dimension(
+        "it{}", always=True, order=2, label=lambda v: f"{int(v):,} iterations"
+    )
+    learning_rate_schedule: str = _dimension(
+        "{}", always=False, order=4, label=lambda v: SCHEDULE_WORDS[v]
+    )
 
     @classmethod
     def keys(cls) -> tuple[str, ...]:
@@ -54,6 +65,19 @@ class NetworkVariant:
     def row(self) -> dict[str, Any]:
         """The variant's columns of a table."""
         return dict(zip(self.keys(), self.values(), strict=True))
+
+    @classmethod
+    def from_row(cls, row: Mapping[str, Any]) -> NetworkVariant:
+        """The variant of a table's row (its columns :meth:`keys`)."""
+        return cls(**{key: row[key] for key in cls.keys()})
+
+    def label(self, leave_out: tuple[str, ...] = ()) -> str:
+        """The variant in words, every setting named but those in ``leave_out``."""
+        return ", ".join(
+            f.metadata["label"](getattr(self, f.name))
+            for f in fields(self)
+            if f.name not in leave_out
+        )
 
     def network(self, network: Mapping[str, Any]) -> dict[str, Any]:
         """The trainer's settings of this variant laid over ``network``: phase 1 keeps the

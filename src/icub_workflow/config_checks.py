@@ -17,7 +17,8 @@ from typing import Any
 import yaml
 
 from icub_affordance.spec import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
-from icub_workflow.configs import merged, robot_grid, robot_key
+from icub_affordance.variants import NetworkVariant
+from icub_workflow.configs import merged
 
 #: Where a user changes a value (named in every fix).
 WHERE = "config/config.yaml (or your --configfile / --config)"
@@ -239,30 +240,26 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
                 "sequence in that range."
             )
     robot, network = config["robot"], config["network"]
-    grid = robot_grid(robot)
-    own = robot_key(network, network)
+    grid = NetworkVariant.grid(robot)
+    own = NetworkVariant.of(network, network)
     listed = [own]
-    for i, variant in enumerate(robot["default"]):
-        listed.append(robot_key(variant, network))
+    for i, entry in enumerate(robot["default"]):
+        listed.append(NetworkVariant.of(entry, network))
         if listed[-1] not in grid:
+            keys = NetworkVariant.keys()
             yield (
-                f"{key(f'robot.default[{i}]')}: {variant} (categorisation_cue {listed[-1][0]}, "
-                f"learning_rate_schedule {listed[-1][4]}) is not a variant of the grid "
-                "robot.categorisation_cue x robot.target x robot.hidden x robot.iterations x "
-                "robot.learning_rate_schedule (an entry without categorisation_cue or "
-                "learning_rate_schedule has the network's). Allowed: a "
-                f"combination of {robot['categorisation_cue']}, {robot['target']}, "
-                f"{robot['hidden']}, {robot['iterations']} and "
-                f"{robot['learning_rate_schedule']}. Fix: add its values to the grid "
-                "or change the entry."
+                f"{key(f'robot.default[{i}]')}: {entry} ({_variant_words(listed[-1])}) is not a "
+                f"variant of the grid {' x '.join(f'robot.{k}' for k in keys)} (a key the entry "
+                "leaves out is the network's). Allowed: a combination of "
+                f"{', '.join(str(robot[k]) for k in keys)}. Fix: add its values to the grid or "
+                "change the entry."
             )
     animated = robot["animation"]["variant"]
-    if robot_key(animated, network) not in listed:
+    if NetworkVariant.of(animated, network) not in listed:
         yield (
             f"{key('robot.animation.variant')}: {animated} is not tested in the default run. "
-            f"Allowed: the config's own networks (categorisation_cue {own[0]}, target {own[1]}, "
-            f"hidden {own[2]}, iterations {own[3]}, learning_rate_schedule {own[4]}) or an entry "
-            "of robot.default. Fix: pick one of them or add it to robot.default."
+            f"Allowed: the config's own networks ({_variant_words(own)}) or an entry of "
+            "robot.default. Fix: pick one of them or add it to robot.default."
         )
     yield from _confirmation_problems(config, listed, key)
     if 0 not in robot["tolerance"]["noise"]:
@@ -289,12 +286,19 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
         )
 
 
-def _confirmation_problems(config: Mapping[str, Any], listed: list[tuple], key) -> Iterator[str]:
+def _variant_words(variant: NetworkVariant) -> str:
+    """A variant's settings, for a refusal: "categorisation_cue first_step, target ..."."""
+    return ", ".join(f"{k} {v}" for k, v in variant.row().items())
+
+
+def _confirmation_problems(
+    config: Mapping[str, Any], listed: list[NetworkVariant], key
+) -> Iterator[str]:
     """Config robot.confirmation: variants tested in the default run, on network indices the
     exploration never used, whose names fit the two-digit `net{NN}` folders."""
     confirmation, network = config["robot"]["confirmation"], config["network"]
     for i, variant in enumerate(confirmation["variants"]):
-        if robot_key(variant, network) not in listed:
+        if NetworkVariant.of(variant, network) not in listed:
             yield (
                 f"{key(f'robot.confirmation.variants[{i}]')}: {variant} is not tested in the "
                 "default run, so there is no exploration to confirm. Allowed: the config's own "

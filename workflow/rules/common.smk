@@ -56,7 +56,7 @@ PLAN = plan_runs(config)
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
 NETWORKS = PLAN.networks(OWN)
 # A run's networks are trained in one job (runs.smk: run_train): a network takes about 0.15 s of
-# arithmetic and a job about 1 s to start. The exceptions, a job per network (rule train): the
+# arithmetic and a job about 1 s to start. The exceptions, a job per network (by the rule train) are the
 # config's own run, whose networks start in parallel at the start (the robot test waits on
 # them), and a run with another number of networks (a rule's outputs are fixed when the rules
 # are read, so run_train serves the runs with the config's number).
@@ -88,11 +88,6 @@ def folders_pattern(runs):
     # in a group: an empty pattern (the config's own folder alone) would count as no constraint
     folders = "|".join(re.escape(PLAN.folder(run)) for run in runs) if runs else "(?!)"
     return f"(?:{folders})"
-
-
-wildcard_constraints:
-    folder=folders_pattern(PLAN.runs),  # names may hold dots (lr0.075)
-    net=r"\d\d",
 
 
 def run_of(wildcards):

@@ -20,7 +20,6 @@ from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
 from icub_affordance.embodied_stats import (
     FACTOR_LEVELS,
-    VARIANT_COLUMNS,
     held_by_palm_error,
     tolerance_table,
 )
@@ -28,6 +27,7 @@ from icub_affordance.io import load_npz
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS, categorisation_trials, difference_tests
+from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
 
 from . import text
 
@@ -533,22 +533,13 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
 
 
 def _variant_label(row: Mapping) -> str:
-    cue = str(row["categorisation_cue"]).replace("_", " ")
-    return (
-        f"cue {cue}, {row['target']}, {int(row['hidden'])} hidden, "
-        f"{int(row['iterations']):,} iterations, {SCHEDULE_WORDS[row['learning_rate_schedule']]}"
-    )
-
-
-#: The learning-rate schedules in words.
-SCHEDULE_WORDS = {"constant": "constant rate", "anneal": "annealed rate"}
+    return NetworkVariant.from_row(row).label()
 
 
 def _schedule_sentence(trials: pd.DataFrame) -> str:
     """The robot variants of this build that differ in the learning-rate schedule alone,
     compared on the same networks' grasping trials."""
-    keys = tuple(k for k in VARIANT_COLUMNS if k != "run")
-    pairs = science.paired_grasping(trials, "learning_rate_schedule", keys)
+    pairs = science.paired_grasping(trials, "learning_rate_schedule", NetworkVariant.keys())
     if not pairs:
         return "No two variants of this build differ in the learning-rate schedule alone."
     said = []
@@ -571,9 +562,9 @@ CUE_WORDS = {"first_step": "at the first step only", "all_steps": "at every step
 
 def _cue_sentence(variants: pd.DataFrame) -> str:
     """The robot variants of this build that differ in the cue timing only, side by side."""
-    same = ["target", "hidden", "iterations", "learning_rate_schedule"]
+    same = [k for k in NetworkVariant.keys() if k != "categorisation_cue"]
     pairs = []
-    for key, mine in variants.groupby(same, sort=True):
+    for _, mine in variants.groupby(same, sort=True):
         if mine["categorisation_cue"].nunique() < 2:
             continue
         held = ", ".join(
@@ -581,9 +572,8 @@ def _cue_sentence(variants: pd.DataFrame) -> str:
             f"{CUE_WORDS.get(row['categorisation_cue'], row['categorisation_cue'])}"
             for _, row in mine.sort_values("categorisation_cue", ascending=False).iterrows()
         )
-        pairs.append(
-            f"{key[0]}, {key[1]} hidden, {key[2]:,} iterations, {SCHEDULE_WORDS[key[3]]}: {held}"
-        )
+        variant = NetworkVariant.from_row(mine.iloc[0])
+        pairs.append(f"{variant.label(leave_out=('categorisation_cue',))}: {held}")
     if not pairs:
         return "No two variants of this build differ in the cue timing alone."
     return (

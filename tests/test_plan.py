@@ -1,0 +1,228 @@
+"""The run plan (icub_workflow.runs.plan_runs), tried directly on configs: which runs a config
+asks for, what they are called, which are one run, whose demonstrations and maps each reuses and
+where their files live. And the robot variant type it builds them from."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+from conftest import load_config, load_test_config
+
+from icub_affordance.variants import NetworkVariant
+from icub_workflow.configs import merged
+from icub_workflow.runs import OWN, plan_runs
+
+
+@pytest.fixture(scope="module")
+def config() -> dict:
+    return load_config() | {"robustness": False}
+
+
+@pytest.fixture(scope="module")
+def plan(config):
+    return plan_runs(config)
+
+
+def test_the_configs_own_run_is_first_at_the_top_of_data(plan, config):
+    assert next(iter(plan.runs)) == OWN
+    assert plan.config(OWN) == config
+    assert plan.path(OWN, "eval/trials.csv") == "data/eval/trials.csv"
+    assert plan.folder(plan.ablation) == f"runs/{plan.ablation}/"
+    # every run has its own folder, and the folder gives the run back
+    folders = plan.folders()
+    assert len(set(folders)) == len(folders) == len(plan.runs)
+    assert all(plan.run_in(plan.folder(run)) == run for run in plan.runs)
+    with pytest.raises(KeyError):
+        plan.folder("no_such_run")
+
+
+def test_the_ablation_is_the_other_cue_timing(plan, config):
+    own = config["network"]["categorisation_cue"]
+    other = plan.config(plan.ablation)["network"]["categorisation_cue"]
+    assert {own, other} == {"first_step", "all_steps"}
+    assert plan.ablation == f"cue_{other}"
+    assert plan.config(plan.ablation) == merged(config, {"network": {"categorisation_cue": other}})
+    assert plan.whole == [OWN, *config["runs"], plan.ablation]
+
+
+def test_a_reading_at_the_configs_settings_is_the_configs_own_run(plan, config):
+    rows = plan.readings
+    cues, goals = config["readings"]["categorisation_cue"], config["readings"]["goal_response"]
+    assert len(rows) == len(cues) * len(goals)  # one replication each without robustness
+    for row in rows:
+        run = plan.config(row["run"])
+        assert run["network"]["categorisation_cue"] == row["cue"]
+        assert run["soms"]["goal_response"] == row["goal_response"]
+        assert run["seed"] == row["seed"] == config["seed"]
+    own = next(
+        r
+        for r in rows
+        if r["cue"] == config["network"]["categorisation_cue"]
+        and r["goal_response"] == config["soms"]["goal_response"]
+    )
+    assert own["run"] == OWN
+    other_cue = next(
+        r
+        for r in rows
+        if r["cue"] != config["network"]["categorisation_cue"]
+        and r["goal_response"] == config["soms"]["goal_response"]
+    )
+    assert other_cue["run"] == plan.ablation
+
+
+def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equal(plan, config):
+    for run in plan.runs:
+        for stage in ("demos", "soms"):
+            source = plan.stage_run(run, stage)
+            # the source comes first and has the same settings; nothing earlier has them
+            assert list(plan.runs).index(source) <= list(plan.runs).index(run)
+    # a robot variant changes only the network: the config's demonstrations and maps
+    variant = next(row["run"] for row in plan.robot_variants if row["run"] != OWN)
+    assert plan.stage_run(variant, "demos") == plan.stage_run(variant, "soms") == OWN
+    # a reading with the other Goal response: the config's demonstrations, its own maps
+    grows = next(r["run"] for r in plan.readings if r["goal_response"] != "fixed")
+    assert plan.stage_run(grows, "demos") == OWN and plan.makes(grows, "soms")
+    # sweep points of one seed share theirs; of another seed, make their own
+    points = list(plan.sweep)
+    by_seed: dict[int, list[str]] = {}
+    for point in points:
+        by_seed.setdefault(plan.sweep[point]["seed"], []).append(point)
+    for seed, same in by_seed.items():
+        first = plan.stage_run(same[0], "demos")
+        assert all(plan.stage_run(p, "demos") == first for p in same)
+        assert (first == OWN) == (seed == config["seed"])
+
+
+def test_robot_variants_are_named_by_what_differs_from_the_config(plan, config):
+    network = config["network"]
+    rows = plan.robot_variants
+    grid = NetworkVariant.grid(config["robot"])
+    assert len(rows) == len({NetworkVariant.from_row(r) for r in rows}) == len(grid)
+    assert rows[0]["run"] == OWN and rows[0]["default"]
+    for row in rows[1:]:
+        variant = NetworkVariant.from_row(row)
+        settings = plan.config(row["run"])["network"]
+        assert {k: settings[k] for k in variant.keys()} == variant.row()
+        if row["run"] not in (OWN, plan.ablation):
+            assert row["run"] == variant.run_name(network)
+            assert plan.trained_for_robot(row["run"])
+    tested = [r["run"] for r in rows if r["default"]]
+    assert plan.robot_runs == tested and len(tested) == 1 + len(config["robot"]["default"])
+    assert len(plan_runs(config | {"robustness": True}).robot_runs) == len(rows)
+
+
+def test_confirmations_train_fresh_networks_of_the_chosen_variant(plan, config):
+    confirmation = config["robot"]["confirmation"]
+    assert len(plan.confirmation) == len(confirmation["variants"])
+    for row in plan.confirmation:
+        run = row["confirmation"]
+        assert run == f"{row['exploration']}_confirm"
+        first = confirmation["first_network"]
+        assert plan.networks(run) == [
+            f"{i:02d}" for i in range(first, first + confirmation["networks"])
+        ]
+        assert not set(plan.networks(run)) & set(plan.networks(row["exploration"]))
+        assert plan.stage_run(run, "demos") == plan.stage_run(run, "soms") == OWN
+        explored = plan.config(row["exploration"])["network"]
+        fresh = plan.config(run)["network"]
+        assert {k: v for k, v in fresh.items() if k not in ("networks", "first_network")} == {
+            k: v for k, v in explored.items() if k != "networks"
+        }
+    robust = plan_runs(config | {"robustness": True})
+    run = robust.confirmation[0]["confirmation"]
+    assert len(robust.networks(run)) == confirmation["robustness_networks"]
+
+
+def test_robustness_adds_a_replication_per_reading_seed(config):
+    plan = plan_runs(config | {"robustness": True})
+    seeds = [config["seed"], *config["readings"]["seeds"]]
+    readings = {(r["reading"]) for r in plan.readings}
+    assert len(plan.readings) == len(readings) * len(dict.fromkeys(seeds))
+    for row in plan.readings:
+        assert plan.config(row["run"])["seed"] == row["seed"]
+
+
+def test_a_configured_run_is_planned_and_its_name_kept(config):
+    plan = plan_runs(config | {"runs": {"lr_half": {"network": {"learning_rate": 0.0375}}}})
+    assert list(plan.runs)[1] == "lr_half" and "lr_half" in plan.whole
+    assert plan.config("lr_half")["network"]["learning_rate"] == 0.0375
+    assert plan.stage_run("lr_half", "soms") == OWN
+
+
+def test_the_test_config_plans_few_runs():
+    plan = plan_runs(load_test_config() | {"robustness": False})
+    assert len(plan.runs) < 20
+    assert all(plan.networks(run) for run in plan.runs)
+
+
+def test_only_the_configs_own_run_has_a_job_per_network(plan):
+    assert [run for run in plan.runs if plan.jobs_per_network(run)] == [OWN]
+
+
+# ---- the variant type ----------------------------------------------------------------------------
+
+
+def test_a_variant_entry_takes_the_configs_value_for_what_it_leaves_out(config):
+    network = config["network"]
+    entry = {"target": "commands", "hidden": 40, "iterations": 768000}
+    variant = NetworkVariant.of(entry, network)
+    assert variant.categorisation_cue == network["categorisation_cue"]
+    assert variant.learning_rate_schedule == network["learning_rate_schedule"]
+    assert NetworkVariant.of(network, network).run_name(network).startswith("robot_")
+
+
+def test_a_variants_name_leaves_out_what_equals_the_config():
+    network = {"categorisation_cue": "first_step", "learning_rate_schedule": "constant"}
+    plain = NetworkVariant("first_step", "sensed", 10, 3000, "constant")
+    assert plain.run_name(network) == "robot_sensed_h10_it3000"
+    other = NetworkVariant("all_steps", "commands", 40, 768000, "anneal")
+    assert other.run_name(network) == "robot_commands_h40_it768000_all_steps_anneal"
+    assert other.label() == "cue all steps, commands, 40 hidden, 768,000 iterations, annealed rate"
+    assert other.label(leave_out=("categorisation_cue",)).startswith("commands, 40 hidden")
+
+
+def test_phase_one_keeps_its_share_and_leaves_an_even_phase_two():
+    network = {"iterations": 3000, "phase1_iterations": 1000}
+    for iterations in (12000, 48000, 192000, 768000, 12004):
+        settings = NetworkVariant("first_step", "sensed", 10, iterations, "constant").network(
+            network
+        )
+        phase1 = settings["phase1_iterations"]
+        assert (iterations - phase1) % 2 == 0
+        assert abs(phase1 - iterations / 3) <= 1
+        assert settings["iterations"] == iterations
+
+
+def test_the_grid_is_every_combination_in_the_keys_order(config):
+    robot = config["robot"]
+    grid = NetworkVariant.grid(robot)
+    sizes = [len(robot[k]) for k in NetworkVariant.keys()]
+    assert len(grid) == len(set(grid)) == __import__("math").prod(sizes)
+    assert grid[0].values() == tuple(robot[k][0] for k in NetworkVariant.keys())
+    assert grid[1].values()[-1] == robot[NetworkVariant.keys()[-1]][1]
+
+
+def test_a_new_dimension_is_one_field(config):
+    """A sixth dimension, added as a field of a type like NetworkVariant: the grid, the names,
+    the rows, the labels and the trainer's settings follow without other code."""
+    extra = dataclasses.field(
+        default=0.5,
+        metadata={"name": "s{}", "always": False, "order": 5, "label": lambda v: f"scale {v}"},
+    )
+    Six = dataclasses.make_dataclass(
+        "Six", [("init_scale", float, extra)], bases=(NetworkVariant,), frozen=True
+    )
+    network = config["network"]
+    robot = config["robot"] | {"init_scale": [network["init_scale"], 0.1]}
+    grid = Six.grid(robot)
+    assert len(grid) == 2 * len(NetworkVariant.grid(config["robot"]))
+    assert Six.keys()[-1] == "init_scale"
+    changed = next(v for v in grid if v.init_scale == 0.1)
+    assert changed.run_name(network).endswith("_s0.1")
+    assert changed.network(network)["init_scale"] == 0.1
+    assert changed.label().endswith("scale 0.1")
+    assert (
+        Six.of({"target": "sensed", "hidden": 10, "iterations": 4}, network).init_scale
+        == (network["init_scale"])
+    )
