@@ -402,7 +402,8 @@ def check_runs(
                 "run."
             )
         # the entry itself: only the sections a run may change, and at least one
-        check_schema(overrides, schema["properties"]["runs"]["additionalProperties"], prefix)
+        entry = schema["properties"]["runs"]["additionalProperties"]
+        check_schema(overrides, entry | {"$defs": schema.get("$defs", {})}, prefix)
         # the run's whole config (its own `runs` aside: the entries are checked one by one)
         run = merged(config, overrides) | {"runs": {}}
         check_schema(run, schema, prefix)
