@@ -1,6 +1,7 @@
-"""The analysis used for inference (MODEL.md section 8), recomputed independently: per-network
-contrasts tested with t over networks (statsmodels OLS and scipy's t-tests as the references),
-each network x object counted once, Holm's adjustment and the equivalence test by hand."""
+"""The analysis used for inference (book/notes.md, "Testing and statistics"), recomputed
+independently: per-network contrasts tested with t over networks (statsmodels OLS and scipy's
+t-tests as the references), each network x object counted once, Holm's adjustment and the
+equivalence test by hand."""
 
 from __future__ import annotations
 

@@ -55,7 +55,7 @@ def test_every_final_posture_really_grasps(demos):
 
 
 def test_all_sequences_start_from_one_common_posture(demos):
-    """MODEL.md section 4: the grip must not show at step 0."""
+    """book/notes.md, "The demonstrations": the grip must not show at step 0."""
     first = demos["angles"][:, :, :, 0].reshape(-1, 16)
     np.testing.assert_allclose(first - first[0], 0.0, atol=1e-9)
 

@@ -1,4 +1,4 @@
-"""The measures of a trial (MODEL.md section 8), on hand-made trajectories."""
+"""The measures of a trial (book/notes.md, "Testing and statistics"), on hand-made trajectories."""
 
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
-"""The readings of the paper (MODEL.md sections 5, 7, 8): runs derived from the config, the
-summary over replications (data/readings/summary.csv) with its tests and Holm's adjustment, the
-tests of the differences between readings (data/readings/differences.csv), and the sentences
-generated from them, each changed when the statistic it rests on is."""
+"""The readings of the paper (book/notes.md, "The maps", "The network and its training", "Testing
+and statistics"): runs derived from the config, the summary over replications
+(data/readings/summary.csv) with its tests and Holm's adjustment, the tests of the differences
+between readings (data/readings/differences.csv), and the sentences generated from them, each
+changed when the statistic it rests on is."""
 
 from __future__ import annotations
 

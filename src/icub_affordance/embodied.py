@@ -5,10 +5,10 @@ never let them move the robot. Here each test trial is run on the MuJoCo iCub, c
 every step the network reads the arm's *actual* posture from the simulator (proprioception) and
 its output becomes the 16 position-servo targets, ramped over one demonstration step's time. The
 arm then lifts, and the grasp counts as a success when the grip the touch sensors read is the
-required one and the object rises with the hand (MODEL.md section 4's criteria: precision, thumb
-and index; power, thumb and the palm or at least three fingers; a hand that meets power's
-criterion reads power, whatever else touches). A precision trial held with the whole hand is a
-failure, counted as such (``wrong_grip_hold``).
+required one and the object rises with the hand (the criteria of book/notes.md, "The
+demonstrations": precision, thumb and index; power, thumb and the palm or at least three fingers; a
+hand that meets power's criterion reads power, whatever else touches). A precision trial held with
+the whole hand is a failure, counted as such (``wrong_grip_hold``).
 
 In closed loop a network's test sequences of one object and task are one and the same movement
 (``embodied_network``), run once. The trials' statistics are in ``embodied_stats``, over distinct

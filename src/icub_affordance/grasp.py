@@ -215,7 +215,7 @@ def lift_arm(robot: Robot, lift: float) -> None:
 
 
 def grip_in_contact(grip: str, touch: np.ndarray, threshold: float) -> bool:
-    """MODEL.md section 4: the fingers a grip uses touch the object.
+    """book/notes.md, "The demonstrations": the fingers a grip uses touch the object.
 
     Precision: thumb and index. Power: thumb, and the palm or at least three fingers.
     """

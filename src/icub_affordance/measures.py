@@ -1,6 +1,6 @@
 """The measures of one test trial, declared in the config (``readings.measures``) before any of
-their results was read (MODEL.md section 8). For every measure, higher is further from the
-required grip: the paper's reading is that higher is slower.
+their results was read (book/notes.md, "Testing and statistics"). For every measure, higher is
+further from the required grip: the paper's reading is that higher is slower.
 
 - ``rmse``: the paper's, the root mean square over the predicted steps and the 16 DoF of the
   output's difference from the required grip's demonstration (as in ``eval/trials.csv``).

@@ -1,23 +1,24 @@
-"""Readings of the paper over replications (MODEL.md sections 5, 7, 8): per run, every measure's
-contrasts and per-object means; across a reading's replications, each effect's mean difference
-with a 95% interval, its t-test and its Holm-adjusted p, and how many replications show it
-significantly in the paper's direction and how many significantly reversed; and the tests of the
-differences between readings (the cue timing, the Goal response), paired by network.
+"""Readings of the paper over replications (book/notes.md, "The maps", "The network and its
+training", "Testing and statistics"): per run, every measure's contrasts and per-object means;
+across a reading's replications, each effect's mean difference with a 95% interval, its t-test and
+its Holm-adjusted p, and how many replications show it significantly in the paper's direction and
+how many significantly reversed; and the tests of the differences between readings (the cue timing,
+the Goal response), paired by network.
 
 An effect's difference is the contrasts' estimate with the factor coded -0.5 / +0.5
 (``stats.CODING``): incongruent minus congruent, small minus large, averaged over the other
 factors; for every measure higher is further from the required grip, so a positive difference is
 the paper's direction.
 
-Inference (MODEL.md section 8). With one replication, an effect's test is the replication's own
-t-test over its networks (df = networks - 2, ``stats.network_contrasts``); with several, a t-test
-of the replications' estimates (df = replications - 1). The family for Holm's adjustment is every
-row of a table that is a hypothesis: every reading x measure x effect of the summary, every
-comparison x measure x effect of the differences; a null control's rows
-(``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are
-left out of the family (their ``p_holm`` is empty). A verdict ("paper", "reversed") needs the
-adjusted p below ``findings.ALPHA``; otherwise it is "none", which is not "no difference": only
-an equivalence test (TOST, with a margin declared in config) can say that.
+Inference (book/notes.md, "Testing and statistics"). With one replication, an effect's test is the
+replication's own t-test over its networks (df = networks - 2, ``stats.network_contrasts``); with
+several, a t-test of the replications' estimates (df = replications - 1). The family for Holm's
+adjustment is every row of a table that is a hypothesis: every reading x measure x effect of the
+summary, every comparison x measure x effect of the differences; a null control's rows
+(``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
+out of the family (their ``p_holm`` is empty). A verdict ("paper", "reversed") needs the adjusted p
+below ``findings.ALPHA``; otherwise it is "none", which is not "no difference": only an equivalence
+test (TOST, with a margin declared in config) can say that.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ For the Object map its width grows with the square root of the input's activity 
 number of edge cells of the binary visual map), so a large object (more edge cells, a longer
 outline) lights up a larger cluster than a small one (paper section 2.3, after Caligiore et al.
 2008). The width is computed from the input alone; nothing is keyed by the object's name. The Task
-map's bump has a fixed width. The Goal map's is a reading (MODEL.md section 5, config
+map's bump has a fixed width. The Goal map's is a reading (book/notes.md, "The maps"; config
 ``soms.goal_response``): ``fixed``, the Task map's fixed width, or ``grows``, the Object map's rule
 applied to the Goal map's input (the Object and Task maps' activations), so a large object's Goal
 cluster is larger too.

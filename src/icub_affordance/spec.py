@@ -47,7 +47,7 @@ TOUCH_NAMES: tuple[str, ...] = (
     "touch_palm",
 )
 
-#: The objects of MODEL.md section 2, in the project's order.
+#: The objects of the paper (book/notes.md, "The objects"), in the project's order.
 OBJECT_NAMES: tuple[str, ...] = ("big_ball", "small_ball", "big_cube", "small_cube")
 
 
@@ -81,11 +81,12 @@ MAPPINGS: dict[str, dict[str, str]] = {
     "B": {"natural": "precision", "artefact": "power"},
 }
 
-#: How long a categorisation trial shows its cue (MODEL.md section 7: two readings).
+#: How long a categorisation trial shows its cue (book/notes.md, "The network and its training": two
+#: readings).
 CUES: tuple[str, ...] = ("first_step", "all_steps")
 
-#: What the Goal map sends on (MODEL.md section 5: two readings): a bump of fixed width, or one
-#: that widens with its input's activity, as the Object map's does.
+#: What the Goal map sends on (book/notes.md, "The maps": two readings): a bump of fixed width, or
+#: one that widens with its input's activity, as the Object map's does.
 GOAL_RESPONSES: tuple[str, ...] = ("fixed", "grows")
 
 #: What the motor outputs learn (a reading beyond the paper, the issue "The robot grasps with
@@ -99,7 +100,8 @@ TARGETS: tuple[str, ...] = ("sensed", "commands")
 #: jittering around the minimum at the full rate.
 SCHEDULES: tuple[str, ...] = ("constant", "anneal")
 
-#: The two ways the trained networks are tested (paper section 3; MODEL.md section 6).
+#: The two ways the trained networks are tested (paper section 3; book/notes.md, "Testing and
+#: statistics").
 MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")
 
 

@@ -3,10 +3,10 @@
 Three analyses of the categorisation trials: the paper's two-way ANOVA over all trials (every
 trial an observation: the paper's analysis, shown, not used for inference), a repeated-measures
 ANOVA with the network as the subject, and the analysis used for inference: per-network contrasts
-of congruency x size, with the mapping between networks (``network_contrasts``; MODEL.md section
-8). The network is the unit: in closed loop a network's trials of one object and task are
-identical, whatever the sequence, so each network x object is counted once, and every test is a
-t-test over networks with the design's degrees of freedom. The ANOVAs report F, degrees of
+of congruency x size, with the mapping between networks (``network_contrasts``; book/notes.md,
+"Testing and statistics"). The network is the unit: in closed loop a network's trials of one object
+and task are identical, whatever the sequence, so each network x object is counted once, and every
+test is a t-test over networks with the design's degrees of freedom. The ANOVAs report F, degrees of
 freedom, p and partial eta squared; the contrasts an estimate, its standard error, df, 95%
 t-interval and p per term.
 """
@@ -277,13 +277,14 @@ def simple_effects(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str
 
 
 def network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
-    """The analysis used for inference (MODEL.md section 8): per term of ``TERMS``, the estimate
-    (coded as ``CODING``), its standard error, t, degrees of freedom, 95% t-interval and p, from
-    per-network contrasts. The network is the unit: each network's four objects are the four
-    congruency x size cells, so a within effect is a contrast of one network's cells, tested over
-    the networks with the mapping (between networks) as a covariate. For a balanced design the
-    estimates equal a mixed model's; the tests, unlike a random-intercept model's Wald z, assume
-    no common error across the three within contrasts and use t with networks - 2 df."""
+    """The analysis used for inference (book/notes.md, "Testing and statistics"): per term of
+    ``TERMS``, the estimate (coded as ``CODING``), its standard error, t, degrees of freedom, 95%
+    t-interval and p, from per-network contrasts. The network is the unit: each network's four
+    objects are the four congruency x size cells, so a within effect is a contrast of one network's
+    cells, tested over the networks with the mapping (between networks) as a covariate. For a
+    balanced design the estimates equal a mixed model's; the tests, unlike a random-intercept
+    model's Wald z, assume no common error across the three within contrasts and use t with
+    networks - 2 df."""
     return contrast_tests(per_network_contrasts(df, depvar))
 
 

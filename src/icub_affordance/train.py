@@ -1,4 +1,4 @@
-"""The paper's training regime (sections 2.3 and 3; MODEL.md section 7).
+"""The paper's training regime (sections 2.3 and 3; book/notes.md, "The network and its training").
 
 Phase 1: every iteration a grasping trial, target the object's natural grip. Phase 2: half the
 iterations grasping trials, half categorisation trials whose target grip follows the network's
@@ -116,7 +116,7 @@ def context(m: Materials, obj: int, task: int, cue: str) -> np.ndarray:
 
     In a categorisation trial the Task map shows the categorisation pattern at the first step
     only (cue "first_step"), then the grasping pattern again; with cue "all_steps" it stays on. Both
-    are readings of the paper (MODEL.md section 7), run side by side.
+    are readings of the paper (book/notes.md, "The network and its training"), run side by side.
     """
     steps = m.demos.shape[3] - 1
     ctx = np.empty((steps, N_VISUAL + N_GOAL))
