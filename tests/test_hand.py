@@ -29,7 +29,8 @@ FIGURE1_TABLE = [
     ("ring_little", 0, 115),
 ]
 
-# Which joints each hand motor drives on the iCub (../shared/reference/icub_right_arm.md).
+# Which joints each hand motor drives on the iCub (its public hand documentation; docs/pipeline.md,
+# "The simulated iCub").
 HAND_COUPLING = {
     "hand_finger": {"r_index_abduction", "r_ring_abduction", "r_little_abduction"},
     "thumb_oppose": {"r_thumb_oppose"},

@@ -7,8 +7,9 @@ import pytest
 
 from icub_affordance.body import N_DOF
 
-# iKin right arm, version 1 (../shared/reference/icub_right_arm.md), typed here independently of
-# the MJCF: (a, d, alpha, offset) per link, angles in degrees. Links 0-2 are the torso, held at 0.
+# iKin right arm, version 1 (the iCub's public iKin tables; docs/pipeline.md, "The simulated
+# iCub"), typed here independently of the MJCF: (a, d, alpha, offset) per link, angles in
+# degrees. Links 0-2 are the torso, held at 0.
 DH = [
     (0.032, 0.0, 90, 0),
     (0.0, -0.0055, 90, -90),

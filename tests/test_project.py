@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 REPO = Path(__file__).resolve().parents[1]
 
 
@@ -47,3 +49,47 @@ def test_code_is_formatted_and_linted():
             [sys.executable, "-m", "ruff", *args], cwd=REPO, capture_output=True, text=True
         )
         assert result.returncode == 0, result.stdout + result.stderr
+
+
+def tracked_files() -> list[Path]:
+    listed = subprocess.run(["git", "ls-files"], cwd=REPO, capture_output=True, text=True)
+    return [REPO / name for name in listed.stdout.splitlines() if (REPO / name).is_file()]
+
+
+def test_readme_is_a_guide_read_in_minutes():
+    assert len((REPO / "README.md").read_text().splitlines()) <= 150
+
+
+def test_no_code_edits_the_import_path():
+    """The packages are installed: nothing puts a folder on sys.path by hand."""
+    folders = ("Snakefile", "workflow/", "src/", "benchmarks/")
+    for path in tracked_files():
+        relative = path.relative_to(REPO).as_posix()
+        if relative.startswith(folders) and path.suffix in ("", ".py", ".smk"):
+            assert "sys.path" not in path.read_text(), relative
+
+
+def test_the_project_cites_its_own_reasoning_not_an_outside_file():
+    for path in tracked_files():
+        if (
+            path.suffix in (".py", ".smk", ".md", ".yaml", ".yml", ".toml", "")
+            and path.stat().st_size
+        ):
+            text = path.read_text(errors="ignore")
+            assert "MODEL" + ".md" not in text and "../" + "shared" not in text, path
+
+
+def test_the_science_never_imports_the_workflow_and_benchmarks_import_no_tests():
+    for path in (REPO / "src" / "icub_affordance").glob("*.py"):
+        assert not re.search(r"^\s*(from|import) icub_workflow", path.read_text(), re.M), path
+    for path in (REPO / "benchmarks").glob("*.py"):
+        assert not re.search(r"^\s*(from|import) (test_|conftest)", path.read_text(), re.M), path
+
+
+@pytest.mark.slow  # runs Snakemake
+def test_snakemake_lint_gives_no_advice_but_the_conda_one():
+    result = subprocess.run(
+        [sys.executable, "-m", "snakemake", "--lint"], cwd=REPO, capture_output=True, text=True
+    )
+    advice = set(re.findall(r"^\s*\* (.+?):?$", result.stdout + result.stderr, re.M))
+    assert advice <= {"Specify a conda environment or container for each rule."}, advice
