@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 import pytest
 from conftest import demo_config, initial_posture_deg, load_config
@@ -91,7 +93,8 @@ def test_filming_a_trial_does_not_change_it(robot):
     plan, start = to_normalised(demo.commands_deg), to_normalised(demo.postures_deg[0])
     args = ("small_cube", replay_policy(plan), start, len(plan), "precision", config)
     plain = run_trial(robot, *args)
-    frames, filmed = trial_frames(robot, *args, camera="closeup", width=64, height=48, every=150)
+    trial = partial(run_trial, robot, *args)
+    frames, filmed = trial_frames(robot, trial, camera="closeup", width=64, height=48, every=150)
     for name in ("commands", "sensed", "qpos", "touch"):
         np.testing.assert_array_equal(getattr(filmed, name), getattr(plain, name), err_msg=name)
     assert filmed.contact_time == plain.contact_time and filmed.lift_m == plain.lift_m

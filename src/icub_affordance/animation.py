@@ -15,14 +15,15 @@ from __future__ import annotations
 import csv
 import os
 import textwrap
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
 from .body import Robot
 from .demos import DemoConfig
-from .embodied import Outcome, Policy, network_policy, outcome_columns, run_trial
+from .embodied import Outcome, network_policy, outcome_columns, run_trial
 from .evaluate import TrialSet, describe_trial
 from .io import atomic_path, load_npz
 from .jordan import Weights
@@ -32,20 +33,16 @@ from .train import Materials, mapping_of
 
 def trial_frames(
     robot: Robot,
-    obj: str,
-    policy: Policy,
-    start: np.ndarray,
-    steps: int,
-    grip: str,
-    config: DemoConfig,
+    trial: Callable[..., Outcome],
     camera: str = "closeup",
     width: int = 240,
     height: int = 180,
     every: int = 20,
 ) -> tuple[list[np.ndarray], Outcome]:
-    """One trial as ``embodied.run_trial`` runs it, filmed: a frame (height, width, 3, uint8)
-    after the first physics step and every ``every`` steps after it (2 ms each), and one of the
-    state after the lift test; and the trial's Outcome, the same as a run without the camera."""
+    """One trial filmed: ``trial(watch=...)`` is ``embodied.run_trial`` with the trial's
+    arguments bound (``functools.partial``). A frame (height, width, 3, uint8) after the first
+    physics step and every ``every`` steps after it (2 ms each), and one of the state after the
+    lift test; and the trial's Outcome, the same as a run without the camera."""
     if every < 1:
         raise ValueError(f"every must be a positive number of physics steps, not {every}")
     frames: list[np.ndarray] = []
@@ -57,7 +54,7 @@ def trial_frames(
             frames.append(r.render(camera, width, height))
         count += 1
 
-    out = run_trial(robot, obj, policy, start, steps, grip, config, watch=film)
+    out = trial(watch=film)
     frames.append(robot.render(camera, width, height))  # after the lift test (or none)
     return frames, out
 
@@ -123,15 +120,10 @@ def film_trial(
     setup, net, mapping, recorded = film.setup, film.network, film.mapping, film.recorded
     _task, o, _s = setup.trials[i]
     grip = m.grips[setup.grips[i]]
-    frames, out = trial_frames(
-        robot,
-        m.objects[o],
-        network_policy(film.weights, setup.context[i]),
-        setup.teacher[i, 0],
-        len(setup.teacher[i]),
-        grip,
-        config,
-    )
+    policy = network_policy(film.weights, setup.context[i])
+    start, steps = setup.teacher[i, 0], len(setup.teacher[i])
+    trial = partial(run_trial, robot, m.objects[o], policy, start, steps, grip, config)
+    frames, out = trial_frames(robot, trial)
     trial = describe_trial(m, setup, i, net, mapping, "embodied")
     row = recorded[i]
     for key in ("task", "object", "target_grip", "sequence"):

@@ -43,17 +43,15 @@ from .stats import (
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")
 
+#: The columns that say which effect on which measure, and its mean and interval.
+_EFFECT_COLUMNS = ["measure", "effect", "replications", "diff", "ci_low", "ci_high"]
+
 #: The columns of data/readings/summary.csv: the contract's, then df, p and p_holm.
 SUMMARY_COLUMNS = [
     "reading",
     "cue",
     "goal_response",
-    "measure",
-    "effect",
-    "replications",
-    "diff",
-    "ci_low",
-    "ci_high",
+    *_EFFECT_COLUMNS,
     "n_paper",
     "n_reversed",
     "df",
@@ -69,12 +67,7 @@ DIFFERENCE_COLUMNS = [
     "at",
     "a",
     "b",
-    "measure",
-    "effect",
-    "replications",
-    "diff",
-    "ci_low",
-    "ci_high",
+    *_EFFECT_COLUMNS,
     "df",
     "p",
     "p_holm",
