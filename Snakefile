@@ -55,6 +55,7 @@ include: "workflow/rules/model.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/readings.smk"
 include: "workflow/rules/embodied.smk"
+include: "workflow/rules/statistics.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 
@@ -78,6 +79,7 @@ DEFAULT_OUTPUTS = [
     *rules.embodied_summary.output,
     *(f for run in PLAN.confirmation_runs for f in run_files(run) + robot_files(run)),
     *rules.embodied_confirmation.output,
+    *rules.robot_statistics.output,
     *rules.embodied_filmstrip.output,
     *rules.robot_variants_figure.output,
     *rules.robot_animation.output,
@@ -85,6 +87,7 @@ DEFAULT_OUTPUTS = [
     *(f for row in PLAN.readings for f in reading_files(row["run"])),
     *rules.readings.output,
     *rules.readings_figure.output,
+    *rules.cue_difference.output,
     *rules.findings.output,
     *rules.book.output,
     *([*SWEEP_OUTPUTS, *rules.sweep_cost.output] if config["robustness"] else []),

@@ -23,11 +23,11 @@ from icub_affordance.embodied_stats import (
 from icub_affordance.findings import (
     best_robot_variant,
     held_interval,
-    paired_grasping,
     robot_effect_verdict,
     smallest_that_grasps,
     tolerated_noise,
 )
+from icub_affordance.robot_statistics import paired_grasping
 
 OBJECTS = {  # object: (size, congruent under mapping A)
     "big_ball": ("large", True),

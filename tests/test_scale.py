@@ -284,8 +284,12 @@ def test_the_cost_config_times_replications_of_the_main_runs_networks():
 
 
 def test_the_cost_words_follow_the_numbers():
-    from icub_workflow.book.text import cost_findings
+    from icub_affordance.growth import cost_growth
+    from icub_workflow.book import text
     from icub_workflow.sweep_timing import cost_table
+
+    def cost_findings(cost):
+        return text.cost_findings(cost, cost_growth(cost["replications"], cost["seconds"]))
 
     linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
     assert "10.0 s per replication and an intercept of 10.0 s" in linear

@@ -184,44 +184,6 @@ def held_interval(held: int, trials: int, level: float = 0.95) -> tuple[float, f
     return float(ci.low), float(ci.high)
 
 
-def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) -> list[dict]:
-    """Robot variants that differ in ``column`` alone, compared on the same networks.
-
-    ``trials``: ``data/embodied/trials.csv``; ``keys``: the columns that tell variants apart
-    (``embodied_stats.VARIANT_COLUMNS`` without ``run``). Variants of one group share everything but
-    ``column``, so network k of each starts from the same initial weights and sees the same
-    presentations: its grasping trial of an object (one physical trial, however many test
-    sequences share it) pairs with the other variant's. Per pair of values: the distinct trials,
-    how many each holds, the discordant pairs, and the exact McNemar test (the two-sided
-    binomial test of the discordant pairs at 1/2).
-    """
-    from scipy.stats import binomtest
-
-    grasping = trials[trials["task"] == "grasping"].drop_duplicates([*keys, "network", "object"])
-    others = [k for k in keys if k != column]
-    out = []
-    for group, mine in grasping.groupby(others, sort=True):
-        values = sorted(mine[column].unique())
-        held = mine.pivot_table(
-            index=["network", "object"], columns=column, values="success", aggfunc="first"
-        ).dropna()
-        for i, a in enumerate(values):
-            for b in values[i + 1 :]:
-                ya, yb = held[a].astype(bool), held[b].astype(bool)
-                only_a, only_b = int((ya & ~yb).sum()), int((yb & ~ya).sum())
-                n = only_a + only_b
-                out.append(
-                    dict(zip(others, group, strict=True))
-                    | {
-                        "a": a, "b": b, "trials": len(held),
-                        "held_a": int(ya.sum()), "held_b": int(yb.sum()),
-                        "only_a": only_a, "only_b": only_b,
-                        "p": float(binomtest(only_a, n, 0.5).pvalue) if n else 1.0,
-                    }
-                )  # fmt: skip
-    return out
-
-
 def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float = ALPHA):
     """The verdict on ``factor`` (congruency or size) of one variant's robot ``measure``
     (``effects.json``: success or contact_time), from its test (``effect["tests"][factor]``):
@@ -241,6 +203,32 @@ def robot_effect_verdict(effect: dict, measure: str, factor: str, alpha: float =
         rate_a, rate_b = a_yes / max(a_yes + a_no, 1), b_yes / max(b_yes + b_no, 1)
         return Verdict(paper_direction=bool(rate_a > rate_b), significant=bool(p < alpha))
     return None
+
+
+def robot_effect_statistics(effect: dict, factor: str) -> dict[str, float]:
+    """The statistics a robot effect's verdict (``robot_effect_verdict``) rests on: the
+    difference, the paper's slower level minus its faster one (the contrast's estimate, or for
+    the exact test the difference of the shares held), and the p its verdict reads (Holm-adjusted
+    over the robot's tests where given); NaN where the effect is not estimable."""
+    test = effect["tests"][factor]
+    p = float(test.get("p_holm", test.get("p", float("nan"))))  # the p the verdict reads
+    if test["method"] == "contrasts":
+        return {"estimate": float(test["estimate"]), "p": p}
+    if test["method"] == "exact":
+        (x, x_no), (y, y_no) = test["table"]
+        difference = y / max(y + y_no, 1) - x / max(x + x_no, 1)
+        return {"estimate": float(difference), "p": p}
+    return {"estimate": float("nan"), "p": float("nan")}
+
+
+def wrong_grip_by_congruency(rates: dict[str, float]) -> dict[str, float]:
+    """The share of categorisation trials answered with the wrong grip, per congruency: the
+    mean of its large and small objects' (``anova.json``'s ``wrong_grip_rate``, per
+    congruency_size)."""
+    return {
+        c: float(np.mean([rates[f"{c}_{s}"] for s in ("large", "small")]))
+        for c in ("congruent", "incongruent")
+    }
 
 
 def tolerated_noise(table: pd.DataFrame, bar: float = GRASPS) -> pd.Series | None:

@@ -303,6 +303,27 @@ def difference_tests(
     return contrast_tests(diff.assign(mapping=ca["mapping"]))
 
 
+def mcnemar_exact(only_a: int, only_b: int) -> float:
+    """The exact McNemar test of paired binary outcomes from its discordant pairs (``only_a``
+    pairs with the outcome under A alone, ``only_b`` under B alone): the two-sided binomial test
+    of ``only_a`` of the discordant pairs at 1/2; 1 without discordant pairs."""
+    from scipy.stats import binomtest
+
+    n = only_a + only_b
+    return float(binomtest(only_a, n, 0.5).pvalue) if n else 1.0
+
+
+def cue_timing_difference(
+    trials: dict[str, pd.DataFrame], mode: str = "closed_loop", depvar: str = "rmse"
+) -> dict[str, dict[str, float]]:
+    """The categorisation trials' per-network contrasts with the cue at the first step only
+    minus with the cue at every step, paired by network (``difference_tests``): ``trials`` maps
+    each cue timing (``first_step``, ``all_steps``) to its run's trial table, the two runs the
+    same networks (same seed and mapping) trained under the two timings."""
+    first, every = (categorisation_trials(trials[cue], mode) for cue in ("first_step", "all_steps"))
+    return difference_tests(first, every, depvar)
+
+
 def equivalence(term: dict[str, float], margin: float) -> dict[str, float]:
     """Two one-sided t-tests (TOST) of ``|estimate| < margin`` from a term's estimate, standard
     error and df: ``p`` is the larger one-sided p; below alpha, the difference is within the

@@ -16,13 +16,12 @@ BOOK_DATA = {
     "figure5.png": "data/figures/figure5.png",
     "conflict_timecourse.png": "data/figures/conflict_timecourse.png",
     "anova.json": "data/eval/anova.json",
-    "trials.csv": "data/eval/trials.csv",
+    "cue_difference.json": "data/eval/cue_difference.json",
     "rulegraph.dot": "data/book/rulegraph.dot",
     "embodied_analysis.json": "data/embodied/analysis.json",
     "embodied_success.csv": "data/embodied/success.csv",
     "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
     "ablation_anova.json": PLAN.path(PLAN.ablation, "eval/anova.json"),
-    "ablation_trials.csv": PLAN.path(PLAN.ablation, "eval/trials.csv"),
     "ablation_figure5.png": PLAN.path(PLAN.ablation, "figures/figure5.png"),
     "divergence.csv": "data/eval/divergence.csv",
     "divergence.json": "data/eval/divergence.json",
@@ -37,9 +36,7 @@ BOOK_DATA = {
     "robot_effects.json": "data/embodied/effects.json",
     "robot_variants.png": "data/figures/robot_variants.png",
     "robot_tolerance.png": "data/figures/robot_tolerance.png",
-    "robot_tolerance.csv": "data/embodied/tolerance.csv",
-    "robot_trials.csv": "data/embodied/trials.csv",
-    "robot_replay.csv": "data/embodied/replay.csv",
+    "robot_statistics.json": "data/embodied/statistics.json",
     "robot_confirmation.csv": "data/embodied/confirmation.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
@@ -74,8 +71,7 @@ if config["robustness"]:
 FINDINGS_READS = [
     "anova.json",
     "ablation_anova.json",
-    "trials.csv",
-    "ablation_trials.csv",
+    "cue_difference.json",
     "embodied_analysis.json",
     "divergence.csv",
     "divergence.json",
@@ -90,9 +86,7 @@ FINDINGS_READS = [
     "measures.json",
     "robot_variants.csv",
     "robot_effects.json",
-    "robot_tolerance.csv",
-    "robot_trials.csv",
-    "robot_replay.csv",
+    "robot_statistics.json",
     "robot_confirmation.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
@@ -148,6 +142,7 @@ rule rulegraph:
         "data/benchmarks/rulegraph.tsv"
     script:
         "../scripts/rulegraph.py"
+
 
 
 rule findings:

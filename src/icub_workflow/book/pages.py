@@ -18,15 +18,13 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied_stats import (
-    FACTOR_LEVELS,
-    held_by_palm_error,
-    tolerance_table,
-)
+from icub_affordance.embodied_stats import FACTOR_LEVELS
+from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
+from icub_affordance.robot_statistics import record_table
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
-from icub_affordance.stats import TERMS, categorisation_trials, difference_tests
+from icub_affordance.stats import TERMS
 from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
 
 from . import text
@@ -289,11 +287,7 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
     simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
-    rates = anova["closed_loop"]["wrong_grip_rate"]
-    wrong = {
-        c: float(np.mean([rates[f"{c}_{s}"] for s in ("large", "small")]))
-        for c in ("congruent", "incongruent")
-    }
+    wrong = science.wrong_grip_by_congruency(anova["closed_loop"]["wrong_grip_rate"])
     out = (
         {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"]}
         | _term_values("congruency", closed["congruency"])
@@ -404,7 +398,7 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
             (f"beyond.emb_final_error_{effect}_estimate", f"beyond.emb_final_error_{effect}_p"),
         )
     # success: the per-network contrast, or the exact test over distinct trials without variance
-    stats = _robot_effect_statistics(own_effects["success"], "congruency")
+    stats = science.robot_effect_statistics(own_effects["success"], "congruency")
     out["emb_success_congruency_estimate"] = stats["estimate"]
     out["emb_success_congruency_p"] = stats["p"]
     out["emb_success_congruency"] = text.Claim(
@@ -496,11 +490,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
             (f"beyond.cue_{name}_congruency_estimate", f"beyond.cue_{name}_congruency_p"),
         )
     # the test of the difference: first step only minus every step, paired by network
-    runs = {main_cue: inputs["trials.csv"], ablation_cue: inputs["ablation_trials.csv"]}
-    trials = {
-        cue: categorisation_trials(pd.read_csv(path), "closed_loop") for cue, path in runs.items()
-    }
-    difference = difference_tests(trials["first_step"], trials["all_steps"])["congruency"]
+    difference = _json(inputs["cue_difference.json"])["congruency"]
     # its verdict is the readings' table's, Holm-adjusted over that table's family of tests
     differences = pd.read_csv(inputs["readings_differences.csv"])
     row = differences[
@@ -536,10 +526,9 @@ def _variant_label(row: Mapping) -> str:
     return NetworkVariant.from_row(row).label()
 
 
-def _schedule_sentence(trials: pd.DataFrame) -> str:
+def _schedule_sentence(pairs: list[dict]) -> str:
     """The robot variants of this build that differ in the learning-rate schedule alone,
-    compared on the same networks' grasping trials."""
-    pairs = science.paired_grasping(trials, "learning_rate_schedule", NetworkVariant.keys())
+    compared on the same networks' grasping trials (``robot_statistics.paired_grasping``)."""
     if not pairs:
         return "No two variants of this build differ in the learning-rate schedule alone."
     said = []
@@ -662,25 +651,25 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
     return out
 
 
-def _palm_sentence(best: Mapping, own: Mapping, replay: pd.DataFrame) -> str:
-    """Where the learned networks' palms end, beside where the demonstrations' own ends."""
-    demos = replay[replay["plan"] == "commands"]
+def _palm_sentence(best: Mapping, own: Mapping, replay: Mapping) -> str:
+    """Where the learned networks' palms end, beside where the demonstrations' own ends
+    (``replay``: ``robot_statistics.replay_palm``)."""
     return (
         f"In their grasping trials the best variant's palm ends a median "
         f"{best['grasping_palm_error_mm']:.1f} mm from the demonstrator's, the config's own "
         f"networks' {own['grasping_palm_error_mm']:.1f} mm. The demonstrations themselves, "
         f"replayed through the same controller, end a median "
-        f"{demos['palm_error_mm'].median():.1f} mm from that mean (at most "
-        f"{demos['palm_error_mm'].max():.1f} mm) and hold the object in "
-        f"{text.pct(demos['success'].astype(bool).mean())} of their {len(demos)} replays."
+        f"{replay['palm_error_mm_median']:.1f} mm from that mean (at most "
+        f"{replay['palm_error_mm_max']:.1f} mm) and hold the object in "
+        f"{text.pct(replay['held'])} of their {replay['trials']} replays."
     )
 
 
 def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
-    """Share held per bin of palm error, one column per source of trials."""
+    """Share held per bin of palm error, one column per source of trials (each its
+    ``embodied_stats.held_by_palm_error`` table)."""
     columns = {}
-    for name, trials in sources.items():
-        bins = held_by_palm_error(trials)
+    for name, bins in sources.items():
         columns[name] = [
             f"{text.pct(row['held'])} of {int(row['trials'])}" if row["trials"] else ""
             for _, row in bins.iterrows()
@@ -741,22 +730,6 @@ def _holm_words(test: dict) -> str:
     return f", Holm-adjusted over the robot's tests {text.fmt_p(test['p_holm'])}"
 
 
-def _robot_effect_statistics(effect: dict, factor: str) -> dict[str, float]:
-    """The statistics a robot effect's sentence rests on: the difference, the paper's slower
-    level minus its faster one (the contrast's estimate, or for the exact test the difference
-    of the shares held), and the p its verdict reads (Holm-adjusted over the robot's tests where
-    given); NaN where the effect is not estimable."""
-    test = effect["tests"][factor]
-    p = float(test.get("p_holm", test.get("p", float("nan"))))  # the p the verdict reads
-    if test["method"] == "contrasts":
-        return {"estimate": float(test["estimate"]), "p": p}
-    if test["method"] == "exact":
-        (x, x_no), (y, y_no) = test["table"]
-        difference = y / max(y + y_no, 1) - x / max(x + x_no, 1)
-        return {"estimate": float(difference), "p": p}
-    return {"estimate": float("nan"), "p": float("nan")}
-
-
 def _robot_effect_values(effects: dict, run: str, key: str, page: str = "grasping") -> dict:
     """For one variant (``key``: own or best) each robot effect's sentence, a ``text.Claim``
     resting on its difference and p, which are stored beside it."""
@@ -765,7 +738,7 @@ def _robot_effect_values(effects: dict, run: str, key: str, page: str = "graspin
         for factor in FACTOR_LEVELS:
             name = f"{key}_{measure}_{factor}"
             effect = effects[run][measure]
-            stats = _robot_effect_statistics(effect, factor)
+            stats = science.robot_effect_statistics(effect, factor)
             out[f"{name}_estimate"], out[f"{name}_p"] = stats["estimate"], stats["p"]
             out[name] = text.Claim(
                 _robot_effect_text(effect, measure, factor),
@@ -813,16 +786,10 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     variants = pd.read_csv(inputs["robot_variants.csv"])
     effects = _json(inputs["robot_effects.json"])
     anova = _json(inputs["anova.json"])
-    tolerance_trials = pd.read_csv(inputs["robot_tolerance.csv"])
-    tolerance = tolerance_table(tolerance_trials)
+    robot_stats = _json(inputs["robot_statistics.json"])
+    tolerance = record_table(robot_stats["tolerance"])
     tolerated = science.tolerated_noise(tolerance)
     exact = tolerance[tolerance["noise"] == 0].iloc[0]  # config checks: noise 0 is listed
-    replay = pd.read_csv(inputs["robot_replay.csv"])
-    trials = pd.read_csv(inputs["robot_trials.csv"])
-    # a network's test sequences of one object are one physical trial (embodied_network): once
-    grasping_trials = trials[trials["task"] == "grasping"].drop_duplicates(
-        ["run", "network", "object"]
-    )
     own = variants[variants["run"] == "main"].iloc[0]
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
@@ -875,10 +842,10 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             else f"At no arm noise tested does the plan hold the object in "
             f"{text.pct(science.GRASPS)} of the trials."
         ),
-        "palm_sentence": _palm_sentence(best, own, replay),
+        "palm_sentence": _palm_sentence(best, own, robot_stats["replay"]),
         **_confirmation(pd.read_csv(inputs["robot_confirmation.csv"]), config["seed"]),
         "cue_sentence": _cue_sentence(variants),
-        "schedule_sentence": _schedule_sentence(trials),
+        "schedule_sentence": _schedule_sentence(robot_stats["schedule_pairs"]),
         "rmse_congruency": text.fmt_term(anova["contrasts"]["closed_loop"]["congruency"]),
         "rmse_size": text.fmt_term(anova["contrasts"]["closed_loop"]["size"]),
     }
@@ -937,14 +904,13 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             for obj in objects
         }
     )
+    bins = robot_stats["held_by_palm_error"]
     palm = _palm_table(
         {
-            "mean plan, arm offset": tolerance_trials,
-            "demonstrations replayed": replay[replay["plan"] == "commands"],
-            f"best variant ({_variant_label(best)})": grasping_trials[
-                grasping_trials["run"] == best["run"]
-            ],
-            "config's own networks": grasping_trials[grasping_trials["run"] == "main"],
+            "mean plan, arm offset": record_table(bins["tolerance"]),
+            "demonstrations replayed": record_table(bins["replay"]),
+            f"best variant ({_variant_label(best)})": record_table(bins["runs"][best["run"]]),
+            "config's own networks": record_table(bins["runs"]["main"]),
         }
     )
     return out, {
@@ -974,7 +940,9 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
             f"{config['network']['networks']} networks, {n_networks} networks in all."
         ),
         "sweep_findings": text.sweep_findings(summary),
-        "cost_findings": text.cost_findings(cost),
+        "cost_findings": text.cost_findings(
+            cost, cost_growth(cost["replications"], cost["seconds"])
+        ),
     }, text.sweep_summary_display(summary)
 
 

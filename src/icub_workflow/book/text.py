@@ -450,13 +450,14 @@ def sweep_findings(summary) -> str:
     return "\n\n".join(paragraphs)
 
 
-def cost_findings(cost) -> str:
-    """How the sweep's wall time grows with the number of replications, in words (MyST)."""
+def cost_findings(cost, growth: dict) -> str:
+    """How the sweep's wall time grows with the number of replications, in words (MyST):
+    ``cost`` is the cost table, ``growth`` its wall time against its replications
+    (``icub_affordance.growth.cost_growth``)."""
     import numpy as np
 
     cost = cost.sort_values("replications")
-    n = cost["replications"].to_numpy(dtype=float)
-    s = cost["seconds"].to_numpy(dtype=float)
+    n, s = growth["sizes"], growth["seconds"]
     cores = int(cost["cores"].iloc[0])
     machine = int(cost["machine_cores"].iloc[0])
     text = (
@@ -481,7 +482,7 @@ def cost_findings(cost) -> str:
             )
     if len(n) < 2:
         return text + " With a single measurement there is no growth to describe."
-    marginal = np.diff(s) / np.diff(n)
+    marginal = growth["marginal"]
     steps = ", ".join(
         f"{m:.1f} s between {a:.0f} and {b:.0f}"
         for m, a, b in zip(marginal, n[:-1], n[1:], strict=True)
@@ -492,16 +493,15 @@ def cost_findings(cost) -> str:
         f"went from {s[0] / n[0]:.1f} s to {s[-1] / n[-1]:.1f} s, and each added replication "
         f"cost {steps} replications."
     )
-    if len(n) >= 3:
-        slope, intercept = np.polyfit(n, s, 1)
-        off = np.abs(s - (intercept + slope * n)) / s
-        far = n[off.argmax()]
+    if (line := growth["line"]) is not None:
+        far = line["furthest_size"]
         text += (
-            f" A straight line through the {len(n)} measurements has {slope:.1f} s per "
-            f"replication and an intercept of {intercept:.1f} s; the measurement furthest from "
-            f"it is {100 * off.max():.0f}% off (at {far:.0f} replication{'s' if far != 1 else ''})."
+            f" A straight line through the {len(n)} measurements has {line['slope']:.1f} s per "
+            f"replication and an intercept of {line['intercept']:.1f} s; the measurement "
+            f"furthest from it is {100 * line['furthest_offset']:.0f}% off (at {far:.0f} "
+            f"replication{'s' if far != 1 else ''})."
         )
-    change = marginal[-1] / marginal[0] - 1
+    change = growth["change"]
     if len(marginal) < 2:
         text += (
             " Two measurements always lie on a line: it takes three to tell whether the cost "

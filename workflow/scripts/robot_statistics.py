@@ -1,0 +1,18 @@
+"""The robot chapter's statistics beyond the variants' table and effects, to
+data/embodied/statistics.json (``icub_affordance.robot_statistics``)."""
+
+import json
+
+import pandas as pd
+
+from icub_affordance.io import redirect_log, write_text
+from icub_affordance.robot_statistics import robot_statistics
+
+with redirect_log(snakemake.log[0]):
+    statistics = robot_statistics(
+        pd.read_csv(snakemake.input.trials),
+        pd.read_csv(snakemake.input.tolerance),
+        pd.read_csv(snakemake.input.replay),
+    )
+    write_text(snakemake.output[0], json.dumps(statistics, indent=1) + "\n")
+    print(json.dumps(statistics, indent=1))
