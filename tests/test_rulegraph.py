@@ -38,6 +38,21 @@ def test_the_same_graph_in_another_order_gives_the_same_bytes():
     assert '\t0[label = "all"' in canonical_dot(DOT) and "\t2 -> 1" in canonical_dot(DOT)
 
 
+def test_the_drawing_shows_the_direct_needs_in_columns(tmp_path):
+    """The DAG drawn by rule ``rulegraph_figure``: the needs a longer path implies are left out,
+    the rules sit in columns by their needs, and the same graph gives the same PNG."""
+    from icub_workflow.rulegraph_figure import draw_rulegraph, layers, rule_graph
+
+    graph = rule_graph(canonical_dot(DOT))
+    assert sorted(graph.edges) == [("book", "all"), ("train", "book")]  # not train -> all
+    assert layers(graph) == [["train"], ["book"], ["all"]]
+    paths = [tmp_path / "a.png", tmp_path / "b.png"]
+    for path in paths:
+        draw_rulegraph(DOT, path)
+    assert paths[0].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert paths[0].read_bytes() == paths[1].read_bytes()
+
+
 def test_a_text_that_is_no_rule_graph_is_refused():
     with pytest.raises(ValueError, match="no rules"):
         canonical_dot("Building DAG of jobs...\n")

@@ -112,7 +112,7 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         tmp_path, lambda c: c["figures"].update(filmstrip=[["small_ball", "power", 1]])
     )
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
-    assert set(jobs) <= {"demo_filmstrip", "book", "all", "rulegraph"}, jobs
+    assert set(jobs) <= {"demo_filmstrip", "book", "all", "rulegraph", "rulegraph_figure"}, jobs
 
 
 @pytest.mark.slow

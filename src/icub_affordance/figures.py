@@ -112,6 +112,65 @@ def figure2_maps(object_act, task_act, goal_act, objects, tasks, path) -> None:
     save(fig, path)
 
 
+def figure2_architecture(hidden: int, path) -> None:
+    """Figure 2's diagram: the visual input and the task pattern feed the Object and Task maps,
+    which feed the Goal map; the Goal map, the visual input and proprioception feed the Jordan
+    network's ``hidden`` units, whose output (the next posture) is fed back as proprioception."""
+    from matplotlib.patches import FancyArrowPatch, FancyBboxPatch
+
+    fig, ax = plt.subplots(figsize=(8, 4.6))
+    ax.set_xlim(0, 10)
+    ax.set_ylim(0, 6)
+    ax.axis("off")
+    boxes = {
+        "vision": (0.3, 4.6, "visual input\n10 x 10 edge map", "#d9e8f5"),
+        "task": (0.3, 2.6, "task pattern\n(grasp / categorise)", "#f5e6d9"),
+        "object": (3.0, 4.6, "Object SOM\n10 x 10", "#e3f0dc"),
+        "tasksom": (3.0, 2.6, "Task SOM\n10 x 10", "#e3f0dc"),
+        "goal": (5.5, 3.6, "Goal SOM\n10 x 10", "#e3f0dc"),
+        "proprio": (3.0, 0.6, "proprioception\n16 joint angles", "#f0dcee"),
+        "hidden": (7.6, 2.4, f"{hidden} hidden units\n(sigmoid)", "#eeeeee"),
+        "motor": (7.6, 0.4, "16 motor units\n(next posture)", "#eeeeee"),
+    }
+    for x, y, text, colour in boxes.values():
+        ax.add_patch(
+            FancyBboxPatch((x, y), 2.0, 1.0, boxstyle="round,pad=0.05", fc=colour, ec="0.3")
+        )
+        ax.text(x + 1.0, y + 0.5, text, ha="center", va="center", fontsize=8.5)
+
+    def arrow(a, b):
+        (xa, ya, *_), (xb, yb, *_) = boxes[a], boxes[b]
+        ax.add_patch(
+            FancyArrowPatch(
+                (xa + 2.05, ya + 0.5), (xb - 0.05, yb + 0.5),
+                arrowstyle="-|>", mutation_scale=12, color="0.25",
+            )
+        )  # fmt: skip
+
+    for a, b in (("vision", "object"), ("task", "tasksom"), ("object", "goal"),
+                 ("tasksom", "goal"), ("goal", "hidden"), ("proprio", "hidden")):  # fmt: skip
+        arrow(a, b)
+    ax.add_patch(
+        FancyArrowPatch(
+            (2.3, 5.1), (7.55, 3.1), connectionstyle="arc3,rad=-0.25",
+            arrowstyle="-|>", mutation_scale=12, color="0.25",
+        )
+    )  # fmt: skip
+    ax.add_patch(
+        FancyArrowPatch((8.6, 2.35), (8.6, 1.45), arrowstyle="-|>", mutation_scale=12, color="0.25")
+    )
+    ax.add_patch(
+        FancyArrowPatch(
+            (7.55, 0.9), (5.05, 1.1), arrowstyle="-|>", mutation_scale=12, color="C3", ls="--",
+            connectionstyle="arc3,rad=0.0",
+        )
+    )  # fmt: skip
+    ax.text(6.3, 0.55, "Jordan loop: output becomes\nthe next proprioceptive input",
+            fontsize=7.5, color="C3", ha="center")  # fmt: skip
+    fig.tight_layout()
+    save(fig, path)
+
+
 def figure4(curves: list[np.ndarray], phase1: int, path, window: int = 100) -> None:
     """Training RMSE per iteration, averaged over networks (moving average), with its spread."""
     data = np.array(curves)  # (networks, iterations)

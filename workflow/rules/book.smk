@@ -6,6 +6,7 @@ BOOK_DATA = {
     "figure1_eye.png": "data/body/figure1_eye.png",
     "joint_table.csv": "data/body/joint_table.csv",
     "figure2_maps.png": "data/soms/figure2_maps.png",
+    "figure2_architecture.png": "data/figures/figure2_architecture.png",
     "soms.npz": "data/soms/soms.npz",
     "figure3.png": "data/vision/figure3.png",
     "visual_maps.npz": "data/vision/visual_maps.npz",
@@ -17,7 +18,7 @@ BOOK_DATA = {
     "conflict_timecourse.png": "data/figures/conflict_timecourse.png",
     "anova.json": "data/eval/anova.json",
     "cue_difference.json": "data/eval/cue_difference.json",
-    "rulegraph.dot": "data/book/rulegraph.dot",
+    "rulegraph.png": "data/book/rulegraph.png",
     "embodied_analysis.json": "data/embodied/analysis.json",
     "embodied_success.csv": "data/embodied/success.csv",
     "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
@@ -144,6 +145,25 @@ rule rulegraph:
         "../scripts/rulegraph.py"
 
 
+
+rule rulegraph_figure:
+    """The DAG drawn for the book's reproduction page: the rules left to right, each arrow a
+    direct need (plot only)."""
+    input:
+        dot=rules.rulegraph.output[0],
+        code=script_code("rulegraph_figure"),
+    output:
+        "data/book/rulegraph.png",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/rulegraph_figure.log",
+    benchmark:
+        "data/benchmarks/rulegraph_figure.tsv"
+    script:
+        "../scripts/rulegraph_figure.py"
 
 rule findings:
     """Every number, verdict, sentence and table the book shows, from the run's outputs."""

@@ -45,6 +45,26 @@ rule figure2_maps:
         "../scripts/figure2_maps.py"
 
 
+
+rule figure2_architecture:
+    """Figure 2's diagram: the maps and the Jordan network, and what feeds what (plot only)."""
+    input:
+        code=script_code("figure2_architecture"),
+    output:
+        "data/figures/figure2_architecture.png",
+    params:
+        hidden=config["network"]["hidden"],
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/figure2_architecture.log",
+    benchmark:
+        "data/benchmarks/figure2_architecture.tsv"
+    script:
+        "../scripts/figure2_architecture.py"
+
 rule train:
     """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B. One job
     per network for the config's own run (in parallel at the start) and for a run with its own
