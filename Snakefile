@@ -54,6 +54,7 @@ include: "workflow/rules/demos.smk"
 include: "workflow/rules/model.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/readings.smk"
+include: "workflow/rules/size_dose.smk"
 include: "workflow/rules/embodied.smk"
 include: "workflow/rules/statistics.smk"
 include: "workflow/rules/book.smk"
@@ -89,6 +90,9 @@ DEFAULT_OUTPUTS = [
     *(f for row in PLAN.readings for f in reading_files(row["run"])),
     *rules.readings.output,
     *rules.readings_figure.output,
+    *(f for row in PLAN.size_dose for f in reading_files(row["run"])),
+    *rules.size_dose.output,
+    *rules.size_dose_figure.output,
     *rules.cue_difference.output,
     *rules.findings.output,
     *rules.book.output,

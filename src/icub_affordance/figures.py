@@ -469,3 +469,66 @@ def robot_tolerance(tolerance, variants, path) -> None:
     ax.legend(fontsize=7, loc="center right", bbox_to_anchor=(1.0, 0.7))
     fig.tight_layout()
     save(fig, path)
+
+
+def dose_response(summary, replications, manipulation, path) -> None:
+    """The size effect against the dose of size coding: per measure (rows) and cue timing
+    (columns), the mean over replications with its 95% interval (positive: the paper's
+    direction, large lower) and each replication's estimate; the removal control (no size in the
+    input) at the left, apart. Last row: the manipulation check, the large/small ratio of the
+    clusters' units per shape and map."""
+    from .measures import is_null_control
+
+    measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
+    cues = list(dict.fromkeys(summary["cue"]))
+    doses = [d for d in dict.fromkeys(summary["dose"]) if d != "removed"]
+    x = {d: float(d) for d in doses}
+    step = (max(x.values()) - min(x.values())) / max(len(doses) - 1, 1)
+    x["removed"] = min(x.values()) - 1.5 * step
+    fig, axes = plt.subplots(
+        len(measures) + 1, len(cues), figsize=(4.2 * len(cues), 2.4 * (len(measures) + 1)),
+        squeeze=False, sharex=True,
+    )  # fmt: skip
+    for j, cue in enumerate(cues):
+        for i, measure in enumerate(measures):
+            ax = axes[i, j]
+            rows = summary[(summary["cue"] == cue) & (summary["measure"] == measure)]
+            dosed = rows[rows["dose"] != "removed"]
+            xs = [x[d] for d in dosed["dose"]]
+            mean = dosed["diff"].to_numpy(dtype=float)
+            err = np.vstack([mean - dosed["ci_low"], dosed["ci_high"] - mean])
+            ax.errorbar(xs, mean, yerr=err, fmt="o-", color="C0", capsize=3, ms=4)
+            for _, row in rows[rows["dose"] == "removed"].iterrows():
+                ax.errorbar(
+                    [x["removed"]], [row["diff"]],
+                    yerr=[[row["diff"] - row["ci_low"]], [row["ci_high"] - row["diff"]]],
+                    fmt="s", color="C3", capsize=3, ms=5, label="no size (removal)",
+                )  # fmt: skip
+            reps = replications[(replications["cue"] == cue) & (replications["measure"] == measure)]
+            ax.scatter([x[d] for d in reps["dose"]], reps["estimate"], s=6, c="0.45", zorder=3)
+            ax.axhline(0, color="0.3", lw=0.8)
+            ax.set_title(f"{measure}, cue {cue.replace('_', ' ')}", fontsize=9)
+            ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
+            ax.grid(alpha=0.3)
+            if i == 0 and j == 0:
+                ax.legend(fontsize=7, loc="best")
+        ax = axes[-1, j]
+        checks = manipulation[(manipulation["cue"] == cue) & (manipulation["dose"] != "removed")]
+        mean_ratio = checks.groupby(["shape", "map", "dose"], sort=False)["ratio"].mean()
+        for (shape, name), style in zip(
+            [("ball", "object"), ("ball", "goal"), ("cube", "object"), ("cube", "goal")],
+            ["C2-", "C2--", "C1-", "C1--"], strict=True,
+        ):  # fmt: skip
+            ratio = [mean_ratio[(shape, name, d)] for d in doses]
+            ax.plot(
+                [x[d] for d in doses], ratio, style, marker="o", ms=3, label=f"{shape}, {name} map"
+            )
+        ax.axhline(2, color="0.4", lw=0.8, ls=":")
+        ax.set_ylabel("large / small\nactive units", fontsize=8)
+        ax.set_xlabel("dose: cluster width per sqrt(edge cell)")
+        ax.set_xticks([x["removed"], *xs], ["none", *[f"{d:g}" for d in doses]], fontsize=7)
+        ax.grid(alpha=0.3)
+        if j == 0:
+            ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    save(fig, path)

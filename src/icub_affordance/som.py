@@ -34,6 +34,8 @@ class SOMConfig:
     bump_sigma: float  # width of the Task bump, and of the Goal bump when it is fixed, units
     task_pattern_size: int  # length of the random binary task patterns
     goal_response: str  # one of GOAL_RESPONSES: the Goal bump's width fixed or growing
+    #: a growing bump's centre moved off the map's edge so that its cluster stays whole
+    keep_whole: bool = False
 
     def __post_init__(self) -> None:
         if self.goal_response not in GOAL_RESPONSES:
@@ -57,18 +59,39 @@ def train_som(data: np.ndarray, config: SOMConfig, seed: int) -> MiniSom:
 
 
 def bump(grid: int, centre: tuple[int, int], sigma: float) -> np.ndarray:
-    """A Gaussian of the map distance to ``centre``: the activation pattern a map sends on."""
+    """A Gaussian of the map distance to ``centre``: the activation pattern a map sends on. A
+    width of 0 is the winner alone (no size reaches the map's output)."""
+    if sigma <= 0:
+        out = np.zeros((grid, grid))
+        out[tuple(centre)] = 1.0
+        return out
     rows, cols = np.mgrid[0:grid, 0:grid]
     d2 = (rows - centre[0]) ** 2 + (cols - centre[1]) ** 2
     return np.exp(-d2 / (2.0 * sigma**2))
 
 
+def kept_whole(grid: int, centre: tuple[int, int], sigma: float) -> tuple[int, int]:
+    """``centre`` moved towards the middle of the map just far enough that every unit a bump of
+    ``sigma`` lifts above one half lies on the map (a winner at the edge would cut its cluster
+    to a half or a quarter); the middle if the cluster is wider than the map."""
+    radius = sigma * np.sqrt(2.0 * np.log(2.0))  # units above one half: distance < radius
+    reach = max(int(np.ceil(radius)) - 1, 0)
+    low, high = reach, grid - 1 - reach
+    if low > high:
+        return ((grid - 1) // 2, (grid - 1) // 2)
+    return (int(min(max(centre[0], low), high)), int(min(max(centre[1], low), high)))
+
+
 def growing_activation(som: MiniSom, x: np.ndarray, config: SOMConfig) -> np.ndarray:
     """The Object map's rule: a bump at the winner whose width is ``object_width_per_edge`` times
-    the square root of the input's activity (its sum; at least 1)."""
+    the square root of the input's activity (its sum; at least 1); with ``keep_whole``, centred
+    off the map's edge (``kept_whole``)."""
     x = np.asarray(x, dtype=float).ravel()
     width = config.object_width_per_edge * np.sqrt(max(x.sum(), 1.0))
-    return bump(config.grid, som.winner(x), width)
+    centre = som.winner(x)
+    if config.keep_whole:
+        centre = kept_whole(config.grid, centre, width)
+    return bump(config.grid, centre, width)
 
 
 def object_activation(som: MiniSom, visual_map: np.ndarray, config: SOMConfig) -> np.ndarray:

@@ -262,6 +262,15 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             "robot.default. Fix: pick one of them or add it to robot.default."
         )
     yield from _confirmation_problems(config, listed, key)
+    study = config["size_dose"]
+    needed = max(study["replications"], study["robustness_replications"]) - 1
+    if len([seed for seed in study["seeds"] if seed != config["seed"]]) < needed:
+        yield (
+            f"{key('size_dose.seeds')}: {len(study['seeds'])} seeds for "
+            f"{needed + 1} replications (the first at `seed`, which the list may not repeat). "
+            f"Allowed: at least {needed} other seeds. Fix: add seeds or lower "
+            "size_dose.replications / robustness_replications."
+        )
     if 0 not in robot["tolerance"]["noise"]:
         yield (
             f"{key('robot.tolerance.noise')}: {robot['tolerance']['noise']} does not list 0, the "

@@ -26,9 +26,11 @@ OWN = "main"
 #: The settings each shared stage depends on: a run reuses the stage of the first run (in the
 #: plan's order) whose settings for it are equal, so a run that changes only the network reuses
 #: the config's demonstrations and maps, and two sweep points with one seed share theirs.
+_SCENE = ("scene", "objects", "object_sizes_m", "initial_posture_deg")
 STAGE_SETTINGS = {
-    "demos": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "demos"),
-    "soms": ("seed", "scene", "objects", "object_sizes_m", "initial_posture_deg", "vision", "soms"),
+    "maps": (*_SCENE, "vision", "size_free_input"),
+    "demos": ("seed", *_SCENE, "demos"),
+    "soms": ("seed", *_SCENE, "vision", "size_free_input", "soms"),
 }
 
 
@@ -67,6 +69,8 @@ class RunPlan:
     robot_variants: list[dict[str, Any]]
     #: one row per confirmed variant: its keys, its exploration run and its confirmation run
     confirmation: list[dict[str, Any]]
+    #: one row per dose (or "removed"), cue timing and replication: dose, cue, seed, run
+    size_dose: list[dict[str, Any]]
     robustness: bool
 
     # ---- where a run's files live (the one place that knows) ----------------------------------
@@ -173,6 +177,7 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
     readings = _readings(config, planner)
     variants = _robot_variants(config, planner)
     confirmation = _confirmation(config, planner, variants)
+    size_dose = _size_dose(config, planner)
     return RunPlan(
         runs=planner.runs,
         configured=[*config["runs"], ablation],
@@ -181,6 +186,7 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
         readings=readings,
         robot_variants=variants,
         confirmation=confirmation,
+        size_dose=size_dose,
         robustness=bool(config["robustness"]),
     )
 
@@ -278,4 +284,29 @@ def _confirmation(
         overrides = {"network": variant.network(network) | fresh}
         run = planner.add(f"{explored['run']}_confirm", overrides, "confirmation")
         table.append(variant.row() | {"exploration": explored["run"], "confirmation": run})
+    return table
+
+
+def _size_dose(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
+    """The dose study (config ``size_dose``): every dose under every cue timing, replicated at the
+    config's seed and the first of ``size_dose.seeds``; and, with ``removal``, the control with
+    no size in the input. A dose is the Object and Goal maps' width per sqrt(edge cell), the Goal
+    map growing, the clusters kept whole."""
+    study = config["size_dose"]
+    count = study["robustness_replications" if config["robustness"] else "replications"]
+    seeds = [config["seed"], *(s for s in study["seeds"] if s != config["seed"])][:count]
+    doses: list[Any] = [*study["doses"], *(["removed"] if study["removal"] else [])]
+    table = []
+    for cue, dose, seed in itertools.product(study["categorisation_cue"], doses, seeds):
+        if dose == "removed":
+            overrides: dict[str, Any] = {"size_free_input": True}
+            name = f"size_removed_{cue}"
+        else:
+            grows = {"object_width_per_edge": dose, "goal_response": "grows", "keep_whole": True}
+            overrides = {"soms": grows}
+            name = f"size_dose{dose}_{cue}"
+        overrides |= {"seed": seed, "network": {"categorisation_cue": cue}}
+        name += "" if seed == config["seed"] else f"_seed{seed}"
+        run = planner.find_or_add(name, overrides, "size_dose")
+        table.append({"dose": dose, "cue": cue, "seed": seed, "run": run})
     return table

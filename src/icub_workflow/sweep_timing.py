@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import copy
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -150,8 +151,14 @@ def time_sweep(
         for made in ("runs", "sweep"):
             shutil.rmtree(work / "data" / made, ignore_errors=True)
         # what is timed must be the sweep and nothing else
-        plan = planned_jobs(_snakemake(cmd[:-1] + ["-n"], work, what))
-        others = sorted(rule for rule in plan if not rule.startswith(("sweep", "run_")))
+        dry_run = _snakemake(cmd[:-1] + ["-n"], work, what)
+        plan = planned_jobs(dry_run)
+        others = sorted(
+            path
+            for line in re.findall(r"^\s+output: (.*)$", dry_run, re.M)
+            for path in line.split(", ")
+            if not path.startswith(("data/runs/", "data/sweep/"))
+        )
         if others or not plan.get("run_train"):
             raise RuntimeError(
                 f"{what}: the scratch run would run {plan}, not only the sweep's rules "

@@ -100,11 +100,19 @@ def run_section(section):
     return lambda wildcards: settings(PLAN.config(run_of(wildcards))[section])
 
 
+def maps_file(run):
+    """The visual maps a run's SOMs and networks see: the eye's (rule visual_maps), or, for a
+    run with size_free_input, those maps made size-free (rule size_free_maps)."""
+    if PLAN.config(run)["size_free_input"]:
+        return PLAN.path(PLAN.stage_run(run, "maps"), "vision/size_free_maps.npz")
+    return "data/vision/visual_maps.npz"
+
+
 def model_inputs(wildcards):
     """What the networks of a run learn from: the visual maps, its SOMs and its demonstrations."""
     run = run_of(wildcards)
     return {
-        "maps": "data/vision/visual_maps.npz",
+        "maps": maps_file(run),
         "soms": PLAN.path(PLAN.stage_run(run, "soms"), "soms/soms.npz"),
         "demos": PLAN.path(PLAN.stage_run(run, "demos"), "demos/demos.npz"),
     }
@@ -159,6 +167,8 @@ def run_files(run, tests=True):
     as the error says) intermediate file would otherwise stay missing after a green run.
     """
     files = []
+    if PLAN.makes(run, "maps") and PLAN.config(run)["size_free_input"]:
+        files += outputs("size_free_maps", run)
     if PLAN.makes(run, "demos"):
         if PLAN.jobs_per_network(run):
             files += outputs("demos_object", run, object=config["objects"]) + outputs("demos", run)

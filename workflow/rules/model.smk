@@ -6,7 +6,7 @@
 rule soms:
     """Train the Object, Task and Goal maps offline and save what they send to the network."""
     input:
-        maps=rules.visual_maps.output.maps,
+        maps=lambda wildcards: maps_file(run_of(wildcards)),
         code=script_code("soms"),
     output:
         "data/{folder}soms/soms.npz",

@@ -26,6 +26,7 @@ from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS
 from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
+from icub_workflow.runs import OWN
 
 from . import text
 
@@ -456,7 +457,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "n_hidden": config["network"]["hidden"],
     }
     # the config's own networks' robot effects, over distinct trials (effects.json's main run)
-    out |= _robot_values(emb, _json(inputs["robot_effects.json"])["main"])
+    out |= _robot_values(emb, _json(inputs["robot_effects.json"])[OWN])
 
     # the cue ablation: which reading of the paper's cue gives the effect
     main_cue = config["network"]["categorisation_cue"]
@@ -790,7 +791,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     tolerance = record_table(robot_stats["tolerance"])
     tolerated = science.tolerated_noise(tolerance)
     exact = tolerance[tolerance["noise"] == 0].iloc[0]  # config checks: noise 0 is listed
-    own = variants[variants["run"] == "main"].iloc[0]
+    own = variants[variants["run"] == OWN].iloc[0]
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
     animated = config["robot"]["animation"]["variant"]
@@ -910,7 +911,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             "mean plan, arm offset": record_table(bins["tolerance"]),
             "demonstrations replayed": record_table(bins["replay"]),
             f"best variant ({_variant_label(best)})": record_table(bins["runs"][best["run"]]),
-            "config's own networks": record_table(bins["runs"]["main"]),
+            "config's own networks": record_table(bins["runs"][OWN]),
         }
     )
     return out, {

@@ -1,0 +1,88 @@
+# What drives the size effect (config `size_dose`; the book's chapter of that name): a dose of
+# size coding, each dose a run replicated with fresh seeds (common.smk: PLAN.size_dose), the
+# removal control without size in the input, and the dose-response.
+
+
+rule size_free_maps:
+    """A run's visual input without size (config size_free_input): each object's map replaced
+    by its shape's mean map."""
+    input:
+        maps=rules.visual_maps.output.maps,
+        code=script_code("size_free_maps"),
+    output:
+        "data/{folder}vision/size_free_maps.npz",
+    params:
+        objects=settings(config["objects"]),
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/{folder}size_free_maps.log",
+    benchmark:
+        "data/benchmarks/{folder}size_free_maps.tsv"
+    script:
+        "../scripts/size_free_maps.py"
+
+
+_REMOVED = [row for row in PLAN.size_dose if row["dose"] == "removed"]
+
+
+rule size_dose:
+    """The dose-response of the size effect: per dose, cue timing and measure, the effect over
+    whole replications with the manipulation check's ratios; its slope on the dose per cue
+    timing and measure; and, on the removal control, whether the demonstrations' geometry
+    accounts for each object's error."""
+    input:
+        measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose],
+        soms=[
+            PLAN.path(PLAN.stage_run(row["run"], "soms"), "soms/soms.npz")
+            for row in PLAN.size_dose
+        ],
+        removal_trials=[PLAN.path(row["run"], "eval/measures.csv") for row in _REMOVED],
+        removal_demos=[
+            PLAN.path(PLAN.stage_run(row["run"], "demos"), "demos/demos.npz") for row in _REMOVED
+        ],
+        code=script_code("size_dose"),
+    output:
+        summary="data/size_dose/summary.csv",
+        slope="data/size_dose/slope.csv",
+        replications="data/size_dose/replications.csv",
+        manipulation="data/size_dose/manipulation.csv",
+        geometry="data/size_dose/geometry.csv",
+        motor="data/size_dose/motor.csv",
+    params:
+        table=PLAN.size_dose,
+        measures=config["readings"]["measures"],
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    log:
+        "data/logs/size_dose/summary.log",
+    benchmark:
+        "data/benchmarks/size_dose/summary.tsv"
+    script:
+        "../scripts/size_dose.py"
+
+
+rule size_dose_figure:
+    """The size effect against the dose, per cue timing and measure, with the manipulation
+    check (plot only)."""
+    input:
+        summary=rules.size_dose.output.summary,
+        replications=rules.size_dose.output.replications,
+        manipulation=rules.size_dose.output.manipulation,
+        code=script_code("size_dose_figure"),
+    output:
+        "data/size_dose/dose_response.png",
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=5,
+    log:
+        "data/logs/size_dose/figure.log",
+    benchmark:
+        "data/benchmarks/size_dose/figure.tsv"
+    script:
+        "../scripts/size_dose_figure.py"

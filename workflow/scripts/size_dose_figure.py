@@ -1,0 +1,22 @@
+"""The size effect against the dose, with the manipulation check (plot only)."""
+
+import pandas as pd
+
+from icub_affordance.figures import dose_response
+from icub_affordance.io import redirect_log
+
+
+def read(path: str) -> pd.DataFrame:
+    """A study table, its doses as numbers but the removal control's "removed"."""
+    frame = pd.read_csv(path, keep_default_na=False)
+    frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
+    return frame
+
+
+with redirect_log(snakemake.log[0]):
+    dose_response(
+        read(snakemake.input.summary),
+        read(snakemake.input.replications),
+        read(snakemake.input.manipulation),
+        snakemake.output[0],
+    )
