@@ -41,6 +41,11 @@ BOOK_DATA = {
     "robot_confirmation.csv": "data/embodied/confirmation.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
+    "size_summary.csv": "data/size_dose/summary.csv",
+    "size_slope.csv": "data/size_dose/slope.csv",
+    "size_manipulation.csv": "data/size_dose/manipulation.csv",
+    "size_motor.csv": "data/size_dose/motor.csv",
+    "size_dose_response.png": "data/size_dose/dose_response.png",
 } | {
     f"curves/net{net}.csv": f"data/train/net{net}/curve.csv" for net in NETWORKS
 }
@@ -89,6 +94,10 @@ FINDINGS_READS = [
     "robot_effects.json",
     "robot_statistics.json",
     "robot_confirmation.csv",
+    "size_summary.csv",
+    "size_slope.csv",
+    "size_manipulation.csv",
+    "size_motor.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
@@ -107,13 +116,16 @@ FINDINGS_TABLES = [
     "robot_effects",
     "robot_tolerance",
     "robot_palm",
+    "size_summary",
+    "size_slope",
+    "size_motor",
 ]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
     FINDINGS_TABLES += ["sweep"]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
-    "robot",
+    "robot", "size_dose",
 ]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES

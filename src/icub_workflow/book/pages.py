@@ -1012,6 +1012,95 @@ def notes(config: dict) -> dict:
     }
 
 
+def _study_table(path: str) -> pd.DataFrame:
+    """A size-study table with its doses as numbers (the removal control's stay "removed")."""
+    frame = pd.read_csv(path, keep_default_na=False)
+    if "dose" in frame:
+        frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
+    return frame
+
+
+def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """The chapter "What drives the size effect": the doses, the manipulation check at the
+    largest dose, per cue timing the effect at the largest dose, without size, and the slope on
+    the dose (the paper's RMSE), the demonstrations' account of the errors, and the tables."""
+    summary = _study_table(inputs["size_summary.csv"])
+    slope = pd.read_csv(inputs["size_slope.csv"])
+    checks = _study_table(inputs["size_manipulation.csv"])
+    try:
+        motor = pd.read_csv(inputs["size_motor.csv"])
+    except pd.errors.EmptyDataError:  # no removal control in this build
+        motor = pd.DataFrame()
+    study = config["size_dose"]
+    top = max(study["doses"])
+    at_top = checks[checks["dose"] == top]
+    values: dict = {
+        "doses": ", ".join(f"{d:g}" for d in study["doses"]),
+        "top_dose": f"{top:g}",
+        "replications": int(summary["replications"].max()),
+        "n_runs": int(len(checks) // 4),
+    }
+    for shape in ("ball", "cube"):
+        for name in ("object", "goal"):
+            rows = at_top[(at_top["shape"] == shape) & (at_top["map"] == name)]
+            values[f"ratio_{name}_{shape}"] = f"{rows['ratio'].min():.1f}"
+    ratios = [float(values[f"ratio_goal_{shape}"]) for shape in ("ball", "cube")]
+    claims: dict = {
+        "claim_check": text.Claim(
+            "The dose arrived: at the largest dose the Goal map's large cluster has at least "
+            "twice the small one's units for both shapes."
+            if min(ratios) >= 2
+            else "The dose did not fully arrive: at the largest dose the Goal map's large "
+            "cluster has less than twice the small one's units for at least one shape.",
+            ("size.ratio_goal_ball", "size.ratio_goal_cube"),
+        )
+    }
+    for cue in study["categorisation_cue"]:
+        rmse = summary[(summary["cue"] == cue) & (summary["measure"] == "rmse")]
+        for key, dose in (("top", top), ("removed", "removed"), ("none", min(study["doses"]))):
+            rows = rmse[rmse["dose"] == dose]
+            if rows.empty:
+                continue
+            row = rows.iloc[0]
+            values[f"{key}_diff_{cue}"] = float(row["diff"])
+            values[f"{key}_p_{cue}"] = float(row["p"])
+            what = {
+                "top": f"At the largest dose ({top:g})",
+                "removed": "Without any size in the input (the removal control)",
+                "none": "With no size on the maps (dose 0, the visual input unchanged)",
+            }[key]
+            claims[f"claim_{key}_{cue}"] = text.size_dose_claim(row, cue, key, what)
+        fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")].iloc[0]
+        values[f"slope_{cue}"] = float(fit["slope"])
+        values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
+        claims[f"claim_slope_{cue}"] = text.size_slope_claim(fit, cue)
+    if len(motor):
+        for _, row in motor.iterrows():
+            values[f"motor_p_holm_{row['cue']}_{row['geometry']}"] = float(row["p_holm"])
+        claims["claim_motor"] = text.size_motor_claim(motor)
+    shown = summary.copy()
+    shown["dose"] = [d if d == "removed" else f"{d:g}" for d in shown["dose"]]
+    for column in ("diff", "ci_low", "ci_high", "relative_to_mean"):
+        shown[column] = shown[column].map(lambda v: f"{v:+.4f}")
+    shown["p"] = shown["p"].map(text.fmt_p)
+    for column in ("large_small_ratio_object", "large_small_ratio_goal"):
+        shown[column] = shown[column].map(lambda v: f"{v:.2f}")
+    fits = slope.copy()
+    for column in ("slope", "ci_low", "ci_high"):
+        fits[column] = fits[column].map(lambda v: f"{v:+.4f}")
+    for column in ("p", "p_holm"):
+        fits[column] = fits[column].map(lambda v: "" if not np.isfinite(v) else text.fmt_p(v))
+    tables = {"size_summary": shown.drop(columns=["df"]), "size_slope": fits}
+    shown_motor = motor.copy()
+    if len(motor):
+        for column in ("estimate", "ci_low", "ci_high"):
+            shown_motor[column] = shown_motor[column].map(lambda v: f"{v:+.4f}")
+        for column in ("p", "p_holm"):
+            shown_motor[column] = shown_motor[column].map(text.fmt_p)
+    tables["size_motor"] = shown_motor
+    return values | claims, tables
+
+
 def page_findings(
     inputs: Mapping[str, str], config: dict, ablation_cue: str
 ) -> tuple[dict[str, dict], dict[str, pd.DataFrame]]:
@@ -1030,6 +1119,7 @@ def page_findings(
     robustness_values, sweep_table = robustness(inputs, config)
     readings_values, readings_tables = readings(inputs, config)
     grasping_values, grasping_tables = grasping(inputs, config)
+    size_values, size_tables = size_study(inputs, config)
     pages = {
         "intro": intro(anova),
         "results": results(anova, curve, config["network"]["categorisation_cue"]),
@@ -1043,6 +1133,7 @@ def page_findings(
         "robot": robot(inputs),
         "architecture": architecture(inputs, config),
         "notes": notes(config),
+        "size": size_values,
     }
     tables = (
         {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
@@ -1054,6 +1145,7 @@ def page_findings(
         }
         | readings_tables
         | grasping_tables
+        | size_tables
     )
     if sweep_table is not None:
         tables["sweep"] = sweep_table
