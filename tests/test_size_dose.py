@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import load_config, som_config
+from conftest import load_config, load_test_config, som_config
 from scipy import stats as sps
 
 from icub_affordance.size_dose import (
@@ -175,3 +175,31 @@ def test_the_plan_makes_a_run_per_dose_cue_and_replication():
     assert config["seed"] in seeds and len(seeds) == study["replications"]
     robust = plan_runs(config | {"robustness": True})
     assert len({row["seed"] for row in robust.size_dose}) == study["robustness_replications"]
+
+
+# ---- the study in the built test pipeline --------------------------------------------------------
+
+
+def test_the_study_writes_its_contract_and_the_dose_arrives(built):
+    """data/size_dose/: one summary row per cue timing, measure and dose (and the removal
+    control), a slope per cue timing and measure, the figure; at the largest dose the Goal map's
+    large cluster has at least twice the small one's units, for each shape and replication."""
+    folder = built / "data" / "size_dose"
+    summary = pd.read_csv(folder / "summary.csv", keep_default_na=False)
+    contract = ["dose", "cue", "measure", "replications", "large_small_ratio_object",
+                "large_small_ratio_goal", "diff", "ci_low", "ci_high"]  # fmt: skip
+    assert summary.columns[: len(contract)].tolist() == contract
+    config = load_test_config()["size_dose"]
+    doses = {str(float(d)) for d in config["doses"]} | {"removed"}
+    assert set(summary["dose"].astype(str)) == doses
+    assert (summary["replications"] == config["replications"]).all()
+    slope = pd.read_csv(folder / "slope.csv")
+    assert {"cue", "measure", "slope", "ci_low", "ci_high", "p"} <= set(slope.columns)
+    assert len(slope) == len(set(zip(summary["cue"], summary["measure"], strict=True)))
+    checks = pd.read_csv(folder / "manipulation.csv", keep_default_na=False)
+    top = checks[checks["dose"].astype(str) == str(float(max(config["doses"])))]
+    goal = top[top["map"] == "goal"]
+    assert set(goal["shape"]) == {"ball", "cube"} and (goal["ratio"] >= 2).all(), goal
+    removed = checks[checks["dose"] == "removed"]
+    assert (removed["ratio"] == 1).all()  # no size: equal clusters
+    assert (folder / "dose_response.png").stat().st_size > 10_000
