@@ -123,6 +123,10 @@ def test_the_summary_tests_each_dose_over_replications_and_carries_the_check():
     assert row["p"] == pytest.approx(sps.ttest_1samp(estimates, 0.0).pvalue)
     assert row["large_small_ratio_goal"] == 2.0 and row["replications"] == 3
     assert row["relative_to_mean"] == pytest.approx(estimates.mean() / 0.1)
+    from statsmodels.stats.multitest import multipletests
+
+    holm = multipletests(out["p"].to_numpy(dtype=float), method="holm")[1]
+    np.testing.assert_allclose(out["p_holm"].to_numpy(dtype=float), holm)
 
 
 def test_the_demonstrations_geometry_by_hand():

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 
 from .measures import analysed, is_null_control
-from .readings import over_replications
+from .readings import holm_hypotheses, over_replications
 from .som import active_units
 from .spec import OBJECTS, TASKS
 from .stats import holm, t_term
@@ -46,6 +46,7 @@ SUMMARY_COLUMNS = [
     "ci_high",
     "df",
     "p",
+    "p_holm",
     "relative_to_mean",
 ]
 
@@ -130,8 +131,9 @@ def replication_rows(
 
 def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     """One row per cue timing, measure and dose (SUMMARY_COLUMNS): the size effect over the
-    replications (``readings.over_replications``: their mean, a t-interval over them), the
-    effect relative to the measure's mean, and the manipulation check's mean ratios."""
+    replications (``readings.over_replications``: their mean, a t-interval over them), Holm's p
+    over the table's hypotheses (a null control's rows are not), the effect relative to the
+    measure's mean, and the manipulation check's mean ratios."""
     ratios = checks.groupby(["dose", "cue", "map"], sort=False)["ratio"].mean()
     rows = []
     for (cue, measure, dose), group in replications.groupby(["cue", "measure", "dose"], sort=False):
@@ -143,7 +145,9 @@ def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
              "relative_to_mean": test["diff"] / float(group["cell_mean"].mean())}
             | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p")}
         )  # fmt: skip
-    return pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+    out = pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+    out["p_holm"] = holm_hypotheses(out) if len(out) else []
+    return out
 
 
 def slopes(replications: pd.DataFrame) -> pd.DataFrame:

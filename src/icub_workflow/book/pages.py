@@ -1063,13 +1063,15 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
                 continue
             row = rows.iloc[0]
             values[f"{key}_diff_{cue}"] = float(row["diff"])
-            values[f"{key}_p_{cue}"] = float(row["p"])
+            values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
             what = {
                 "top": f"At the largest dose ({top:g})",
                 "removed": "Without any size in the input (the removal control)",
                 "none": "With no size on the maps (dose 0, the visual input unchanged)",
             }[key]
             claims[f"claim_{key}_{cue}"] = text.size_dose_claim(row, cue, key, what)
+            if key == "removed":
+                claims[f"claim_source_{cue}"] = text.size_removal_claim(row, cue)
         fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")].iloc[0]
         values[f"slope_{cue}"] = float(fit["slope"])
         values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
@@ -1083,6 +1085,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     for column in ("diff", "ci_low", "ci_high", "relative_to_mean"):
         shown[column] = shown[column].map(lambda v: f"{v:+.4f}")
     shown["p"] = shown["p"].map(text.fmt_p)
+    shown["p_holm"] = shown["p_holm"].map(lambda v: "" if not np.isfinite(v) else text.fmt_p(v))
     for column in ("large_small_ratio_object", "large_small_ratio_goal"):
         shown[column] = shown[column].map(lambda v: f"{v:.2f}")
     fits = slope.copy()
