@@ -75,9 +75,14 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
     path = changed_config(tmp_path, lambda c: c["network"].update(learning_rate=0.05))
     plan = run_snakemake(built, "-n", config=path)
     jobs = planned_jobs(plan.stdout)
-    n_nets = load_test_config()["network"]["networks"]
+    config = load_test_config()
+    confirmation = config["robot"]["confirmation"]
+    # a job per network: the main run's and the confirmation's fresh ones
+    n_nets = config["network"]["networks"] + confirmation["networks"]
     assert jobs.get("train") == n_nets
-    for rule in ("evaluate", "stats", "figure4", "figure5", "book"):
+    for rule in ("evaluate", "stats", "figure5"):  # the main run and the cue ablation
+        assert jobs.get(rule) == 2, (rule, jobs)
+    for rule in ("figure4", "book"):
         assert jobs.get(rule) == 1, (rule, jobs)
     for rule in ("demos_object", "visual_maps", "soms", "body_figure", "demos"):
         assert rule not in jobs, (rule, jobs)

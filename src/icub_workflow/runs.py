@@ -167,6 +167,9 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
     for name, overrides in config["runs"].items():
         planner.add(name, overrides, "configured")
     ablation = planner.add(*_ablation(config), "ablation")
+    # the size study before the sweep: its replications' demonstrations live in its own folders
+    # (a sweep point, a target of its own, may reuse them, not the other way round)
+    size_dose = _size_dose(config, planner)
     sweep = {}
     for name, overrides in _sweep(config):
         planner.add(name, overrides, "sweep")
@@ -177,7 +180,6 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
     readings = _readings(config, planner)
     variants = _robot_variants(config, planner)
     confirmation = _confirmation(config, planner, variants)
-    size_dose = _size_dose(config, planner)
     return RunPlan(
         runs=planner.runs,
         configured=[*config["runs"], ablation],

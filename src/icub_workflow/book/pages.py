@@ -1043,8 +1043,8 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     for shape in ("ball", "cube"):
         for name in ("object", "goal"):
             rows = at_top[(at_top["shape"] == shape) & (at_top["map"] == name)]
-            values[f"ratio_{name}_{shape}"] = f"{rows['ratio'].min():.1f}"
-    ratios = [float(values[f"ratio_goal_{shape}"]) for shape in ("ball", "cube")]
+            values[f"ratio_{name}_{shape}"] = float(rows["ratio"].min())
+    ratios = [values[f"ratio_goal_{shape}"] for shape in ("ball", "cube")]
     claims: dict = {
         "claim_check": text.Claim(
             "The dose arrived: at the largest dose the Goal map's large cluster has at least "
