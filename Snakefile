@@ -105,3 +105,25 @@ rule all:
     default_target: True
     input:
         DEFAULT_OUTPUTS,
+
+
+# The paper's own model alone: its figures, its ANOVA and the config's own run's files, without
+# the work beyond the paper (the readings, the robot, the size study, the book). A fast loop:
+# a change to a paper hyperparameter reruns only the config's own run.
+PAPER_OUTPUTS = [
+    *run_files(OWN),
+    *outputs("measures", OWN),
+    *rules.body_figure.output,
+    *rules.visual_maps.output,
+    *rules.figure3.output,
+    *rules.demo_filmstrip.output,
+    *rules.figure2_maps.output,
+    *rules.figure2_architecture.output,
+    *rules.figure4.output,
+]
+
+
+rule paper:
+    """Target: the paper's own model, its figures and its ANOVA (snakemake -c2 paper)."""
+    input:
+        PAPER_OUTPUTS,

@@ -216,3 +216,18 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     assert list(table["run"]) == [explored, run]
     assert list(table["networks"]) == [config["network"]["networks"], count]
     assert list(table["trials"]) == [4 * config["network"]["networks"], 4 * count]
+
+
+@pytest.mark.slow  # runs Snakemake
+def test_the_paper_target_makes_the_papers_model_alone(tmp_path):
+    """`snakemake paper`: the config's own run (demonstrations, maps, 12 networks, tests, ANOVA,
+    Figures 1-5), nothing of the other runs, the robot, the readings, the size study or the
+    book."""
+    workdir = scratch_workflow(tmp_path / "w")
+    config = REPO / "config" / "config.yaml"
+    jobs = planned(run_snakemake(workdir, "-n", "paper", config=config))
+    assert jobs.pop("train") == 12 and jobs.pop("demos_object") == 4
+    expected = {"visual_maps", "body_figure", "figure3", "demos", "demo_filmstrip", "soms",
+                "figure2_maps", "figure2_architecture", "evaluate", "stats", "figure4",
+                "figure5", "measures", "paper"}  # fmt: skip
+    assert set(jobs) == expected and all(count == 1 for count in jobs.values()), jobs
