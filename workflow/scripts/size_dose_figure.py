@@ -8,7 +8,7 @@ from icub_affordance.io import redirect_log
 
 def read(path: str) -> pd.DataFrame:
     """A study table, its doses as numbers but the removal control's "removed"."""
-    frame = pd.read_csv(path, keep_default_na=False)
+    frame = pd.read_csv(path)
     frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
     return frame
 

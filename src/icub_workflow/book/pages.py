@@ -1014,7 +1014,7 @@ def notes(config: dict) -> dict:
 
 def _study_table(path: str) -> pd.DataFrame:
     """A size-study table with its doses as numbers (the removal control's stay "removed")."""
-    frame = pd.read_csv(path, keep_default_na=False)
+    frame = pd.read_csv(path)
     if "dose" in frame:
         frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
     return frame
