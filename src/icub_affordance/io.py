@@ -103,6 +103,30 @@ def load_npz(path: str | os.PathLike[str], required: tuple[str, ...] = ()) -> di
     return arrays
 
 
+def write_columns(path: str | os.PathLike[str], columns: dict[str, list], digits: int = 6) -> None:
+    """Columns of a table (name -> values, each a list of the same length) as CSV, atomically:
+    the bytes :func:`write_csv` writes for the same rows, a line per row joined at once rather
+    than through the csv module (a long learning curve is a few seconds faster). A table with
+    text that the csv module would quote is handed to :func:`write_csv`."""
+    import math
+
+    names = list(columns)
+    values = [list(columns[name]) for name in names]
+    quoted = (",", '"', "\n", "\r")
+    if any(isinstance(v, str) and any(q in v for q in quoted) for c in values for v in c):
+        write_csv(
+            path, [dict(zip(names, row, strict=True)) for row in zip(*values, strict=True)], digits
+        )
+        return
+
+    def cells(column: list) -> list[str]:
+        return ["" if isinstance(v, float) and math.isnan(v) else f"{v:.{digits}f}"
+                if isinstance(v, float) else str(v) for v in column]  # fmt: skip
+
+    lines = [",".join(names), *map(",".join, zip(*map(cells, values), strict=True))]
+    write_text(path, "\n".join(lines) + "\n")
+
+
 def write_csv(path: str | os.PathLike[str], rows: list[dict[str, object]], digits: int = 6) -> None:
     """Rows of a table as CSV, atomically, as pandas would write them with
     ``float_format=f"%.{digits}f"`` (NaN empty): for jobs too short to pay for importing pandas."""

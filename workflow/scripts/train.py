@@ -4,7 +4,7 @@ another (rule run_train: the outputs list them in order)."""
 
 import numpy as np
 
-from icub_affordance.io import redirect_log, save_npz, write_csv
+from icub_affordance.io import redirect_log, save_npz, write_columns
 from icub_affordance.spec import TASKS
 from icub_affordance.train import (
     TrainConfig,
@@ -14,21 +14,21 @@ from icub_affordance.train import (
     train_network,
 )
 
-COLUMNS = ("iteration", "phase", "task", "object", "sequence", "rmse")
-
 
 def as_list(paths):
     return [paths] if isinstance(paths, str) else list(paths)
 
 
-def curve_rows(curve, objects):
-    return [
-        dict(zip(COLUMNS, (i, phase, TASKS[task], objects[obj], seq, rmse), strict=True))
-        for i, phase, task, obj, seq, rmse in zip(
-            curve["iteration"], curve["phase"], curve["task"], curve["object"],
-            curve["sequence"], curve["rmse"].tolist(), strict=True,
-        )
-    ]  # fmt: skip
+def curve_columns(curve, objects):
+    """The learning curve's table, column by column: one row per iteration."""
+    return {
+        "iteration": curve["iteration"].tolist(),
+        "phase": curve["phase"].tolist(),
+        "task": [TASKS[task] for task in curve["task"].tolist()],
+        "object": [objects[obj] for obj in curve["object"].tolist()],
+        "sequence": curve["sequence"].tolist(),
+        "rmse": curve["rmse"].tolist(),
+    }
 
 
 with redirect_log(snakemake.log[0]):
@@ -58,8 +58,8 @@ with redirect_log(snakemake.log[0]):
                 f"network {net:02d}: its training error became NaN (the outputs diverged). "
                 "Lower config network.learning_rate or network.init_scale."
             )
-        rows = curve_rows(curve, materials.objects)
-        write_csv(curve_path, rows)  # not pandas: a training job is short
+        # not pandas: a training job is short
+        write_columns(curve_path, curve_columns(curve, materials.objects))
         save_npz(weights_path, **weights.as_dict())
         final = curve["rmse"][-500:].mean()
         print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
