@@ -181,7 +181,7 @@ def test_the_plan_makes_a_run_per_dose_cue_and_replication():
     assert len({row["seed"] for row in robust.size_dose}) == study["robustness_replications"]
 
 
-# ---- the study in the built test pipeline --------------------------------------------------------
+# ---- the study in the built test pipeline -----------------------------------------------------
 
 
 def test_the_study_writes_its_contract_and_the_dose_arrives(built):
@@ -207,3 +207,51 @@ def test_the_study_writes_its_contract_and_the_dose_arrives(built):
     removed = checks[checks["dose"] == "removed"]
     assert (removed["ratio"] == 1).all()  # no size: equal clusters
     assert (folder / "dose_response.png").stat().st_size > 10_000
+
+
+# ---- the chapter's sentences follow their tests ---------------------------------------------
+
+
+def test_the_size_sentences_follow_their_holm_verdicts():
+    from icub_workflow.book import text
+
+    row = {"diff": -0.03, "ci_low": -0.05, "ci_high": -0.01, "p": 0.001, "p_holm": 0.01,
+           "replications": 3}  # fmt: skip
+    assert "reversed" in text.size_dose_claim(row, "first_step", "top", "At 0.6").text
+    assert (
+        "paper's direction"
+        in text.size_dose_claim(
+            row | {"diff": 0.03, "ci_low": 0.01, "ci_high": 0.05}, "first_step", "top", "At 0.6"
+        ).text
+    )
+    # a raw p under 0.05 that Holm lifts above it: not detected, whatever the raw interval
+    said = text.size_dose_claim(row | {"p": 0.01, "p_holm": 0.2}, "all_steps", "top", "At 0.6")
+    assert "not detected after Holm" in said.text and "reversed" not in said.text
+    assert said.rests_on == ("size.top_diff_all_steps", "size.top_p_holm_all_steps")
+    source = text.size_removal_claim(row, "first_step").text
+    assert "motor side" in source
+    assert "cannot say" in text.size_removal_claim(row | {"p_holm": 0.3}, "first_step").text
+    slope = {"slope": -0.05, "ci_low": -0.09, "ci_high": -0.01, "df": 2, "p": 0.03,
+             "p_holm": 0.01, "replications": 3}  # fmt: skip
+    assert "away from the paper's" in text.size_slope_claim(slope, "all_steps").text
+    assert "towards the paper's" in text.size_slope_claim(slope | {"slope": 0.05}, "all_steps").text
+    assert "no trend" in text.size_slope_claim(slope | {"p_holm": 0.3}, "all_steps").text
+
+
+def test_the_motor_sentence_names_only_what_survives_holm():
+    from icub_workflow.book import text
+
+    motor = pd.DataFrame(
+        [
+            {"cue": "all_steps", "geometry": "demo_path_length", "estimate": 0.01,
+             "networks": 36, "p_holm": 0.001},
+            {"cue": "all_steps", "geometry": "demo_spread", "estimate": 0.02, "networks": 36,
+             "p_holm": 0.4},
+        ]
+    )  # fmt: skip
+    said = text.size_motor_claim(motor).text
+    assert "path" in said and "spread" not in said
+    assert (
+        "none of the demonstrations' measures"
+        in text.size_motor_claim(motor.assign(p_holm=0.5)).text
+    )
