@@ -149,8 +149,8 @@ def test_an_error_that_follows_the_path_length_is_found():
             for k, obj in enumerate(OBJECTS):
                 length = [1.0, 0.4, 1.3, 0.7][k]
                 rows.append(
-                    {"cue": "first_step", "seed": seed, "network": net, "object": obj,
-                     "rmse": 0.05 + 0.04 * length + rng.normal(0, 0.002),
+                    {"dose": "removed", "cue": "first_step", "seed": seed, "network": net,
+                     "object": obj, "rmse": 0.05 + 0.04 * length + rng.normal(0, 0.002),
                      "demo_path_length": length, "demo_spread": rng.uniform(0, 1),
                      "demo_grip_distance": [0.2, 0.2, 0.5, 0.5][k]}
                 )  # fmt: skip
@@ -243,15 +243,14 @@ def test_the_motor_sentence_names_only_what_survives_holm():
 
     motor = pd.DataFrame(
         [
-            {"cue": "all_steps", "geometry": "demo_path_length", "estimate": 0.01,
-             "networks": 36, "p_holm": 0.001},
-            {"cue": "all_steps", "geometry": "demo_spread", "estimate": 0.02, "networks": 36,
-             "p_holm": 0.4},
+            {"dose": "removed", "cue": "all_steps", "geometry": "demo_path_length",
+             "estimate": 0.01, "networks": 36, "p_holm": 0.001},
+            {"dose": "removed", "cue": "all_steps", "geometry": "demo_spread", "estimate": 0.02,
+             "networks": 36, "p_holm": 0.4},
         ]
     )  # fmt: skip
-    said = text.size_motor_claim(motor).text
-    assert "path" in said and "spread" not in said
-    assert (
-        "none of the demonstrations' measures"
-        in text.size_motor_claim(motor.assign(p_holm=0.5)).text
-    )
+    said = text.size_motor_claim(motor, "Without size")
+    assert "path" in said.text and "spread" not in said.text
+    assert said.rests_on[0] == "size.motor_p_holm_removed_all_steps_demo_path_length"
+    none = text.size_motor_claim(motor.assign(p_holm=0.5), "Without size").text
+    assert "none of the demonstrations' measures" in none

@@ -219,20 +219,21 @@ def geometry_of_trials(geometry: pd.DataFrame, grips: Sequence[str]) -> pd.DataF
 
 def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
     """Do the demonstrations' differences account for each object's error? ``trials``: the
-    categorisation trials (closed loop) of the removal runs, with their run (``seed``), network,
-    object and target grip, the measure, and the geometry of the required grip's demonstrations
-    (``GEOMETRY`` columns, from that run's own demonstrations). Per network, the least-squares
-    slope of its four objects' mean error on each geometry measure (standardised over the four);
-    the slopes tested over every network of every replication (each network once; df = networks
-    - 1), Holm's p over the geometry measures and cue timings."""
-    keys = ["cue", "seed", "network", "object"]
+    categorisation trials (closed loop) of the study's runs, with their ``dose`` (or "removed"),
+    cue timing, replication (``seed``), network, object and target grip, the measure, and the
+    geometry of the required grip's demonstrations (``GEOMETRY`` columns, from that run's own
+    demonstrations). Per network, the least-squares slope of its four objects' mean error on
+    each geometry measure (standardised over the four); per dose and cue timing the slopes are
+    tested over every network of every replication (each network once; df = networks - 1), and
+    Holm's p is taken over the table."""
+    keys = ["dose", "cue", "seed", "network", "object"]
     per_object = (
-        trials.groupby(keys, sort=True)
+        trials.groupby(keys, sort=False)
         .agg({measure: "mean", **{g: "mean" for g in GEOMETRY}})
         .reset_index()
     )
     rows = []
-    for cue, by_cue in per_object.groupby("cue", sort=False):
+    for (dose, cue), by_cue in per_object.groupby(["dose", "cue"], sort=False):
         for geometry in GEOMETRY:
             slope = []
             for _key, net in by_cue.groupby(["seed", "network"], sort=True):
@@ -247,7 +248,13 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
             sd = values.std(ddof=1) if n > 1 else float("nan")
             term = t_term(values.mean() if n else float("nan"), sd / np.sqrt(max(n, 1)), n - 1)
             rows.append(
-                {"cue": cue, "geometry": geometry, "measure": measure, "networks": n}
+                {
+                    "dose": dose,
+                    "cue": cue,
+                    "geometry": geometry,
+                    "measure": measure,
+                    "networks": n,
+                }  # fmt: skip
                 | {k: term[k] for k in ("estimate", "ci_low", "ci_high", "df", "p")}
             )
     out = pd.DataFrame(rows)

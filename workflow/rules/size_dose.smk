@@ -25,13 +25,10 @@ rule size_free_maps:
         "../scripts/size_free_maps.py"
 
 
-_REMOVED = [row for row in PLAN.size_dose if row["dose"] == "removed"]
-
-
 rule size_dose:
     """The dose-response of the size effect: per dose, cue timing and measure, the effect over
     whole replications with the manipulation check's ratios; its slope on the dose per cue
-    timing and measure; and, on the removal control, whether the demonstrations' geometry
+    timing and measure; and, per dose and without size, whether the demonstrations' geometry
     accounts for each object's error."""
     input:
         measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose],
@@ -39,9 +36,10 @@ rule size_dose:
             PLAN.path(PLAN.stage_run(row["run"], "soms"), "soms/soms.npz")
             for row in PLAN.size_dose
         ],
-        removal_trials=[PLAN.path(row["run"], "eval/measures.csv") for row in _REMOVED],
-        removal_demos=[
-            PLAN.path(PLAN.stage_run(row["run"], "demos"), "demos/demos.npz") for row in _REMOVED
+        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.size_dose],
+        demos=[
+            PLAN.path(PLAN.stage_run(row["run"], "demos"), "demos/demos.npz")
+            for row in PLAN.size_dose
         ],
         code=script_code("size_dose"),
     output:

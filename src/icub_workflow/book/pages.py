@@ -1077,9 +1077,16 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
         claims[f"claim_slope_{cue}"] = text.size_slope_claim(fit, cue)
     if len(motor):
+        motor["dose"] = [d if d == "removed" else float(d) for d in motor["dose"].astype(str)]
         for _, row in motor.iterrows():
-            values[f"motor_p_holm_{row['cue']}_{row['geometry']}"] = float(row["p_holm"])
-        claims["claim_motor"] = text.size_motor_claim(motor)
+            values[text.size_motor_key(row)] = float(row["p_holm"])
+        for key, dose, where in (
+            ("claim_motor_top", top, f"At the largest dose ({top:g}), with size in the input"),
+            ("claim_motor_removed", "removed", "Without size in the input"),
+        ):
+            subset = motor[motor["dose"] == dose]
+            if len(subset):
+                claims[key] = text.size_motor_claim(subset, where)
     shown = summary.copy()
     shown["dose"] = [d if d == "removed" else f"{d:g}" for d in shown["dose"]]
     for column in ("diff", "ci_low", "ci_high", "relative_to_mean"):

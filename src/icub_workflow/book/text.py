@@ -925,14 +925,21 @@ def size_removal_claim(row, cue: str) -> Claim:
     )
 
 
-def size_motor_claim(motor) -> Claim:
-    """Do the demonstrations' differences account for each object's error (removal runs)?"""
+def size_motor_key(row) -> str:
+    """The size page's value of one motor test's Holm p."""
+    dose = row["dose"] if row["dose"] == "removed" else f"{float(row['dose']):g}"
+    return f"motor_p_holm_{dose}_{row['cue']}_{row['geometry']}"
+
+
+def size_motor_claim(motor, where: str) -> Claim:
+    """Do the demonstrations' differences account for each object's error (``motor``: the
+    tests of one dose, or of the removal runs; ``where`` says which)?"""
     found = motor[motor["p_holm"] < ALPHA]
-    rests = tuple(f"size.motor_p_holm_{r['cue']}_{r['geometry']}" for _, r in motor.iterrows())
+    rests = tuple(f"size.{size_motor_key(r)}" for _, r in motor.iterrows())
     if found.empty:
         return Claim(
-            "Across the networks of the removal runs, none of the demonstrations' measures "
-            "accounts for the objects' errors detectably (every Holm-adjusted p at least 0.05).",
+            f"{where}, none of the demonstrations' measures accounts for the objects' errors "
+            "detectably (every Holm-adjusted p at least 0.05).",
             rests,
         )
     said = "; ".join(
@@ -941,7 +948,4 @@ def size_motor_claim(motor) -> Claim:
         f"deviation of it, Holm-adjusted {fmt_p(r['p_holm'])}, {int(r['networks'])} networks)"
         for _, r in found.iterrows()
     )
-    return Claim(
-        "Across the networks of the removal runs, an object's error rises with: " + said + ".",
-        rests,
-    )
+    return Claim(f"{where}, an object's error follows: " + said + ".", rests)
