@@ -125,8 +125,11 @@ def test_the_summary_tests_each_dose_over_replications_and_carries_the_check():
     assert row["relative_to_mean"] == pytest.approx(estimates.mean() / 0.1)
     from statsmodels.stats.multitest import multipletests
 
-    holm = multipletests(out["p"].to_numpy(dtype=float), method="holm")[1]
-    np.testing.assert_allclose(out["p_holm"].to_numpy(dtype=float), holm)
+    # the removal rows' replications agree exactly: no spread, no p (and no place in Holm's)
+    assert np.isnan(out[out["dose"] == "removed"]["p"]).all()
+    tested = np.isfinite(out["p"].to_numpy(dtype=float))
+    holm = multipletests(out["p"].to_numpy(dtype=float)[tested], method="holm")[1]
+    np.testing.assert_allclose(out["p_holm"].to_numpy(dtype=float)[tested], holm)
 
 
 def test_the_demonstrations_geometry_by_hand():
@@ -144,7 +147,7 @@ def test_the_demonstrations_geometry_by_hand():
 def test_an_error_that_follows_the_path_length_is_found():
     rng = np.random.default_rng(1)
     rows = []
-    for seed in (1, 2):
+    for seed in (1, 2, 3, 4):  # the runs of four replications
         for net in range(6):
             for k, obj in enumerate(OBJECTS):
                 length = [1.0, 0.4, 1.3, 0.7][k]
@@ -155,8 +158,11 @@ def test_an_error_that_follows_the_path_length_is_found():
                      "demo_grip_distance": [0.2, 0.2, 0.5, 0.5][k]}
                 )  # fmt: skip
     out = motor_tests(pd.DataFrame(rows)).set_index("geometry")
-    assert out.loc["demo_path_length", "networks"] == 12
-    assert out.loc["demo_path_length", "p_holm"] < 0.001
+    # the unit is the replication (its networks share its demonstrations)
+    assert out.loc["demo_path_length", "replications"] == 4
+    assert out.loc["demo_path_length", "networks"] == 24
+    assert out.loc["demo_path_length", "df"] == 3
+    assert out.loc["demo_path_length", "p_holm"] < 0.01
     assert out.loc["demo_path_length", "estimate"] > 0
 
 
@@ -244,9 +250,9 @@ def test_the_motor_sentence_names_only_what_survives_holm():
     motor = pd.DataFrame(
         [
             {"dose": "removed", "cue": "all_steps", "geometry": "demo_path_length",
-             "estimate": 0.01, "networks": 36, "p_holm": 0.001},
+             "estimate": 0.01, "replications": 3, "networks": 36, "p_holm": 0.001},
             {"dose": "removed", "cue": "all_steps", "geometry": "demo_spread", "estimate": 0.02,
-             "networks": 36, "p_holm": 0.4},
+             "replications": 3, "networks": 36, "p_holm": 0.4},
         ]
     )  # fmt: skip
     said = text.size_motor_claim(motor, "Without size")
@@ -254,3 +260,20 @@ def test_the_motor_sentence_names_only_what_survives_holm():
     assert said.rests_on[0] == "size.motor_p_holm_removed_all_steps_demo_path_length"
     none = text.size_motor_claim(motor.assign(p_holm=0.5), "Without size").text
     assert "none of the demonstrations' measures" in none
+
+
+def test_the_caveat_names_the_measures_that_rank_as_size_does():
+    from icub_workflow.book import pages, text
+
+    rows = []
+    for seed in (1, 2):
+        for obj, length, spread in (("big_ball", 2.0, 0.1), ("small_ball", 1.0, 0.3),
+                                    ("big_cube", 3.0, 0.2), ("small_cube", 1.5, 0.1)):  # fmt: skip
+            for grip in (0, 1):
+                rows.append({"seed": seed, "object": obj, "grip": grip,
+                             "demo_path_length": length, "demo_spread": spread,
+                             "demo_grip_distance": 1.0})  # fmt: skip
+    assert pages.like_size(pd.DataFrame(rows)) == ["demo_path_length"]
+    said = text.geometry_like_size(["demo_path_length", "demo_grip_distance"])
+    assert " and " in said and " are larger" in said
+    assert "None" in text.geometry_like_size([])

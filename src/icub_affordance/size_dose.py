@@ -133,11 +133,15 @@ def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     """One row per cue timing, measure and dose (SUMMARY_COLUMNS): the size effect over the
     replications (``readings.over_replications``: their mean, a t-interval over them), Holm's p
     over the table's hypotheses (a null control's rows are not), the effect relative to the
-    measure's mean, and the manipulation check's mean ratios."""
+    measure's mean, and the manipulation check's mean ratios. Replications that all give the
+    same estimate (a discrete measure) have no spread to test against: their p is undefined
+    (NaN), not 0."""
     ratios = checks.groupby(["dose", "cue", "map"], sort=False)["ratio"].mean()
     rows = []
     for (cue, measure, dose), group in replications.groupby(["cue", "measure", "dose"], sort=False):
         test = over_replications(group)
+        if len(group) > 1 and np.ptp(group["estimate"].to_numpy(dtype=float)) == 0:
+            test["p"] = float("nan")
         rows.append(
             {"dose": dose, "cue": cue, "measure": measure, "replications": len(group),
              "large_small_ratio_object": float(ratios[(dose, cue, "object")]),
@@ -218,14 +222,15 @@ def geometry_of_trials(geometry: pd.DataFrame, grips: Sequence[str]) -> pd.DataF
 
 
 def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
-    """Do the demonstrations' differences account for each object's error? ``trials``: the
+    """Do the demonstrations' differences line up with each object's error? ``trials``: the
     categorisation trials (closed loop) of the study's runs, with their ``dose`` (or "removed"),
     cue timing, replication (``seed``), network, object and target grip, the measure, and the
     geometry of the required grip's demonstrations (``GEOMETRY`` columns, from that run's own
     demonstrations). Per network, the least-squares slope of its four objects' mean error on
-    each geometry measure (standardised over the four); per dose and cue timing the slopes are
-    tested over every network of every replication (each network once; df = networks - 1), and
-    Holm's p is taken over the table."""
+    each geometry measure (standardised over the four). The networks of one replication share
+    its demonstrations, so the unit is the replication: its networks' mean slope, tested over
+    the replications (df = replications - 1), per dose and cue timing; Holm's p over the table.
+    With four objects a measure that ranks the objects as size does cannot be told from size."""
     keys = ["dose", "cue", "seed", "network", "object"]
     per_object = (
         trials.groupby(keys, sort=False)
@@ -235,15 +240,21 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
     rows = []
     for (dose, cue), by_cue in per_object.groupby(["dose", "cue"], sort=False):
         for geometry in GEOMETRY:
-            slope = []
-            for _key, net in by_cue.groupby(["seed", "network"], sort=True):
-                x = net[geometry].to_numpy(dtype=float)
-                if np.ptp(x) == 0:
-                    continue
-                x = (x - x.mean()) / x.std(ddof=0)
-                y = net[measure].to_numpy(dtype=float)
-                slope.append(float(np.sum(x * (y - y.mean())) / np.sum(x * x)))
-            values = np.array(slope)
+            per_replication = []
+            networks = 0
+            for _seed, replication in by_cue.groupby("seed", sort=True):
+                slope = []
+                for _net, net in replication.groupby("network", sort=True):
+                    x = net[geometry].to_numpy(dtype=float)
+                    if np.ptp(x) == 0:
+                        continue
+                    x = (x - x.mean()) / x.std(ddof=0)
+                    y = net[measure].to_numpy(dtype=float)
+                    slope.append(float(np.sum(x * (y - y.mean())) / np.sum(x * x)))
+                if slope:
+                    per_replication.append(float(np.mean(slope)))
+                    networks += len(slope)
+            values = np.array(per_replication)
             n = len(values)
             sd = values.std(ddof=1) if n > 1 else float("nan")
             term = t_term(values.mean() if n else float("nan"), sd / np.sqrt(max(n, 1)), n - 1)
@@ -253,7 +264,8 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
                     "cue": cue,
                     "geometry": geometry,
                     "measure": measure,
-                    "networks": n,
+                    "replications": n,
+                    "networks": networks,
                 }  # fmt: skip
                 | {k: term[k] for k in ("estimate", "ci_low", "ci_high", "df", "p")}
             )

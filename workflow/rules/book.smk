@@ -45,6 +45,7 @@ BOOK_DATA = {
     "size_slope.csv": "data/size_dose/slope.csv",
     "size_manipulation.csv": "data/size_dose/manipulation.csv",
     "size_motor.csv": "data/size_dose/motor.csv",
+    "size_geometry.csv": "data/size_dose/geometry.csv",
     "size_dose_response.png": "data/size_dose/dose_response.png",
 } | {
     f"curves/net{net}.csv": PLAN.path(OWN, f"train/net{net}/curve.csv") for net in NETWORKS
@@ -98,6 +99,7 @@ FINDINGS_READS = [
     "size_slope.csv",
     "size_manipulation.csv",
     "size_motor.csv",
+    "size_geometry.csv",
     *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]

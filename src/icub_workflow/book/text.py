@@ -882,17 +882,18 @@ def size_slope_claim(slope, cue: str) -> Claim:
     p = slope["p_holm"]
     if p < ALPHA:
         trend = (
-            "more size coding moves the effect towards the paper's direction"
+            "a larger nominal dose moves the effect towards the paper's direction"
             if slope["slope"] > 0
-            else "more size coding moves the effect away from the paper's direction"
+            else "a larger nominal dose moves the effect away from the paper's direction"
         )
     else:
         trend = "no trend with the dose survives Holm's adjustment"
     return Claim(
         f"With {SIZE_CUE_WORDS[cue]}, the size effect on the paper's RMSE changes by "
-        f"{slope['slope']:+.4f} per unit of width (95% interval [{slope['ci_low']:+.4f}, "
-        f"{slope['ci_high']:+.4f}], t({slope['df']:.0f}), {fmt_p(slope['p'])}, Holm-adjusted "
-        f"{fmt_p(p)}, over {int(slope['replications'])} replications): {trend}.",
+        f"{slope['slope']:+.4f} per unit of the nominal dose (95% interval "
+        f"[{slope['ci_low']:+.4f}, {slope['ci_high']:+.4f}], t({slope['df']:.0f}), "
+        f"{fmt_p(slope['p'])}, Holm-adjusted {fmt_p(p)}, over {int(slope['replications'])} "
+        f"replications): {trend}.",
         (f"size.slope_{cue}", f"size.slope_p_holm_{cue}"),
     )
 
@@ -912,8 +913,8 @@ def size_removal_claim(row, cue: str) -> Claim:
     (Holm) without any size in the input, it cannot come from vision."""
     if row["p_holm"] < ALPHA and row["diff"] < 0:
         verdict = (
-            "the reversed size effect survives the removal of size from the input, so its "
-            "cause lies on the motor side (the grips and their demonstrations), not in vision"
+            "the reversed size effect survives the removal of size from the input, so the "
+            "motor side (the grips and their demonstrations) can produce it without vision"
         )
     elif row["p_holm"] < ALPHA:
         verdict = "without size in the input the effect takes the paper's direction"
@@ -938,14 +939,30 @@ def size_motor_claim(motor, where: str) -> Claim:
     rests = tuple(f"size.{size_motor_key(r)}" for _, r in motor.iterrows())
     if found.empty:
         return Claim(
-            f"{where}, none of the demonstrations' measures accounts for the objects' errors "
+            f"{where}, none of the demonstrations' measures lines up with the objects' errors "
             "detectably (every Holm-adjusted p at least 0.05).",
             rests,
         )
     said = "; ".join(
         f"{GEOMETRY_WORDS[r['geometry']]}, with {SIZE_CUE_WORDS[r['cue']]} (an object's error "
         f"{'rises' if r['estimate'] > 0 else 'falls'} by {abs(r['estimate']):.4f} per standard "
-        f"deviation of it, Holm-adjusted {fmt_p(r['p_holm'])}, {int(r['networks'])} networks)"
+        f"deviation of it, Holm-adjusted {fmt_p(r['p_holm'])}, over {int(r['replications'])} "
+        f"replications of {int(r['networks'])} networks)"
         for _, r in found.iterrows()
     )
-    return Claim(f"{where}, an object's error follows: " + said + ".", rests)
+    return Claim(f"{where}, an object's error lines up with " + said + ".", rests)
+
+
+def geometry_like_size(measures: list[str]) -> str:
+    """Which of the demonstrations' measures rank the objects as size does (a description of the
+    demonstrations, the caveat on the motor tests)."""
+    if not measures:
+        return "None of the demonstrations' measures ranks the objects as their size does."
+    words = [GEOMETRY_WORDS[m] for m in measures]
+    named = words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+    verb = "is" if len(words) == 1 else "are"
+    return (
+        f"In every replication's demonstrations, {named} {verb} larger for both large objects "
+        "than for the small one of the same shape: with four objects per network, a slope on "
+        "such a measure cannot be told apart from the size effect itself."
+    )
