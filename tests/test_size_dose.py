@@ -14,6 +14,7 @@ from icub_affordance.size_dose import (
     demo_geometry,
     manipulation_rows,
     motor_tests,
+    ranked_like_size,
     size_free_maps,
     slopes,
     summary,
@@ -263,7 +264,7 @@ def test_the_motor_sentence_names_only_what_survives_holm():
 
 
 def test_the_caveat_names_the_measures_that_rank_as_size_does():
-    from icub_workflow.book import pages, text
+    from icub_workflow.book import text
 
     rows = []
     for seed in (1, 2):
@@ -273,7 +274,7 @@ def test_the_caveat_names_the_measures_that_rank_as_size_does():
                 rows.append({"seed": seed, "object": obj, "grip": grip,
                              "demo_path_length": length, "demo_spread": spread,
                              "demo_grip_distance": 1.0})  # fmt: skip
-    assert pages.like_size(pd.DataFrame(rows)) == ["demo_path_length"]
+    assert ranked_like_size(pd.DataFrame(rows)) == ["demo_path_length"]
     said = text.geometry_like_size(["demo_path_length", "demo_grip_distance"])
     assert " and " in said and " are larger" in said
     assert "None" in text.geometry_like_size([])

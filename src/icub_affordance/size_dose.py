@@ -273,3 +273,20 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
     if len(out):
         out["p_holm"] = holm(out["p"].to_numpy(dtype=float))
     return out
+
+
+def ranked_like_size(geometry: pd.DataFrame) -> list[str]:
+    """The demonstrations' measures (``GEOMETRY``) that rank the objects as their size does in
+    every replication of ``geometry`` (``demo_geometry`` rows with a ``seed``): larger for the
+    big ball than the small one and for the big cube than the small one (mean over the grips).
+    With four objects per network, a slope on such a measure cannot be told from size."""
+    per_seed = geometry.groupby(["seed", "object"])[list(GEOMETRY)].mean()
+    return [
+        g
+        for g in GEOMETRY
+        if all(
+            per_seed.loc[(seed, large), g] > per_seed.loc[(seed, small), g]
+            for seed in geometry["seed"].unique()
+            for large, small in SHAPES.values()
+        )
+    ]

@@ -43,16 +43,17 @@ with redirect_log(snakemake.log[0]):
         )
     geometry_table = pd.concat(geometries, ignore_index=True)
     motor = motor_tests(pd.concat(trials, ignore_index=True))
+    table_summary, table_slopes = summary(replications, checks), slopes(replications)
     for path, frame in (
         (snakemake.output.replications, replications),
         (snakemake.output.manipulation, checks),
-        (snakemake.output.summary, summary(replications, checks)),
-        (snakemake.output.slope, slopes(replications)),
+        (snakemake.output.summary, table_summary),
+        (snakemake.output.slope, table_slopes),
         (snakemake.output.geometry, geometry_table),
         (snakemake.output.motor, motor),
     ):
         with atomic_path(path) as tmp:
             frame.to_csv(tmp, index=False)
-    print(summary(replications, checks).to_string())
-    print(slopes(replications).to_string())
+    print(table_summary.to_string())
+    print(table_slopes.to_string())
     print(motor.to_string())

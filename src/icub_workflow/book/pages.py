@@ -22,6 +22,7 @@ from icub_affordance.embodied_stats import FACTOR_LEVELS
 from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
 from icub_affordance.robot_statistics import record_table
+from icub_affordance.size_dose import ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS
@@ -1020,24 +1021,6 @@ def _study_table(path: str) -> pd.DataFrame:
     return frame
 
 
-def like_size(geometry: pd.DataFrame) -> list[str]:
-    """The demonstrations' measures that rank the objects as their size does in every
-    replication: larger for the big ball than the small one and for the big cube than the small
-    one (the mean over the two grips)."""
-    from icub_affordance.size_dose import GEOMETRY, SHAPES
-
-    per_seed = geometry.groupby(["seed", "object"])[list(GEOMETRY)].mean()
-    return [
-        g
-        for g in GEOMETRY
-        if all(
-            per_seed.loc[(seed, large), g] > per_seed.loc[(seed, small), g]
-            for seed in geometry["seed"].unique()
-            for large, small in SHAPES.values()
-        )
-    ]
-
-
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter "What drives the size effect": the doses, the manipulation check at the
     largest dose, per cue timing the effect at the largest dose, without size, and the slope on
@@ -1095,7 +1078,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
         claims[f"claim_slope_{cue}"] = text.size_slope_claim(fit, cue)
     geometry = pd.read_csv(inputs["size_geometry.csv"])
-    values["geometry_like_size"] = text.geometry_like_size(like_size(geometry))
+    values["geometry_like_size"] = text.geometry_like_size(ranked_like_size(geometry))
     if len(motor):
         motor["dose"] = [d if d == "removed" else float(d) for d in motor["dose"].astype(str)]
         for _, row in motor.iterrows():
