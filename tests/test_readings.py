@@ -6,6 +6,8 @@ changed when the statistic it rests on is."""
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -234,6 +236,14 @@ def test_a_missing_margin_is_a_clear_error():
 
 
 def built_tables(cong_shift=0.02, grows_size=0.01, margin=0.01, seed=0):
+    """The readings' summary and differences of made-up trials (fresh copies each call: the
+    tests change them; the tables themselves are computed once per setting)."""
+    summ, diffs = _built_tables(cong_shift, grows_size, margin, seed)
+    return summ.copy(), diffs.copy()
+
+
+@functools.cache
+def _built_tables(cong_shift, grows_size, margin, seed):
     rng = np.random.default_rng(seed)
     base = rng.normal(0.03, 0.01, 8)
     effects = {
