@@ -56,6 +56,7 @@ def test_columns_are_written_as_rows_would_be(tmp_path):
     }
     columns["rmse"][3] = math.nan
     columns["rmse"][4] = 2.5e-7
+    columns["iteration"][5] = None
     for table in (columns, {k: v for k, v in columns.items() if k != "task"}):
         rows = [dict(zip(table, row, strict=True)) for row in zip(*table.values(), strict=True)]
         write_csv(tmp_path / "rows.csv", rows)

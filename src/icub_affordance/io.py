@@ -119,9 +119,14 @@ def write_columns(path: str | os.PathLike[str], columns: dict[str, list], digits
         )
         return
 
+    def cell(value: object) -> str:
+        """As csv.writer would write it (None and NaN empty), floats to ``digits`` places."""
+        if isinstance(value, float):
+            return "" if math.isnan(value) else f"{value:.{digits}f}"
+        return "" if value is None else str(value)
+
     def cells(column: list) -> list[str]:
-        return ["" if isinstance(v, float) and math.isnan(v) else f"{v:.{digits}f}"
-                if isinstance(v, float) else str(v) for v in column]  # fmt: skip
+        return [cell(v) for v in column]
 
     lines = [",".join(names), *map(",".join, zip(*map(cells, values), strict=True))]
     write_text(path, "\n".join(lines) + "\n")
