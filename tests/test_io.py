@@ -62,3 +62,14 @@ def test_columns_are_written_as_rows_would_be(tmp_path):
         write_csv(tmp_path / "rows.csv", rows)
         write_columns(tmp_path / "columns.csv", table)
         assert (tmp_path / "columns.csv").read_bytes() == (tmp_path / "rows.csv").read_bytes()
+
+
+def test_tables_are_written_whole_without_their_index(tmp_path):
+    import pandas as pd
+
+    from icub_affordance.io import write_tables
+
+    frame = pd.DataFrame({"a": [1, 2], "b": [0.5, float("nan")]})
+    write_tables([(tmp_path / "t.csv", frame)])
+    assert (tmp_path / "t.csv").read_text() == frame.to_csv(index=False)
+    assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]  # no temporary left behind

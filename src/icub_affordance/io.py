@@ -103,6 +103,13 @@ def load_npz(path: str | os.PathLike[str], required: tuple[str, ...] = ()) -> di
     return arrays
 
 
+def write_tables(tables: list[tuple[str | os.PathLike[str], object]]) -> None:
+    """Each (path, pandas DataFrame) as CSV without its index, each file atomically."""
+    for path, frame in tables:
+        with atomic_path(path) as tmp:
+            frame.to_csv(tmp, index=False)
+
+
 def write_columns(path: str | os.PathLike[str], columns: dict[str, list], digits: int = 6) -> None:
     """Columns of a table (name -> values, each a list of the same length) as CSV, atomically:
     the bytes :func:`write_csv` writes for the same rows, a line per row joined at once rather

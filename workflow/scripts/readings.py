@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path, redirect_log
+from icub_affordance.io import redirect_log, write_tables
 from icub_affordance.readings import (
     difference_replications,
     differences,
@@ -29,12 +29,12 @@ with redirect_log(snakemake.log[0]):
         difference_replications(table, trials, measures), dict(snakemake.params.margins)
     )
     table_summary = summary(replications)
-    for path, frame in (
-        (snakemake.output.replications, replications),
-        (snakemake.output.summary, table_summary),
-        (snakemake.output.differences, diffs),
-    ):
-        with atomic_path(path) as tmp:
-            frame.to_csv(tmp, index=False)
+    write_tables(
+        [
+            (snakemake.output.replications, replications),
+            (snakemake.output.summary, table_summary),
+            (snakemake.output.differences, diffs),
+        ]
+    )
     print(table_summary.to_string())
     print(diffs.to_string())

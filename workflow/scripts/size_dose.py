@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path, load_npz, redirect_log
+from icub_affordance.io import load_npz, redirect_log, write_tables
 from icub_affordance.size_dose import (
     demo_geometry,
     geometry_of_trials,
@@ -44,16 +44,16 @@ with redirect_log(snakemake.log[0]):
     geometry_table = pd.concat(geometries, ignore_index=True)
     motor = motor_tests(pd.concat(trials, ignore_index=True))
     table_summary, table_slopes = summary(replications, checks), slopes(replications)
-    for path, frame in (
-        (snakemake.output.replications, replications),
-        (snakemake.output.manipulation, checks),
-        (snakemake.output.summary, table_summary),
-        (snakemake.output.slope, table_slopes),
-        (snakemake.output.geometry, geometry_table),
-        (snakemake.output.motor, motor),
-    ):
-        with atomic_path(path) as tmp:
-            frame.to_csv(tmp, index=False)
+    write_tables(
+        [
+            (snakemake.output.replications, replications),
+            (snakemake.output.manipulation, checks),
+            (snakemake.output.summary, table_summary),
+            (snakemake.output.slope, table_slopes),
+            (snakemake.output.geometry, geometry_table),
+            (snakemake.output.motor, motor),
+        ]
+    )
     print(table_summary.to_string())
     print(table_slopes.to_string())
     print(motor.to_string())
