@@ -47,7 +47,7 @@ def main(plain_sample: int = 1500, wide: bool = True) -> None:
     network = yaml.safe_load((Path(__file__).parents[1] / "config" / "config.yaml").read_text())[
         "network"
     ]
-    config = TrainConfig(**{k: v for k, v in network.items() if k != "networks"})
+    config = TrainConfig(**{k: v for k, v in network.items() if k != "networks"})  # its curve_rows
 
     start = time.perf_counter()
     train_network(m, config, "A", seed=1)

@@ -140,6 +140,18 @@ def test_the_learning_curve_summary():
     assert findings.curve_summary(curves[:, :1200], 600)["at"] == 1100
 
 
+def test_a_thinned_learning_curve_is_summarised_over_the_iterations_it_kept():
+    """A long training's curve keeps every k-th iteration (train.curve_every): each window is
+    the kept rows whose iteration falls in it, not the first rows."""
+    kept = np.arange(4, 3001, 4)  # iterations 4, 8, ..., 3000
+    curves = np.stack([kept, kept + 2.0])
+    s = findings.curve_summary(curves, 1500, iterations=kept)
+    assert s["at"] == 2000 and s["start"] == pytest.approx(np.mean([4, 8]) + 1)
+    assert s["around_at"] == pytest.approx(np.mean(np.arange(1904, 2101, 4)) + 1)
+    assert s["phase1_end"] == pytest.approx(np.mean(np.arange(1004, 1501, 4)) + 1)
+    assert s["end"] == pytest.approx(np.mean(np.arange(2504, 3001, 4)) + 1)
+
+
 def test_the_demonstration_counts():
     summary = pd.DataFrame({"attempts": [1, 3, 1, 2], "lift_m": [0.05, 0.049, 0.051, 0.05]})
     assert findings.demo_counts(summary) == {

@@ -107,6 +107,35 @@ def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
     assert cold == warm == uncached
 
 
+def test_the_kernels_exponential_is_within_one_ulp_of_the_c_librarys():
+    """The trainer's own exp (vectorisable, the same on every CPU) over the range a sigmoid of
+    a trained network meets, and its ends: 0 and a huge value, never NaN."""
+    from icub_affordance.jordan_kernel import neg_exp
+
+    z = np.concatenate([np.linspace(-60, 60, 400_001), [-1e-300, 0.0, 1e-300, 0.5 * np.log(2)]])
+    reference = np.exp(-z)
+    ulps = np.abs(neg_exp(z) - reference) / np.spacing(reference)
+    assert ulps.max() <= 1.0
+    ends = neg_exp(np.array([-1e6, 1e6, -710.0, 710.0]))
+    assert np.all(np.isfinite(ends)) and ends[1] < 1e-300 < 1e300 < ends[0]
+
+
+def test_a_long_trainings_curve_keeps_every_kth_iteration_of_the_full_curve():
+    """curve_rows caps the learning curve: every k-th iteration's own record (k the smallest
+    that fits), the same network and weights as with the full curve."""
+    m = synthetic_materials()
+    full_w, full = train_network(m, train_config(iterations=1000, phase1_iterations=500), "A", 3)
+    capped = train_config(iterations=1000, phase1_iterations=500, curve_rows=300)
+    thin_w, thin = train_network(m, capped, "A", 3)
+    assert list(thin["iteration"]) == list(range(4, 1001, 4))  # k = 4: 250 rows
+    for key in full:
+        np.testing.assert_array_equal(thin[key], full[key][3::4])
+    np.testing.assert_array_equal(thin_w.W1, full_w.W1)
+    assert train_config(curve_rows=0).curve_rows == 0
+    with pytest.raises(ValueError, match="curve_rows"):
+        train_config(curve_rows=-1)
+
+
 def test_training_lowers_the_error():
     m = synthetic_materials()
     config = train_config(iterations=2000, phase1_iterations=1000)

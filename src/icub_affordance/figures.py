@@ -171,12 +171,25 @@ def figure2_architecture(hidden: int, path) -> None:
     save(fig, path)
 
 
-def figure4(curves: list[np.ndarray], phase1: int, path, window: int = 100) -> None:
-    """Training RMSE per iteration, averaged over networks (moving average), with its spread."""
-    data = np.array(curves)  # (networks, iterations)
+def figure4(
+    curves: list[np.ndarray],
+    phase1: int,
+    path,
+    window: int = 100,
+    iterations: np.ndarray | None = None,
+) -> None:
+    """Training RMSE per iteration, averaged over networks (moving average), with its spread.
+    ``iterations``: each row's iteration, when the curves keep only every k-th
+    (``train.curve_every``); the moving average then spans ``window`` rows."""
+    data = np.array(curves)  # (networks, rows)
     kernel = np.ones(window) / window
     smooth = np.array([np.convolve(c, kernel, mode="valid") for c in data])
-    x = np.arange(window, data.shape[1] + 1)
+    if iterations is None:
+        x, span = np.arange(window, data.shape[1] + 1), f"{window}-iteration"
+    else:
+        x = np.asarray(iterations)[window - 1 :]
+        every = int(x[1] - x[0]) if len(x) > 1 else 1
+        span = f"{window}-iteration" if every == 1 else f"{window * every}-iteration"
     mean = smooth.mean(axis=0)
     fig, ax = plt.subplots(figsize=(7, 3.6))
     ax.fill_between(
@@ -187,7 +200,7 @@ def figure4(curves: list[np.ndarray], phase1: int, path, window: int = 100) -> N
         alpha=0.2,
         label=f"range over {len(data)} networks",
     )
-    ax.plot(x, mean, color="C0", lw=1.5, label=f"mean ({window}-iteration moving average)")
+    ax.plot(x, mean, color="C0", lw=1.5, label=f"mean ({span} moving average)")
     ax.axvline(phase1, color="0.4", ls="--", lw=1)
     ax.text(
         phase1,

@@ -66,19 +66,29 @@ def contrast_verdict(contrasts: dict, effect: str, alpha: float = ALPHA) -> Verd
     return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(p < alpha))
 
 
-def curve_summary(curves: np.ndarray, phase1_iterations: int) -> dict[str, float | int]:
-    """The learning curves (networks, iterations) at the moments the paper names: the mean RMSE
-    over networks of the first 10 iterations, of the 200 around iteration 2000 (or earlier on a
-    shorter run), of the last 500 of phase 1 and of the last 500 of training."""
+def curve_summary(
+    curves: np.ndarray, phase1_iterations: int, iterations: np.ndarray | None = None
+) -> dict[str, float | int]:
+    """The learning curves (networks, rows) at the moments the paper names: the mean RMSE over
+    networks of the first 10 iterations, of the 200 around iteration 2000 (or earlier on a
+    shorter run), of the last 500 of phase 1 and of the last 500 of training. ``iterations``
+    (rows,) is each row's iteration (from 1; every iteration when None): a long training's
+    curve keeps only some (``train.curve_every``), and a window is the rows within it."""
     curves = np.asarray(curves, dtype=float)
-    at = min(2000, curves.shape[1] - 100)
+    it = np.arange(1, curves.shape[1] + 1) if iterations is None else np.asarray(iterations)
+    last = int(it[-1])
+    at = min(2000, last - 100)
+
+    def window(first: int, end: int) -> float:  # iterations first..end, counted from 1
+        return float(curves[:, (it >= first) & (it <= end)].mean())
+
     return {
         "n_networks": len(curves),
         "at": at,
-        "start": float(curves[:, :10].mean()),
-        "around_at": float(curves[:, at - 100 : at + 100].mean()),
-        "phase1_end": float(curves[:, max(phase1_iterations - 500, 0) : phase1_iterations].mean()),
-        "end": float(curves[:, -500:].mean()),
+        "start": window(1, 10),
+        "around_at": window(at - 99, at + 100),
+        "phase1_end": window(max(phase1_iterations - 499, 1), phase1_iterations),
+        "end": window(last - 499, last),
     }
 
 

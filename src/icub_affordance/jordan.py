@@ -101,6 +101,10 @@ def train_online(
     W1pT = np.ascontiguousarray(weights.W1[:, PROPRIO].T)  # (16, hidden)
     b1, b2 = weights.b1.copy(), weights.b2.copy()
     W2T = np.ascontiguousarray(weights.W2.T)  # (hidden, 16)
+    unique, context_ids = np.unique(
+        contexts.reshape(-1, contexts.shape[-1]), axis=0, return_inverse=True
+    )
+    context_ids = context_ids.reshape(contexts.shape[:3]).astype(np.int64)
     run_ends = np.empty(contexts.shape[:3], dtype=np.int64)
     for key in np.ndindex(*contexts.shape[:2]):
         for start, end in equal_runs(contexts[key]):
@@ -118,7 +122,8 @@ def train_online(
         raise ValueError(f"{rates.shape} learning rates for a schedule of {tasks.shape} iterations")
     rates = np.ascontiguousarray(np.broadcast_to(rates, tasks.shape))
     train_schedule(
-        W1cT, W1pT, b1, W2T, b2, rates, contexts, run_ends, demos, targets, grips,
+        W1cT, W1pT, b1, W2T, b2, rates, np.ascontiguousarray(unique), context_ids, run_ends,
+        demos, targets, grips,
         tasks, objects, sequences, rmse,
     )  # fmt: skip
     W1 = np.empty_like(weights.W1)

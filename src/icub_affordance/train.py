@@ -38,6 +38,7 @@ class TrainConfig:
     categorisation_cue: str  # one of CUES
     target: str  # one of TARGETS: what the motor outputs learn
     learning_rate_schedule: str = "constant"  # one of SCHEDULES
+    curve_rows: int = 0  # the learning curve's rows at most (every k-th iteration); 0: all
 
     def __post_init__(self) -> None:
         if self.target not in TARGETS:
@@ -53,6 +54,8 @@ class TrainConfig:
             )
         if not 0 <= self.phase1_iterations <= self.iterations:
             raise ValueError("phase1_iterations must lie between 0 and iterations")
+        if self.curve_rows < 0:
+            raise ValueError("network.curve_rows must be 0 (every iteration) or more")
         if (self.iterations - self.phase1_iterations) % 2:
             raise ValueError("phase 2 must have an even number of iterations (half of each task)")
 
@@ -158,7 +161,7 @@ def learning_rates(config: TrainConfig) -> np.ndarray:
 def train_network(
     m: Materials, config: TrainConfig, mapping: str, seed: int
 ) -> tuple[Weights, dict[str, np.ndarray]]:
-    """Train one network; return its weights and its learning curve (one row per iteration)."""
+    """Train one network; return its weights and its learning curve (:func:`curve_every`)."""
     rng = np.random.default_rng(seed)
     weights = Weights.init(config.hidden, config.init_scale, rng)
     tasks, objects, sequences = schedule(config, len(m.objects), m.n_train_sequences, rng)
@@ -180,15 +183,26 @@ def train_network(
         weights, learning_rates(config), contexts, m.demos, grips, (tasks, objects, sequences),
         targets,
     )  # fmt: skip
+    kept = np.arange(curve_every(config) - 1, config.iterations, curve_every(config))
     curve = {
-        "iteration": np.arange(1, config.iterations + 1),
-        "phase": np.where(np.arange(config.iterations) < config.phase1_iterations, 1, 2),
-        "task": tasks,
-        "object": objects,
-        "sequence": sequences,
-        "rmse": rmse,
+        "iteration": kept + 1,
+        "phase": np.where(kept < config.phase1_iterations, 1, 2),
+        "task": tasks[kept],
+        "object": objects[kept],
+        "sequence": sequences[kept],
+        "rmse": rmse[kept],
     }
     return trained, curve
+
+
+def curve_every(config: TrainConfig) -> int:
+    """The learning curve keeps every k-th iteration, k the smallest that leaves at most
+    ``curve_rows`` rows (1, every iteration, when that is 0 or the training is short enough):
+    a long training's curve at the resolution a figure can show, each row an iteration's own
+    record. The full curve is ``curve_rows: 0``."""
+    if config.curve_rows == 0:
+        return 1
+    return -(-config.iterations // config.curve_rows)
 
 
 def network_seed(seed: int, network: int) -> int:

@@ -6,5 +6,6 @@ from icub_affordance.figures import figure4
 from icub_affordance.io import redirect_log
 
 with redirect_log(snakemake.log[0]):
-    curves = [pd.read_csv(path)["rmse"].to_numpy() for path in snakemake.input.curves]
-    figure4(curves, snakemake.params.phase1, snakemake.output[0])
+    tables = [pd.read_csv(path) for path in snakemake.input.curves]
+    curves = [table["rmse"].to_numpy() for table in tables]
+    figure4(curves, snakemake.params.phase1, snakemake.output[0], iterations=tables[0]["iteration"])

@@ -52,9 +52,11 @@ def _json(path) -> dict:
     return json.loads(Path(path).read_text())
 
 
-def _curves(inputs: Mapping[str, str]) -> np.ndarray:
+def _curves(inputs: Mapping[str, str]) -> tuple[np.ndarray, np.ndarray]:
+    """The learning curves' RMSE (networks, rows) and the iteration of each row."""
     names = sorted(name for name in inputs if name.startswith("curves/"))
-    return np.array([pd.read_csv(inputs[name])["rmse"].to_numpy() for name in names])
+    tables = [pd.read_csv(inputs[name]) for name in names]
+    return np.array([t["rmse"].to_numpy() for t in tables]), tables[0]["iteration"].to_numpy()
 
 
 def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
@@ -1126,7 +1128,8 @@ def page_findings(
     anova = with_readings_family(
         _json(inputs["anova.json"]), pd.read_csv(inputs["readings_summary.csv"]), config
     )
-    curve = science.curve_summary(_curves(inputs), config["network"]["phase1_iterations"])
+    rmse, iterations = _curves(inputs)
+    curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
     demos = load_npz(inputs["demos.npz"])
     beyond_values, cue_table = beyond(inputs, config, ablation_cue)
     robustness_values, sweep_table = robustness(inputs, config)
