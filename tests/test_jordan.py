@@ -136,6 +136,29 @@ def test_a_long_trainings_curve_keeps_every_kth_iteration_of_the_full_curve():
         train_config(curve_rows=-1)
 
 
+def test_a_network_continued_from_a_shared_phase_1_is_the_network_trained_whole(tmp_path):
+    """Phase 1 trained at the constant rate, saved and loaded, then continued with the annealed
+    rate: the same bits as the annealed network trained in one go (so two robot variants that
+    differ only in the schedule share phase 1). A phase 1 of other settings is refused."""
+    from icub_affordance.train import Phase1, train_phase1
+
+    m = synthetic_materials()
+    common = {"iterations": 600, "phase1_iterations": 300, "hidden": 12}
+    constant = train_config(**common, learning_rate_schedule="constant")
+    anneal = train_config(**common, learning_rate_schedule="anneal")
+    train_phase1(m, constant, "B", 4).save(tmp_path / "phase1.npz")
+    shared = Phase1.load(tmp_path / "phase1.npz")
+    continued, curve = train_network(m, anneal, "B", 4, after=shared)
+    whole, whole_curve = train_network(m, anneal, "B", 4)
+    for key in ("W1", "b1", "W2", "b2"):
+        np.testing.assert_array_equal(getattr(continued, key), getattr(whole, key))
+    np.testing.assert_array_equal(curve["rmse"], whole_curve["rmse"])
+    assert not np.array_equal(whole.W1, train_network(m, constant, "B", 4)[0].W1)
+    for other in (train_config(**common | {"hidden": 11}), anneal):
+        with pytest.raises(ValueError, match="other settings, mapping, seed or materials"):
+            train_network(m, other, "A" if other is anneal else "B", 4, after=shared)
+
+
 def test_training_lowers_the_error():
     m = synthetic_materials()
     config = train_config(iterations=2000, phase1_iterations=1000)

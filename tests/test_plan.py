@@ -160,6 +160,47 @@ def test_only_the_configs_own_run_has_a_job_per_network(plan):
     assert [run for run in plan.runs if plan.jobs_per_network(run)] == [OWN]
 
 
+def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan, config):
+    """Every reading and dose run that is not also a run the book tests in full (the config's
+    own, the cue ablation) is in exactly one group, the group of its seed."""
+    groups = plan.measured_groups
+    grouped = [run for runs in groups.values() for run in runs]
+    assert len(grouped) == len(set(grouped))
+    expected = {row["run"] for row in [*plan.readings, *plan.size_dose]} - set(plan.whole)
+    assert set(grouped) == expected
+    for name, runs in groups.items():
+        assert {f"seed{plan.config(run)['seed']}" for run in runs} == {name}
+    seeds = {
+        config["seed"],
+        *config["size_dose"]["seeds"][: config["size_dose"]["replications"] - 1],
+    }
+    assert set(groups) == {f"seed{seed}" for seed in seeds}
+
+
+def test_robot_variants_that_differ_only_in_the_schedule_share_phase_1(plan, config):
+    """The default's constant and annealed variants (cue at every step) share one phase 1; a
+    variant without its partner in the build, the config's own run and a confirmation (fresh
+    networks) train whole. With robustness, every tested pair shares, and only pairs."""
+    constant = "robot_commands_h40_it768000_all_steps"
+    anneal = f"{constant}_anneal"
+    assert plan.phase1_run(constant) == plan.phase1_run(anneal) == constant
+    assert plan.phase1_run("robot_commands_h40_it768000") is None  # its partner is not built
+    assert plan.phase1_run(OWN) is None
+    assert all(plan.phase1_run(run) is None for run in plan.confirmation_runs)
+    full = plan_runs(config | {"robustness": True})
+    owners = {}
+    for run in full.runs:
+        if (owner := full.phase1_run(run)) is not None:
+            owners.setdefault(owner, []).append(run)
+            differ = {
+                k
+                for k in full.config(run)["network"]
+                if full.config(run)["network"][k] != full.config(owner)["network"][k]
+            }
+            assert differ <= {"learning_rate_schedule"}
+    assert owners and all(len(runs) == 2 and runs[0] == owner for owner, runs in owners.items())
+
+
 # ---- the variant type ----------------------------------------------------------------------------
 
 

@@ -26,6 +26,7 @@ N_INPUT = N_VISUAL + N_PROPRIO + N_GOAL
 N_OUTPUT = 16
 # Input layout: [visual (100), proprioception (16), goal (100)], as in Figure 2.
 PROPRIO = slice(N_VISUAL, N_VISUAL + N_PROPRIO)
+CONTEXT = np.r_[0:N_VISUAL, N_VISUAL + N_PROPRIO : N_INPUT]  # the visual and goal inputs
 
 
 @dataclass
@@ -67,6 +68,121 @@ def sigmoid(z: np.ndarray) -> np.ndarray:
     return expit(z)
 
 
+@dataclass
+class TrainingState:
+    """A network part-way through its online training: what the compiled loop carries from one
+    iteration to the next (``jordan_kernel.train_schedule``). Training a schedule in parts, from
+    a saved state, gives the same bits as in one call: so two settings that differ only after
+    phase 1 (the learning-rate schedule) can share phase 1's training.
+
+    ``arrays``: ``W1cT`` the context weights as they started (200, hidden), ``W1pT``, ``b1``,
+    ``W2T``, ``b2`` the other weights now, ``unique`` the distinct contexts, ``U``, ``moved``,
+    ``gram`` the context part, ``lr_p``, ``d_hid``, ``lr_h``, ``d_out`` the last step's update
+    not yet made. ``done``: the iterations trained.
+    """
+
+    arrays: dict[str, np.ndarray]
+    done: int = 0
+
+    @classmethod
+    def start(cls, weights: Weights, contexts: np.ndarray) -> TrainingState:
+        """The state before the first iteration, for these initial weights and the contexts
+        (objects, tasks, steps-1, 200) the training will show."""
+        from .jordan_kernel import project_contexts
+
+        unique = np.ascontiguousarray(_distinct_contexts(contexts)[0])
+        hidden = weights.W1.shape[0]
+        arrays = {
+            "W1cT": np.ascontiguousarray(weights.W1[:, CONTEXT].T),
+            "W1pT": np.ascontiguousarray(weights.W1[:, PROPRIO].T),
+            "b1": weights.b1.copy(),
+            "W2T": np.ascontiguousarray(weights.W2.T),
+            "b2": weights.b2.copy(),
+            "unique": unique,
+            "U": np.zeros((len(unique), hidden)),
+            "moved": np.zeros((len(unique), hidden)),
+            "gram": np.zeros((len(unique), len(unique))),
+            "lr_p": np.zeros(N_PROPRIO),
+            "d_hid": np.zeros(hidden),
+            "lr_h": np.zeros(hidden),
+            "d_out": np.zeros(N_OUTPUT),
+        }
+        project_contexts(arrays["W1cT"], unique, arrays["U"], arrays["gram"])
+        return cls(arrays)
+
+    def copy(self) -> TrainingState:
+        return TrainingState({k: v.copy() for k, v in self.arrays.items()}, self.done)
+
+    def train(
+        self,
+        learning_rate: float | np.ndarray,
+        contexts: np.ndarray,
+        demos: np.ndarray,
+        grips: np.ndarray,
+        schedule: tuple[np.ndarray, np.ndarray, np.ndarray],
+        targets: np.ndarray | None = None,
+    ) -> np.ndarray:
+        """Train on, in place, over ``schedule`` (see :func:`train_online` for the arguments);
+        return each of its iterations' RMSE, measured before that sequence's updates."""
+        from .jordan_kernel import train_schedule
+
+        tasks, objects, sequences = (np.ascontiguousarray(a, dtype=np.int64) for a in schedule)
+        contexts = np.ascontiguousarray(contexts, dtype=np.float64)
+        unique, context_ids = _distinct_contexts(contexts)
+        if not np.array_equal(unique, self.arrays["unique"]):
+            raise ValueError(
+                "these contexts are not the ones the training started with: a state continues "
+                "only the training it was made by (same maps, same cue timing)"
+            )
+        run_ends = np.empty(contexts.shape[:3], dtype=np.int64)
+        for key in np.ndindex(*contexts.shape[:2]):
+            for start, end in equal_runs(contexts[key]):
+                run_ends[key][start:end] = end
+        rmse = np.empty(len(tasks))
+        demos = np.ascontiguousarray(demos, dtype=np.float64)
+        if targets is None:
+            targets = demos
+        elif targets.shape != demos.shape:
+            raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
+        targets = np.ascontiguousarray(targets, dtype=np.float64)
+        grips = np.ascontiguousarray(grips, dtype=np.int64)
+        rates = np.asarray(learning_rate, dtype=np.float64)
+        if rates.ndim and rates.shape != tasks.shape:
+            raise ValueError(
+                f"{rates.shape} learning rates for a schedule of {tasks.shape} iterations"
+            )
+        rates = np.ascontiguousarray(np.broadcast_to(rates, tasks.shape))
+        a = self.arrays
+        train_schedule(
+            a["W1pT"], a["b1"], a["W2T"], a["b2"], a["U"], a["moved"], a["gram"], a["lr_p"],
+            a["d_hid"], a["lr_h"], a["d_out"], rates, context_ids, run_ends, demos, targets,
+            grips, tasks, objects, sequences, rmse,
+        )  # fmt: skip
+        self.done += len(tasks)
+        return rmse
+
+    def weights(self) -> Weights:
+        """The weights the training has reached (the state itself can train on)."""
+        from .jordan_kernel import finish
+
+        a = {k: v.copy() for k, v in self.arrays.items()}
+        finish(
+            a["W1cT"], a["unique"], a["moved"], a["W1pT"], a["W2T"], a["lr_p"], a["d_hid"],
+            a["lr_h"], a["d_out"],
+        )  # fmt: skip
+        hidden = a["b1"].shape[0]
+        W1 = np.empty((hidden, N_INPUT))
+        W1[:, CONTEXT] = a["W1cT"].T
+        W1[:, PROPRIO] = a["W1pT"].T
+        return Weights(W1, a["b1"], np.ascontiguousarray(a["W2T"].T), a["b2"])
+
+
+def _distinct_contexts(contexts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct contexts (in sorted order) and which one each transition shows."""
+    unique, ids = np.unique(contexts.reshape(-1, contexts.shape[-1]), axis=0, return_inverse=True)
+    return unique, ids.reshape(contexts.shape[:3]).astype(np.int64)
+
+
 def train_online(
     weights: Weights,
     learning_rate: float | np.ndarray,
@@ -88,48 +204,13 @@ def train_online(
     weights (``weights`` is left as it was) and each iteration's RMSE, measured before that
     sequence's updates.
 
-    The loop runs compiled (:mod:`icub_affordance.jordan_kernel`, imported here so that only
-    training pays for numba); the torch loop of :mod:`icub_affordance.jordan_torch` is the
-    reference it is tested against.
+    The loop runs compiled (:mod:`icub_affordance.jordan_kernel`, imported only here and in
+    :class:`TrainingState` so that only training pays for numba); the torch loop of
+    :mod:`icub_affordance.jordan_torch` is the reference it is tested against.
     """
-    from .jordan_kernel import train_schedule
-
-    tasks, objects, sequences = (np.ascontiguousarray(a, dtype=np.int64) for a in schedule)
-    contexts = np.ascontiguousarray(contexts, dtype=np.float64)
-    ctx_cols = np.r_[0:N_VISUAL, N_VISUAL + N_PROPRIO : N_INPUT]
-    W1cT = np.ascontiguousarray(weights.W1[:, ctx_cols].T)  # (200, hidden)
-    W1pT = np.ascontiguousarray(weights.W1[:, PROPRIO].T)  # (16, hidden)
-    b1, b2 = weights.b1.copy(), weights.b2.copy()
-    W2T = np.ascontiguousarray(weights.W2.T)  # (hidden, 16)
-    unique, context_ids = np.unique(
-        contexts.reshape(-1, contexts.shape[-1]), axis=0, return_inverse=True
-    )
-    context_ids = context_ids.reshape(contexts.shape[:3]).astype(np.int64)
-    run_ends = np.empty(contexts.shape[:3], dtype=np.int64)
-    for key in np.ndindex(*contexts.shape[:2]):
-        for start, end in equal_runs(contexts[key]):
-            run_ends[key][start:end] = end
-    rmse = np.empty(len(tasks))
-    demos = np.ascontiguousarray(demos, dtype=np.float64)
-    if targets is None:
-        targets = demos
-    elif targets.shape != demos.shape:
-        raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
-    targets = np.ascontiguousarray(targets, dtype=np.float64)
-    grips = np.ascontiguousarray(grips, dtype=np.int64)
-    rates = np.asarray(learning_rate, dtype=np.float64)
-    if rates.ndim and rates.shape != tasks.shape:
-        raise ValueError(f"{rates.shape} learning rates for a schedule of {tasks.shape} iterations")
-    rates = np.ascontiguousarray(np.broadcast_to(rates, tasks.shape))
-    train_schedule(
-        W1cT, W1pT, b1, W2T, b2, rates, np.ascontiguousarray(unique), context_ids, run_ends,
-        demos, targets, grips,
-        tasks, objects, sequences, rmse,
-    )  # fmt: skip
-    W1 = np.empty_like(weights.W1)
-    W1[:, ctx_cols] = W1cT.T
-    W1[:, PROPRIO] = W1pT.T
-    return Weights(W1, b1, np.ascontiguousarray(W2T.T), b2), rmse
+    state = TrainingState.start(weights, contexts)
+    rmse = state.train(learning_rate, contexts, demos, grips, schedule, targets)
+    return state.weights(), rmse
 
 
 def equal_runs(context: np.ndarray) -> list[tuple[int, int]]:

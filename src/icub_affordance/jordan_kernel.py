@@ -88,43 +88,53 @@ def neg_exp(z):
     return out
 
 
-@numba.njit(cache=True, nogil=True, error_model="numpy")
-def train_schedule(
-    W1cT, W1pT, b1, W2T, b2, rates, unique, context_ids, run_ends, demos, targets, grips, tasks,
-    objects, sequences, rmse,
-):  # fmt: skip
-    """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
-
-    Weights, transposed so that the inner loops run over contiguous rows: ``W1cT`` (200, hidden)
-    from the context inputs (visual, goal), ``W1pT`` (16, hidden) from the proprioceptive input,
-    ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,). ``rates`` (iterations,) the learning
-    rate of each iteration's updates. ``unique`` (contexts, 200) the distinct contexts;
-    ``context_ids`` (objects, tasks, steps-1) which of them is the input at each transition;
-    ``run_ends`` (objects, tasks, steps-1) the end of the run of equal contexts that starts at
-    each step; ``demos`` (objects, grips, sequences, steps, 16) the postures fed back as
-    proprioception; ``targets`` (the same shape) what the motor output learns at each next step
-    (``demos`` itself in the paper's reading); ``grips`` (objects, tasks) the target grip;
-    ``tasks``, ``objects``, ``sequences`` (iterations,) the schedule.
-    """
+@numba.njit(cache=True, nogil=True)
+def project_contexts(W1cT, unique, U, gram):
+    """The state's context part at the start: ``U[k] = W1c @ unique[k]`` and the contexts' dot
+    products ``gram[k, q] = unique[k] . unique[q]`` (both zero on entry)."""
     n_ctx, n_hid = W1cT.shape
     n_unique = unique.shape[0]
-    n_pro = W1pT.shape[0]
-    n_out = W2T.shape[1]
-    # U[k] = W1c @ unique[k], kept up to date; moved[k] the sum of lr * dh over context k's steps
-    U = np.zeros((n_unique, n_hid))
-    moved = np.zeros((n_unique, n_hid))
     for k in range(n_unique):
         for i in range(n_ctx):
             ci = unique[k, i]
             for j in range(n_hid):
                 U[k, j] += W1cT[i, j] * ci
-    gram = np.zeros((n_unique, n_unique))
     for k in range(n_unique):
         for q in range(n_unique):
             s = 0.0
             for i in range(n_ctx):
                 s += unique[k, i] * unique[q, i]
             gram[k, q] = s
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def train_schedule(
+    W1pT, b1, W2T, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
+    demos, targets, grips, tasks, objects, sequences, rmse,
+):  # fmt: skip
+    """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
+
+    The training state (``jordan.TrainingState``), carried from one call to the next so that a
+    schedule trained in parts is trained to the same bits as in one call: the weights, transposed
+    so that the inner loops run over contiguous rows, ``W1pT`` (16, hidden) from the
+    proprioceptive input, ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,); the context
+    part ``U`` (contexts, hidden) and ``moved`` (contexts, hidden), the sum of lr * dh over each
+    context's steps, with ``gram`` (contexts, contexts) from :func:`project_contexts`; the last
+    step's pending weight update ``lr_p`` (16,), ``d_hid`` (hidden,), ``lr_h`` (hidden,),
+    ``d_out`` (16,) (zero before the first step).
+
+    The schedule: ``rates`` (iterations,) the learning rate of each iteration's updates;
+    ``context_ids`` (objects, tasks, steps-1) which distinct context is the input at each
+    transition; ``run_ends`` (objects, tasks, steps-1) the end of the run of equal contexts that
+    starts at each step; ``demos`` (objects, grips, sequences, steps, 16) the postures fed back
+    as proprioception; ``targets`` (the same shape) what the motor output learns at each next
+    step (``demos`` itself in the paper's reading); ``grips`` (objects, tasks) the target grip;
+    ``tasks``, ``objects``, ``sequences`` (iterations,) the schedule.
+    """
+    n_hid = W1pT.shape[1]
+    n_unique = U.shape[0]
+    n_pro = W1pT.shape[0]
+    n_out = W2T.shape[1]
     W2 = np.empty((n_out, n_hid))  # W2T's transpose, updated alongside it
     for j in range(n_hid):
         for m in range(n_out):
@@ -139,12 +149,8 @@ def train_schedule(
     back = np.empty(n_hid)
     # A step's updates of W1p, W2T and W2 are made by the next step's loops over those weights,
     # each weight updated just before that loop reads it (one pass over the weights, not two);
-    # the arrays below hold the update: W1p -= lr_p d_hid^T, W2T -= lr_h d_out^T, W2 -= its
-    # transpose. Zero before the first step (nothing to update), flushed after the last.
-    lr_p = np.zeros(n_pro)
-    d_hid = np.zeros(n_hid)
-    lr_h = np.zeros(n_hid)
-    d_out = np.zeros(n_out)
+    # lr_p, d_hid, lr_h and d_out hold the update: W1p -= lr_p d_hid^T, W2T -= lr_h d_out^T, W2
+    # -= its transpose (:func:`finish` makes the last one).
     d_new = np.empty(n_out)
     for it in range(tasks.shape[0]):
         lr = rates[it]
@@ -230,14 +236,20 @@ def train_schedule(
                         U[q, j] -= g * run_sum[j]
             t = end
         rmse[it] = np.sqrt(sq / (steps * n_out))
-    # the last step's pending updates
-    for i in range(n_pro):
+
+
+@numba.njit(cache=True, nogil=True)
+def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
+    """The weights at the end, in place: the last step's pending update made, and ``W1cT`` (the
+    context weights as they started) moved by each context's summed updates."""
+    n_ctx, n_hid = W1cT.shape
+    for i in range(W1pT.shape[0]):
         for j in range(n_hid):
             W1pT[i, j] -= lr_p[i] * d_hid[j]
     for j in range(n_hid):
-        for m in range(n_out):
+        for m in range(W2T.shape[1]):
             W2T[j, m] -= lr_h[j] * d_out[m]
-    for q in range(n_unique):
+    for q in range(unique.shape[0]):
         for i in range(n_ctx):
             ci = unique[q, i]
             if ci != 0.0:

@@ -8,11 +8,14 @@ drawn at random, presented step by step with the demonstrated posture fed back.
 
 from __future__ import annotations
 
+import dataclasses
+import hashlib
+import json
 from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import N_GOAL, N_VISUAL, Weights, train_online
+from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights
 from .spec import (
     CATEGORISATION,
     CUES,
@@ -158,10 +161,63 @@ def learning_rates(config: TrainConfig) -> np.ndarray:
     return rates
 
 
-def train_network(
-    m: Materials, config: TrainConfig, mapping: str, seed: int
-) -> tuple[Weights, dict[str, np.ndarray]]:
-    """Train one network; return its weights and its learning curve (:func:`curve_every`)."""
+@dataclass(frozen=True)
+class Phase1:
+    """A network at the end of phase 1: its training state and phase 1's RMSE per iteration.
+    Phase 1 is the same for two settings that differ only after it (the learning-rate
+    schedule), so one training of it serves both (:func:`train_phase1`, the rule ``phase1``).
+    ``key`` names what phase 1 depends on (:func:`phase1_key`)."""
+
+    key: str
+    state: TrainingState
+    rmse: np.ndarray
+
+    def save(self, path) -> None:
+        from .io import save_npz
+
+        save_npz(path, key=np.array(self.key), done=np.array(self.state.done), rmse=self.rmse,
+                 **self.state.arrays)  # fmt: skip
+
+    @classmethod
+    def load(cls, path) -> Phase1:
+        from .io import load_npz
+
+        arrays = load_npz(path, required=("key", "done", "rmse", "W1cT", "unique"))
+        key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
+        return cls(key, TrainingState(arrays, done), rmse)
+
+
+def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> str:
+    """What phase 1 of a network depends on: its settings but the schedule of its rate (and the
+    curve's rows), its mapping, its seed and a digest of what it learns from."""
+    settings = dataclasses.asdict(config)
+    for after in ("learning_rate_schedule", "curve_rows"):
+        settings.pop(after)
+    digest = hashlib.sha256()
+    for array in (m.visual, m.goal, m.demos, m.targets(config.target)):
+        digest.update(np.ascontiguousarray(array, dtype=np.float64).tobytes())
+    what = settings | {"mapping": mapping, "seed": seed, "materials": digest.hexdigest()}
+    return json.dumps(what, sort_keys=True)
+
+
+@dataclass(frozen=True)
+class _Training:
+    """A network's training, laid out: initial weights, schedule, inputs and rates."""
+
+    weights: Weights
+    schedule: tuple[np.ndarray, np.ndarray, np.ndarray]
+    contexts: np.ndarray
+    grips: np.ndarray
+    targets: np.ndarray | None
+    rates: np.ndarray
+
+    def part(self, begin: int, end: int) -> tuple:
+        """The arguments of ``TrainingState.train`` for iterations begin..end-1."""
+        tasks, objects, sequences = (a[begin:end] for a in self.schedule)
+        return self.rates[begin:end], self.contexts, (tasks, objects, sequences), self.targets
+
+
+def _training(m: Materials, config: TrainConfig, mapping: str, seed: int) -> _Training:
     rng = np.random.default_rng(seed)
     weights = Weights.init(config.hidden, config.init_scale, rng)
     tasks, objects, sequences = schedule(config, len(m.objects), m.n_train_sequences, rng)
@@ -179,10 +235,46 @@ def train_network(
         ]
     )
     targets = None if config.target == "sensed" else m.targets(config.target)
-    trained, rmse = train_online(
-        weights, learning_rates(config), contexts, m.demos, grips, (tasks, objects, sequences),
-        targets,
-    )  # fmt: skip
+    return _Training(
+        weights, (tasks, objects, sequences), contexts, grips, targets, learning_rates(config)
+    )
+
+
+def _train_part(m: Materials, state: TrainingState, training: _Training, begin: int, end: int):
+    rates, contexts, part, targets = training.part(begin, end)
+    return state.train(rates, contexts, m.demos, training.grips, part, targets)
+
+
+def train_phase1(m: Materials, config: TrainConfig, mapping: str, seed: int) -> Phase1:
+    """Phase 1 of one network, kept to be continued by :func:`train_network`."""
+    training = _training(m, config, mapping, seed)
+    state = TrainingState.start(training.weights, training.contexts)
+    rmse = _train_part(m, state, training, 0, config.phase1_iterations)
+    return Phase1(phase1_key(m, config, mapping, seed), state, rmse)
+
+
+def train_network(
+    m: Materials, config: TrainConfig, mapping: str, seed: int, after: Phase1 | None = None
+) -> tuple[Weights, dict[str, np.ndarray]]:
+    """Train one network; return its weights and its learning curve (:func:`curve_every`).
+
+    ``after``: its phase 1, trained already (:func:`train_phase1`, with settings that differ
+    at most after phase 1): the network continues from it, to the same bits as when trained
+    whole.
+    """
+    training = _training(m, config, mapping, seed)
+    if after is None:
+        after = train_phase1(m, config, mapping, seed)
+    elif after.key != phase1_key(m, config, mapping, seed):
+        raise ValueError(
+            "the saved phase 1 was trained with other settings, mapping, seed or materials than "
+            "this network's: delete it and rerun `snakemake -c2` to train it again"
+        )
+    state = after.state.copy()
+    rest = _train_part(m, state, training, config.phase1_iterations, config.iterations)
+    rmse = np.concatenate([after.rmse, rest])
+    trained = state.weights()
+    tasks, objects, sequences = training.schedule
     kept = np.arange(curve_every(config) - 1, config.iterations, curve_every(config))
     curve = {
         "iteration": kept + 1,

@@ -144,6 +144,41 @@ class RunPlan:
     def confirmation_runs(self) -> list[str]:
         return [row["confirmation"] for row in self.confirmation]
 
+    def phase1_run(self, run: str) -> str | None:
+        """The run whose phase 1 this run's networks continue from (rule run_phase1), or None
+        (it trains whole). Robot variants of this build, trained in one job, whose settings
+        differ only in the learning-rate schedule, which acts after phase 1, share it: the
+        first of them (in the plan's order) trains it once, and each continues from it to the
+        same bits as when trained whole. Only for these long trainings: a short one costs less
+        than its file."""
+        if not self._may_share_phase1(run):
+            return None
+        key = _phase1_settings(self.config(run))
+        sharing = [
+            r
+            for r in self.runs
+            if self._may_share_phase1(r) and _phase1_settings(self.config(r)) == key
+        ]
+        return sharing[0] if len(sharing) > 1 else None
+
+    def _may_share_phase1(self, run: str) -> bool:
+        return (
+            run in self.robot_runs  # tested in this build (all of the grid with robustness)
+            and not self.jobs_per_network(run)
+            and self.networks(run) == self.networks(OWN)
+        )
+
+    @property
+    def measured_groups(self) -> dict[str, list[str]]:
+        """The runs that are trained and then only scored on the declared measures (the readings'
+        and the size study's own runs), grouped by seed (``seed<n>``): one process trains and
+        measures a group, so a dozen short runs pay one start-up."""
+        groups: dict[str, list[str]] = {}
+        for name, run in self.runs.items():
+            if run.origin in ("reading", "size_dose"):
+                groups.setdefault(f"seed{run.config['seed']}", []).append(name)
+        return groups
+
     def trained_for_robot(self, run: str) -> bool:
         """A robot variant or confirmation of its own: trained, then tested on the robot only
         (its in-silico closed loop would feed a servo target back as the posture reached)."""
@@ -158,6 +193,17 @@ class RunPlan:
             for row in self.robot_variants
             if tuple(row[k] for k in keys) == variant.values()
         )
+
+
+def _phase1_settings(config: Mapping[str, Any]) -> dict[str, Any]:
+    """A run's config without what acts only after phase 1 (or on no result): the rate's
+    schedule and the learning curve's rows."""
+    network = {
+        k: v
+        for k, v in config["network"].items()
+        if k not in ("learning_rate_schedule", "curve_rows")
+    }
+    return dict(config) | {"network": network}
 
 
 def plan_runs(config: Mapping[str, Any]) -> RunPlan:

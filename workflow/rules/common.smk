@@ -63,7 +63,26 @@ NETWORKS = PLAN.networks(OWN)
 NETWORK_JOB_RUNS = [
     run for run in PLAN.runs if PLAN.jobs_per_network(run) or PLAN.networks(run) != NETWORKS
 ]
-GROUPED_RUNS = [run for run in PLAN.runs if run not in NETWORK_JOB_RUNS]
+# The readings' and the size study's runs, trained and measured in one job per seed (rules
+# measured_<group>, readings.smk); no other rule makes their networks or measures.
+MEASURED_GROUPS = PLAN.measured_groups
+MEASURED_RUNS = [run for runs in MEASURED_GROUPS.values() for run in runs]
+GROUPED_RUNS = [
+    run for run in PLAN.runs if run not in NETWORK_JOB_RUNS and run not in MEASURED_RUNS
+]
+# The runs that train a phase 1 for themselves and others (rule run_phase1: robot variants that
+# differ only in the learning-rate schedule, runs.py: RunPlan.phase1_run).
+PHASE1_RUNS = list(dict.fromkeys(r for r in map(PLAN.phase1_run, PLAN.runs) if r is not None))
+
+
+def phase1_files(wildcards):
+    """An input: the phase 1 this run's networks continue from (none: they train whole)."""
+    owner = PLAN.phase1_run(run_of(wildcards))
+    if owner is None:
+        return []
+    return [PLAN.path(owner, f"train/net{net}/phase1.npz") for net in NETWORKS]
+
+
 # The runs whose networks drive the robot (every robot variant and confirmation), and those
 # tested in one job (all but the config's own), grouped by their network indices: a rule's
 # outputs are fixed when the rules are read, so each group has its rule (embodied.smk).

@@ -19,6 +19,8 @@ rule measures:
     params:
         network=run_section("network"),
         measures=config["readings"]["measures"],
+    wildcard_constraints:
+        folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_RUNS]),
     threads: 1
     resources:
         mem_mb=1000,
@@ -29,6 +31,56 @@ rule measures:
         "data/benchmarks/{folder}measures.tsv"
     script:
         "../scripts/measures.py"
+
+
+def measured_run(run):
+    """One run of a measured group, as its job's script reads it: settings and file paths."""
+    inputs = model_inputs({"folder": PLAN.folder(run)})
+    nets = PLAN.networks(run)
+    return {
+        "run": run,
+        "network": settings(PLAN.config(run)["network"]),
+        "seed": PLAN.config(run)["seed"],
+        **inputs,
+        "curves": [PLAN.path(run, f"train/net{net}/curve.csv") for net in nets],
+        "weights": [PLAN.path(run, f"train/net{net}/weights.npz") for net in nets],
+        "trials": PLAN.path(run, "eval/measures.csv"),
+        "json": PLAN.path(run, "eval/measures.json"),
+    }
+
+
+# The measured runs of a seed (common.smk: MEASURED_GROUPS) trained and measured in one job: the
+# steps of rules run_train and measures, the same files. A rule's outputs are fixed when the
+# rules are read, so each group has its rule.
+for _group, _runs in MEASURED_GROUPS.items():
+    _table = [measured_run(run) for run in _runs]
+
+    rule:
+        """A seed's measured runs (readings, size study): each run's networks trained, then
+        every test trial scored on the declared measures."""
+        name:
+            f"measured_{_group}"
+        input:
+            models=sorted({row[key] for row in _table for key in ("maps", "soms", "demos")}),
+            code=script_code("measured_runs"),
+        output:
+            curves=[path for row in _table for path in row["curves"]],
+            weights=[path for row in _table for path in row["weights"]],
+            trials=[row["trials"] for row in _table],
+            json=[row["json"] for row in _table],
+        params:
+            runs=_table,
+            measures=config["readings"]["measures"],
+        threads: 1
+        resources:
+            mem_mb=1000,
+            runtime=30,
+        log:
+            f"data/logs/measured/{_group}.log",
+        benchmark:
+            f"data/benchmarks/measured/{_group}.tsv"
+        script:
+            "../scripts/measured_runs.py"
 
 
 rule readings:

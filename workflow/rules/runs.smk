@@ -37,9 +37,41 @@ rule run_demos:
         "../scripts/demos_run.py"
 
 
+# Phase 1 of a run's networks, trained once for the robot variants that differ only after it
+# (common.smk: PHASE1_RUNS): each continues from it in its run_train, to the same bits.
+rule run_phase1:
+    """Phase 1 (grasping only) of a run's networks, each at its own seed, saved as a training
+    state for the runs that share it (runs.py: RunPlan.phase1_run)."""
+    input:
+        unpack(model_inputs),
+        code=script_code("phase1"),
+    output:
+        [f"data/{{folder}}train/net{net}/phase1.npz" for net in NETWORKS],
+    wildcard_constraints:
+        folder=folders_pattern(PHASE1_RUNS),
+    params:
+        network=run_section("network"),
+        seed=run_section("seed"),
+    threads: 1
+    priority: 1  # two trainings wait on it
+    resources:
+        mem_mb=1000,
+        runtime=20,
+    log:
+        "data/logs/{folder}phase1.log",
+    benchmark:
+        "data/benchmarks/{folder}phase1.tsv"
+    script:
+        "../scripts/phase1.py"
+
+
 # A run's networks in one job (common.smk: GROUPED_RUNS): same arithmetic, same seeds, so the
-# same files as one job each.
+# same files as one job each; continued from a shared phase 1 where the run has one.
 use rule train as run_train with:
+    input:
+        unpack(model_inputs),
+        phase1=phase1_files,
+        code=script_code("train"),
     output:
         curve=[f"data/{{folder}}train/net{net}/curve.csv" for net in NETWORKS],
         weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in NETWORKS],

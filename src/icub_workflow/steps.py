@@ -1,0 +1,127 @@
+"""What a training or measuring job does, for the scripts that run it: one run per job (rules
+train, run_train, measures) or several runs in one process (the measured runs of a seed, rule
+``measured_<group>``: one start-up, one load of the compiled trainer, for a dozen runs).
+
+Plain functions of paths and settings, without Snakemake, so that every rule that runs a step
+runs the same code, and a run's files are the same bytes whichever rule made them.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+import pandas as pd
+
+from icub_affordance.io import atomic_path, load_npz, save_npz, write_columns, write_text
+from icub_affordance.jordan import Weights
+from icub_affordance.spec import TASKS
+from icub_affordance.train import (
+    Materials,
+    Phase1,
+    TrainConfig,
+    mapping_of,
+    network_seed,
+    train_network,
+    train_phase1,
+)
+
+
+def curve_columns(curve: Mapping[str, np.ndarray], objects: Sequence[str]) -> dict[str, list]:
+    """The learning curve's table, column by column: one row per kept iteration."""
+    return {
+        "iteration": curve["iteration"].tolist(),
+        "phase": curve["phase"].tolist(),
+        "task": [TASKS[task] for task in curve["task"].tolist()],
+        "object": [objects[obj] for obj in curve["object"].tolist()],
+        "sequence": curve["sequence"].tolist(),
+        "rmse": curve["rmse"].tolist(),
+    }
+
+
+def _networks(network: Mapping, nets: Sequence[int] | None, files: Sequence[str]):
+    """A run's training settings, and each network asked for with its mapping: (net, mapping)."""
+    settings = dict(network)
+    n_networks = settings.pop("networks")
+    # a confirmation's fresh networks start at this index (robot.confirmation); others at 0
+    first = settings.pop("first_network", 0)
+    nets = list(range(first, first + n_networks)) if nets is None else list(nets)
+    if len(files) != len(nets) or not first <= min(nets) <= max(nets) < first + n_networks:
+        raise ValueError(
+            f"networks {nets} asked for, but the run's are {first}..{first + n_networks - 1}"
+        )
+    # each network's mapping by its place in the run
+    return TrainConfig(**settings), [(net, mapping_of(net - first, n_networks)) for net in nets]
+
+
+def train_phase1s(
+    materials: Materials, network: Mapping, seed: int, phase1_files: Sequence[str]
+) -> None:
+    """Phase 1 of each of a run's networks, saved for the runs that continue from it."""
+    config, nets = _networks(network, None, phase1_files)
+    for (net, mapping), path in zip(nets, phase1_files, strict=True):
+        train_phase1(materials, config, mapping, network_seed(seed, net)).save(path)
+
+
+def train_networks(
+    materials: Materials,
+    network: Mapping,
+    seed: int,
+    nets: Sequence[int] | None,
+    curves: Sequence[str],
+    weights_files: Sequence[str],
+    phase1_files: Sequence[str] = (),
+) -> None:
+    """Train a run's networks ``nets`` (all of them when None) with its ``network`` settings
+    (config key ``network``), each from its own seed, or continued from the phase 1 in
+    ``phase1_files`` (one per network, in order; :func:`train_phase1s`); write each one's curve
+    and weights."""
+    config, nets = _networks(network, nets, curves)
+    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else [None] * len(nets)
+    if len(starts) != len(nets):
+        raise ValueError(f"{len(starts)} saved phase 1s for {len(nets)} networks")
+    for (net, mapping), curve_path, weights_path, after in zip(
+        nets, curves, weights_files, starts, strict=True
+    ):
+        weights, curve = train_network(materials, config, mapping, network_seed(seed, net), after)
+        weights.check_finite(f"network {net:02d}")
+        if not np.all(np.isfinite(curve["rmse"])):
+            raise FloatingPointError(
+                f"network {net:02d}: its training error became NaN (the outputs diverged). "
+                "Lower config network.learning_rate or network.init_scale."
+            )
+        # not pandas: a training job is short
+        write_columns(curve_path, curve_columns(curve, materials.objects))
+        save_npz(weights_path, **weights.as_dict())
+        final = curve["rmse"][-500:].mean()
+        print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
+
+
+def measure_networks(
+    materials: Materials,
+    network: Mapping,
+    weights_files: Sequence[str],
+    measures: Sequence[str],
+    trials_path: str,
+    json_path: str,
+) -> None:
+    """Score every test trial of a run's networks on each declared measure (``trials_path``),
+    and each measure's per-network contrasts and per-object means (``json_path``)."""
+    from icub_affordance.measures import measure_network
+    from icub_affordance.readings import analyse_measures
+
+    n_networks = network["networks"]
+    rows = []
+    for net, path in enumerate(weights_files):
+        weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+        mapping = mapping_of(net, n_networks)
+        rows += measure_network(
+            materials, weights, net, mapping, network["categorisation_cue"], network["target"]
+        )
+    trials = pd.DataFrame(rows)
+    with atomic_path(trials_path) as tmp:
+        trials.to_csv(tmp, index=False, float_format="%.6f")
+    trials = pd.read_csv(trials_path, keep_default_na=False)  # as readers see it
+    result = analyse_measures(trials, list(measures))
+    write_text(json_path, json.dumps(result, indent=2, sort_keys=True) + "\n")

@@ -1,0 +1,13 @@
+"""Phase 1 of a run's networks, saved for the runs that continue from it (rule run_phase1)."""
+
+from icub_affordance.io import redirect_log
+from icub_affordance.train import load_materials
+from icub_workflow.steps import train_phase1s
+
+with redirect_log(snakemake.log[0]):
+    train_phase1s(
+        load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos),
+        snakemake.params.network,
+        snakemake.params.seed,
+        list(snakemake.output),
+    )
