@@ -137,15 +137,18 @@ def test_a_long_trainings_curve_keeps_every_kth_iteration_of_the_full_curve():
 
 
 def test_a_network_continued_from_a_shared_phase_1_is_the_network_trained_whole(tmp_path):
-    """Phase 1 trained at the constant rate, saved and loaded, then continued with the annealed
-    rate: the same bits as the annealed network trained in one go (so two robot variants that
-    differ only in the schedule share phase 1). A phase 1 of other settings is refused."""
+    """Phase 1 trained at the constant rate with the cue at the first step, saved and loaded,
+    then continued with the annealed rate and the cue at every step: the same bits as that
+    network trained in one go (so robot variants that differ only in what acts after phase 1
+    share it). A phase 1 of other settings is refused."""
     from icub_affordance.train import Phase1, train_phase1
 
     m = synthetic_materials()
     common = {"iterations": 600, "phase1_iterations": 300, "hidden": 12}
-    constant = train_config(**common, learning_rate_schedule="constant")
-    anneal = train_config(**common, learning_rate_schedule="anneal")
+    constant = train_config(
+        **common, learning_rate_schedule="constant", categorisation_cue="first_step"
+    )
+    anneal = train_config(**common, learning_rate_schedule="anneal", categorisation_cue="all_steps")
     train_phase1(m, constant, "B", 4).save(tmp_path / "phase1.npz")
     shared = Phase1.load(tmp_path / "phase1.npz")
     continued, curve = train_network(m, anneal, "B", 4, after=shared)

@@ -17,6 +17,7 @@ import numpy as np
 
 from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights
 from .spec import (
+    AFTER_PHASE1,
     CATEGORISATION,
     CUES,
     GRASPING,
@@ -164,9 +165,10 @@ def learning_rates(config: TrainConfig) -> np.ndarray:
 @dataclass(frozen=True)
 class Phase1:
     """A network at the end of phase 1: its training state and phase 1's RMSE per iteration.
-    Phase 1 is the same for two settings that differ only after it (the learning-rate
-    schedule), so one training of it serves both (:func:`train_phase1`, the rule ``phase1``).
-    ``key`` names what phase 1 depends on (:func:`phase1_key`)."""
+    Phase 1 is the same for settings that differ only after it (spec.AFTER_PHASE1: the cue
+    timing, the learning-rate schedule), so one training of it serves them all
+    (:func:`train_phase1`, the rule ``run_phase1``). ``key`` names what phase 1 depends on
+    (:func:`phase1_key`)."""
 
     key: str
     state: TrainingState
@@ -188,10 +190,10 @@ class Phase1:
 
 
 def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> str:
-    """What phase 1 of a network depends on: its settings but the schedule of its rate (and the
-    curve's rows), its mapping, its seed and a digest of what it learns from."""
+    """What phase 1 of a network depends on: its settings but those that act only after it
+    (spec.AFTER_PHASE1), its mapping, its seed and a digest of what it learns from."""
     settings = dataclasses.asdict(config)
-    for after in ("learning_rate_schedule", "curve_rows"):
+    for after in AFTER_PHASE1:
         settings.pop(after)
     digest = hashlib.sha256()
     for array in (m.visual, m.goal, m.demos, m.targets(config.target)):

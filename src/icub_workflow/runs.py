@@ -17,6 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from icub_affordance.spec import AFTER_PHASE1
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.configs import merged
 
@@ -147,10 +148,10 @@ class RunPlan:
     def phase1_run(self, run: str) -> str | None:
         """The run whose phase 1 this run's networks continue from (rule run_phase1), or None
         (it trains whole). Robot variants of this build, trained in one job, whose settings
-        differ only in the learning-rate schedule, which acts after phase 1, share it: the
-        first of them (in the plan's order) trains it once, and each continues from it to the
-        same bits as when trained whole. Only for these long trainings: a short one costs less
-        than its file."""
+        differ only in what acts after phase 1 (the cue timing, the learning-rate schedule:
+        spec.AFTER_PHASE1) share it: the first of them (in the plan's order) trains it once,
+        and each continues from it to the same bits as when trained whole. Only for these long
+        trainings: a short one costs less than its file."""
         if not self._may_share_phase1(run):
             return None
         key = _phase1_settings(self.config(run))
@@ -196,13 +197,9 @@ class RunPlan:
 
 
 def _phase1_settings(config: Mapping[str, Any]) -> dict[str, Any]:
-    """A run's config without what acts only after phase 1 (or on no result): the rate's
-    schedule and the learning curve's rows."""
-    network = {
-        k: v
-        for k, v in config["network"].items()
-        if k not in ("learning_rate_schedule", "curve_rows")
-    }
+    """A run's config without what acts only after phase 1 (or on no result: spec.AFTER_PHASE1,
+    the cue timing, the rate's schedule, the learning curve's rows)."""
+    network = {k: v for k, v in config["network"].items() if k not in AFTER_PHASE1}
     return dict(config) | {"network": network}
 
 

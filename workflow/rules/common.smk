@@ -55,23 +55,36 @@ PLAN = plan_runs(config)
 # each run of `runs:`, laid over the config: the schema and the rules between keys
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
 NETWORKS = PLAN.networks(OWN)
-# A run's networks are trained in one job (runs.smk: run_train): a network takes about 0.15 s of
-# arithmetic and a job about 1 s to start. The exceptions, a job per network (by the rule train) are the
-# config's own run, whose networks start in parallel at the start (the robot test waits on
-# them), and a run with another number of networks (a rule's outputs are fixed when the rules
-# are read, so run_train serves the runs with the config's number).
+# the confirmations' fresh network indices (config robot.confirmation), the same for each
+FRESH_NETWORKS = next(
+    (PLAN.networks(r) for r in PLAN.confirmation_runs if PLAN.networks(r) != NETWORKS), []
+)
+# A run's networks are trained in one job (runs.smk: run_train, and confirmation_train for the
+# confirmations' fresh indices): a job takes about 1 s to start. The exceptions, a job per network
+# (by the rule train) are the config's own run, whose networks start in parallel at the start
+# (the robot test waits on them), and a run with another set of networks (a rule's outputs are
+# fixed when the rules are read, so those two rules serve the runs with these two sets).
 NETWORK_JOB_RUNS = [
-    run for run in PLAN.runs if PLAN.jobs_per_network(run) or PLAN.networks(run) != NETWORKS
+    run
+    for run in PLAN.runs
+    if PLAN.jobs_per_network(run) or PLAN.networks(run) not in (NETWORKS, FRESH_NETWORKS)
+]
+FRESH_RUNS = [
+    run
+    for run in PLAN.runs
+    if run not in NETWORK_JOB_RUNS and FRESH_NETWORKS and PLAN.networks(run) == FRESH_NETWORKS
 ]
 # The readings' and the size study's runs, trained and measured in one job per seed (rules
 # measured_<group>, readings.smk); no other rule makes their networks or measures.
 MEASURED_GROUPS = PLAN.measured_groups
 MEASURED_RUNS = [run for runs in MEASURED_GROUPS.values() for run in runs]
 GROUPED_RUNS = [
-    run for run in PLAN.runs if run not in NETWORK_JOB_RUNS and run not in MEASURED_RUNS
+    run
+    for run in PLAN.runs
+    if run not in (*NETWORK_JOB_RUNS, *MEASURED_RUNS, *FRESH_RUNS)
 ]
 # The runs that train a phase 1 for themselves and others (rule run_phase1: robot variants that
-# differ only in the learning-rate schedule, runs.py: RunPlan.phase1_run).
+# differ only in the cue timing and the rate's schedule, runs.py: RunPlan.phase1_run).
 PHASE1_RUNS = list(dict.fromkeys(r for r in map(PLAN.phase1_run, PLAN.runs) if r is not None))
 
 
@@ -93,8 +106,6 @@ ROBOT_GROUPS = {}
 for _run in ROBOT_TESTED_RUNS:
     if not PLAN.jobs_per_network(_run):
         ROBOT_GROUPS.setdefault(tuple(PLAN.networks(_run)), []).append(_run)
-# the confirmations' fresh network indices (config robot.confirmation), the same for each
-FRESH_NETWORKS = next((list(nets) for nets in ROBOT_GROUPS if list(nets) != NETWORKS), [])
 if len(ROBOT_GROUPS.keys() - {tuple(NETWORKS), tuple(FRESH_NETWORKS)}):
     raise ValueError(f"robot runs with more than two sets of network indices: {ROBOT_GROUPS}")
 # The filmstrip and the films show the first network of each mapping: for any object one of them

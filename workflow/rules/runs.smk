@@ -37,8 +37,9 @@ rule run_demos:
         "../scripts/demos_run.py"
 
 
-# Phase 1 of a run's networks, trained once for the robot variants that differ only after it
-# (common.smk: PHASE1_RUNS): each continues from it in its run_train, to the same bits.
+# Phase 1 of a run's networks, trained once for the robot variants that differ only in what acts
+# after it, the cue timing and the rate's schedule (common.smk: PHASE1_RUNS): each continues
+# from it in its run_train, to the same bits.
 rule run_phase1:
     """Phase 1 (grasping only) of a run's networks, each at its own seed, saved as a training
     state for the runs that share it (runs.py: RunPlan.phase1_run)."""
@@ -82,3 +83,15 @@ use rule train as run_train with:
         "data/logs/{folder}train.log",
     benchmark:
         "data/benchmarks/{folder}train.tsv"
+
+
+if FRESH_NETWORKS:
+
+    # The confirmations' fresh networks in one job each (common.smk: FRESH_RUNS).
+    use rule run_train as confirmation_train with:
+        output:
+            curve=[f"data/{{folder}}train/net{net}/curve.csv" for net in FRESH_NETWORKS],
+            weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in FRESH_NETWORKS],
+        wildcard_constraints:
+            folder=folders_pattern(FRESH_RUNS),
+        priority: 1  # the longest training, and its robot test waits on all of it
