@@ -57,7 +57,13 @@ def test_columns_are_written_as_rows_would_be(tmp_path):
     columns["rmse"][3] = math.nan
     columns["rmse"][4] = 2.5e-7
     columns["iteration"][5] = None
-    for table in (columns, {k: v for k, v in columns.items() if k != "task"}):
+    plain = {  # each column of one plain type: written a column at once
+        "iteration": list(range(1, 301)),
+        "task": ["grasping", "categorisation"] * 150,
+        "rmse": rng.random(300).tolist(),
+        "held": [True, False, True] * 100,
+    }
+    for table in (columns, {k: v for k, v in columns.items() if k != "task"}, plain):
         rows = [dict(zip(table, row, strict=True)) for row in zip(*table.values(), strict=True)]
         write_csv(tmp_path / "rows.csv", rows)
         write_columns(tmp_path / "columns.csv", table)

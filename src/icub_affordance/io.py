@@ -119,23 +119,33 @@ def write_columns(path: str | os.PathLike[str], columns: dict[str, list], digits
 
     names = list(columns)
     values = [list(columns[name]) for name in names]
+    kinds = [set(map(type, column)) for column in values]
     quoted = (",", '"', "\n", "\r")
-    if any(isinstance(v, str) and any(q in v for q in quoted) for c in values for v in c):
+    texts = (
+        v for column, kind in zip(values, kinds, strict=True) if str in kind for v in set(column)
+    )
+    if any(isinstance(v, str) and any(q in v for q in quoted) for v in texts):
         write_csv(
             path, [dict(zip(names, row, strict=True)) for row in zip(*values, strict=True)], digits
         )
         return
+    fixed = f"{{:.{digits}f}}".format
 
     def cell(value: object) -> str:
         """As csv.writer would write it (None and NaN empty), floats to ``digits`` places."""
         if isinstance(value, float):
-            return "" if math.isnan(value) else f"{value:.{digits}f}"
+            return "" if math.isnan(value) else fixed(value)
         return "" if value is None else str(value)
 
-    def cells(column: list) -> list[str]:
+    def cells(column: list, kind: set[type]) -> list[str]:
+        # a column of one plain type at once (the same text as cell gives each value)
+        if kind <= {int} or kind <= {str}:
+            return list(map(str, column))
+        if kind <= {float} and not any(map(math.isnan, column)):
+            return list(map(fixed, column))
         return [cell(v) for v in column]
 
-    lines = [",".join(names), *map(",".join, zip(*map(cells, values), strict=True))]
+    lines = [",".join(names), *map(",".join, zip(*map(cells, values, kinds), strict=True))]
     write_text(path, "\n".join(lines) + "\n")
 
 

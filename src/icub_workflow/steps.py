@@ -28,6 +28,18 @@ from icub_affordance.train import (
 )
 
 
+def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
+    """Train the three SOMs on the objects' visual maps; save their activations and weights."""
+    from icub_affordance.som import SOMConfig, active_units, train_soms
+
+    maps = load_npz(maps_path, required=tuple(objects))
+    visual = np.array([maps[o] for o in objects])
+    trained = train_soms(visual, SOMConfig(**soms), seed)
+    save_npz(path, objects=np.array(objects), tasks=np.array(TASKS), **vars(trained))
+    for obj, act in zip(objects, trained.object_act, strict=True):
+        print(f"{obj}: {active_units(act)} Object-map units above 0.5")
+
+
 def curve_columns(curve: Mapping[str, np.ndarray], objects: Sequence[str]) -> dict[str, list]:
     """The learning curve's table, column by column: one row per kept iteration."""
     return {

@@ -78,6 +78,8 @@ FRESH_RUNS = [
 # measured_<group>, readings.smk); no other rule makes their networks or measures.
 MEASURED_GROUPS = PLAN.measured_groups
 MEASURED_RUNS = [run for runs in MEASURED_GROUPS.values() for run in runs]
+# those of them that make their own maps, in that job too (not by rule soms)
+MEASURED_SOMS_RUNS = [run for run in MEASURED_RUNS if PLAN.makes(run, "soms")]
 GROUPED_RUNS = [
     run
     for run in PLAN.runs

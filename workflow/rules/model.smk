@@ -10,6 +10,8 @@ rule soms:
         code=script_code("soms"),
     output:
         "data/{folder}soms/soms.npz",
+    wildcard_constraints:
+        folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_SOMS_RUNS]),
     params:
         soms=run_section("soms"),
         seed=run_section("seed"),

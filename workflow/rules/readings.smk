@@ -42,6 +42,8 @@ def measured_run(run):
         "network": settings(PLAN.config(run)["network"]),
         "seed": PLAN.config(run)["seed"],
         **inputs,
+        "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
+        "som_settings": settings(PLAN.config(run)["soms"]),
         "curves": [PLAN.path(run, f"train/net{net}/curve.csv") for net in nets],
         "weights": [PLAN.path(run, f"train/net{net}/weights.npz") for net in nets],
         "trials": PLAN.path(run, "eval/measures.csv"),
@@ -50,7 +52,7 @@ def measured_run(run):
 
 
 # The measured runs of a seed (common.smk: MEASURED_GROUPS) trained and measured in one job: the
-# steps of rules run_train and measures, the same files. A rule's outputs are fixed when the
+# steps of rules soms (for a run that makes its own maps), run_train and measures, the same files. A rule's outputs are fixed when the
 # rules are read, so each group has its rule.
 for _group, _runs in MEASURED_GROUPS.items():
     _table = [measured_run(run) for run in _runs]
@@ -61,15 +63,20 @@ for _group, _runs in MEASURED_GROUPS.items():
         name:
             f"measured_{_group}"
         input:
-            models=sorted({row[key] for row in _table for key in ("maps", "soms", "demos")}),
+            models=sorted(
+                {row[key] for row in _table for key in ("maps", "soms", "demos")}
+                - {row["soms"] for row in _table if row["makes_soms"]}
+            ),
             code=script_code("measured_runs"),
         output:
+            soms=[row["soms"] for row in _table if row["makes_soms"]],
             curves=[path for row in _table for path in row["curves"]],
             weights=[path for row in _table for path in row["weights"]],
             trials=[row["trials"] for row in _table],
             json=[row["json"] for row in _table],
         params:
             runs=_table,
+            objects=settings(config["objects"]),
             measures=config["readings"]["measures"],
         threads: 1
         resources:

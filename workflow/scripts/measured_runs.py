@@ -1,13 +1,18 @@
-"""Several measured runs (readings, size study) of one seed in one process: each run's networks
-trained, then scored on the declared measures (the steps of rules run_train and measures)."""
+"""Several measured runs (readings, size study) of one seed in one process: each run's maps
+trained where the run makes its own, its networks trained, then scored on the declared measures
+(the steps of rules soms, run_train and measures)."""
 
 from icub_affordance.io import redirect_log
 from icub_affordance.train import load_materials
-from icub_workflow.steps import measure_networks, train_networks
+from icub_workflow.steps import make_soms, measure_networks, train_networks
 
 with redirect_log(snakemake.log[0]):
     for run in snakemake.params.runs:
         print(f"run {run['run']}")
+        if run["makes_soms"]:
+            make_soms(
+                run["maps"], snakemake.params.objects, run["som_settings"], run["seed"], run["soms"]
+            )
         materials = load_materials(run["maps"], run["soms"], run["demos"])
         train_networks(materials, run["network"], run["seed"], None, run["curves"], run["weights"])
         measure_networks(
