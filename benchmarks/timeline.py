@@ -16,26 +16,7 @@ import argparse
 import sys
 from pathlib import Path
 
-import numpy as np
-
-
-def jobs(directory: Path) -> list[tuple[float, float, str]]:
-    rows = []
-    for path in sorted(directory.rglob("*.tsv")):
-        name = str(path.relative_to(directory).with_suffix(""))
-        if name.startswith("sweep"):
-            continue
-        lines = path.read_text().splitlines()
-        try:
-            wall = float(lines[-1].split("\t")[0])
-        except (IndexError, ValueError):
-            sys.exit(
-                f"{path} is not a Snakemake benchmark file. Time a complete run from scratch, "
-                "which rewrites every benchmark file: `snakemake -c2 --forceall`"
-            )
-        end = path.stat().st_mtime
-        rows.append((end - wall, end, name))
-    return sorted(rows)
+from icub_workflow.benchmark_tables import job_times, timeline
 
 
 def main() -> None:
@@ -43,23 +24,21 @@ def main() -> None:
     parser.add_argument("directory", nargs="?", default="data/benchmarks", type=Path)
     parser.add_argument("--cores", type=int, default=2)
     args = parser.parse_args()
-    rows = jobs(args.directory)
+    try:
+        rows = job_times(args.directory)
+    except ValueError as error:
+        sys.exit(str(error))
     if not rows:
         sys.exit(f"no benchmark files under {args.directory}: run `snakemake -c2` first")
     t0 = rows[0][0]
-    span = max(end for _, end, _ in rows) - t0
     for start, end, name in rows:
         print(f"{start - t0:7.1f} {end - t0:7.1f}  {name}")
-    grid = np.arange(0.0, span, 0.05)
-    running = np.zeros_like(grid)
-    for start, end, _ in rows:
-        running += (grid >= start - t0) & (grid < end - t0)
-    idle = float(np.clip(args.cores - running, 0, None).sum() * 0.05)
-    work = sum(end - start for start, end, _ in rows)
+    line = timeline(rows, args.cores)
+    span, work = line["span_s"], line["job_s"]
     print(
-        f"\n{len(rows)} jobs; span {span:.1f} s; sum of job wall times {work:.1f} s; "
+        f"\n{line['jobs']} jobs; span {span:.1f} s; sum of job wall times {work:.1f} s; "
         f"{work / (args.cores * span):.0%} of {args.cores} cores' time in jobs; "
-        f"idle core-seconds {idle:.1f}"
+        f"idle core-seconds {line['idle_core_s']:.1f}"
     )
 
 

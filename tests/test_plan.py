@@ -202,6 +202,30 @@ def test_robot_variants_that_differ_only_after_phase_1_share_it(plan, config):
     )
 
 
+def test_the_scale_counts_what_each_build_trains(plan, config):
+    """The reproduce page's scale: the default build and the full one, counted from the plan
+    and checked against the config's lists."""
+    study, readings = config["size_dose"], config["readings"]
+    per_replication = len(study["categorisation_cue"]) * (len(study["doses"]) + study["removal"])
+    assert plan.scale() == {
+        "reading_seeds": 1,
+        "readings": len(readings["categorisation_cue"]) * len(readings["goal_response"]),
+        "size_runs": per_replication * study["replications"],
+        "size_replications": study["replications"],
+        "variants": len(config["robot"]["default"]),
+        "fresh": config["robot"]["confirmation"]["networks"],
+        "sweep": 0,
+    }
+    full = plan_runs(config | {"robustness": True}).scale()
+    assert full["reading_seeds"] == 1 + len(readings["seeds"])
+    assert full["size_runs"] == per_replication * study["robustness_replications"]
+    assert full["fresh"] == config["robot"]["confirmation"]["robustness_networks"]
+    assert full["variants"] + 1 == len(NetworkVariant.grid(config["robot"]))
+    assert full["sweep"] == len(config["sweep"]["seeds"]) * len(
+        config["sweep"]["categorisation_cue"]
+    )
+
+
 # ---- the variant type ----------------------------------------------------------------------------
 
 

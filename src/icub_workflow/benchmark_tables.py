@@ -1,6 +1,8 @@
-"""The pipeline's benchmark files as one table: rule, jobs, wall time, memory.
+"""The pipeline's benchmark files as one table (rule, jobs, wall time, memory), and as a time
+line (when each job ran, how long the build took).
 
-Printed by `python benchmarks/collect.py` and shown on the book's reproduce page (rule `book`).
+Printed by `python benchmarks/collect.py` and `python benchmarks/timeline.py`, and shown on the
+book's reproduce page (rule `book`).
 """
 
 from __future__ import annotations
@@ -45,3 +47,47 @@ def benchmark_table(tables: dict[str, str]):
         )
         .sort_values("total_s", ascending=False)
     )
+
+
+def job_times(
+    directory: Path, skip: tuple[str, ...] = ("sweep",)
+) -> list[tuple[float, float, str]]:
+    """Each job's (start, end, name), sorted: Snakemake writes a job's benchmark file when the job
+    ends (its modification time) and records its wall time, so it ran from end - wall to end.
+    Jobs whose name starts with one of ``skip`` are left out (the sweep's scratch builds)."""
+    rows = []
+    for path in sorted(Path(directory).rglob("*.tsv")):
+        name = str(path.relative_to(directory).with_suffix(""))
+        if name.startswith(skip):
+            continue
+        lines = path.read_text().splitlines()
+        try:
+            wall = float(lines[-1].split("\t")[0])
+        except (IndexError, ValueError):
+            raise ValueError(
+                f"{path} is not a Snakemake benchmark file. Time a complete run from scratch, "
+                "which rewrites every benchmark file: `snakemake -c2 --forceall`"
+            ) from None
+        end = path.stat().st_mtime
+        rows.append((end - wall, end, name))
+    return sorted(rows)
+
+
+def timeline(rows: list[tuple[float, float, str]], cores: int = 2) -> dict[str, float | int]:
+    """How the jobs filled the build: their count, the span from the first start to the last
+    end, the sum of their wall times, and the core-seconds left idle (each job counted as one
+    core, sampled every 0.05 s)."""
+    import numpy as np
+
+    t0 = rows[0][0]
+    span = max(end for _, end, _ in rows) - t0
+    grid = np.arange(0.0, span, 0.05)
+    running = np.zeros_like(grid)
+    for start, end, _ in rows:
+        running += (grid >= start - t0) & (grid < end - t0)
+    return {
+        "jobs": len(rows),
+        "span_s": round(span, 1),
+        "job_s": round(sum(end - start for start, end, _ in rows), 1),
+        "idle_core_s": round(float(np.clip(cores - running, 0, None).sum() * 0.05), 1),
+    }

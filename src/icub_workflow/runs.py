@@ -180,6 +180,18 @@ class RunPlan:
                 groups.setdefault(f"seed{run.config['seed']}", []).append(name)
         return groups
 
+    def scale(self) -> dict[str, int]:
+        """How much this plan's build trains and tests (the book's reproduce page says it)."""
+        return {
+            "reading_seeds": len({row["seed"] for row in self.readings}),
+            "readings": len({row["reading"] for row in self.readings}),
+            "size_runs": len(self.size_dose),
+            "size_replications": len({row["seed"] for row in self.size_dose}),
+            "variants": len(self.robot_runs) - 1,  # besides the config's own networks
+            "fresh": sum(self.config(run)["network"]["networks"] for run in self.confirmation_runs),
+            "sweep": len(self.sweep) if self.robustness else 0,
+        }
+
     def trained_for_robot(self, run: str) -> bool:
         """A robot variant or confirmation of its own: trained, then tested on the robot only
         (its in-silico closed loop would feed a servo target back as the posture reached)."""

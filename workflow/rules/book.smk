@@ -192,6 +192,11 @@ rule findings:
         config=settings({key: config[key] for key in FINDINGS_CONFIG}),
         # the cue timing the ablation trained with (common.smk: PLAN.ablation)
         ablation_cue=PLAN.config(PLAN.ablation)["network"]["categorisation_cue"],
+        # what this build trains and tests, and what the other scale would (the reproduce page)
+        scale={
+            "now": PLAN.scale(),
+            "other": plan_runs(config | {"robustness": not config["robustness"]}).scale(),
+        },
         names=FINDINGS_READS,
     threads: 1
     resources:

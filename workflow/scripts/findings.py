@@ -10,7 +10,10 @@ from icub_workflow.book.pages import page_findings
 with redirect_log(snakemake.log[0]):
     inputs = dict(zip(snakemake.params.names, snakemake.input.data, strict=True))
     pages, tables = page_findings(
-        inputs, dict(snakemake.params.config), snakemake.params.ablation_cue
+        inputs,
+        dict(snakemake.params.config),
+        snakemake.params.ablation_cue,
+        dict(snakemake.params.scale),
     )
     write_text(snakemake.output.json, json.dumps(pages, indent=1) + "\n")
     paths = {Path(path).stem: path for path in snakemake.output.tables}

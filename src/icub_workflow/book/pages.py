@@ -1117,13 +1117,14 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
 
 
 def page_findings(
-    inputs: Mapping[str, str], config: dict, ablation_cue: str
+    inputs: Mapping[str, str], config: dict, ablation_cue: str, scale: dict[str, dict[str, int]]
 ) -> tuple[dict[str, dict], dict[str, pd.DataFrame]]:
     """Every page's values ({page: {name: value}}) and tables ({name: table}).
 
     ``inputs`` maps the book's names of the outputs (``BOOK_DATA``'s keys, the learning curves
     as ``curves/netNN.csv``) to their files; ``config`` is the run's, ``ablation_cue`` the cue
-    timing the ablation trained with.
+    timing the ablation trained with, ``scale`` this build's and the other scale's counts
+    (``{"now": ..., "other": ...}``, runs.RunPlan.scale).
     """
     anova = with_readings_family(
         _json(inputs["anova.json"]), pd.read_csv(inputs["readings_summary.csv"]), config
@@ -1150,6 +1151,7 @@ def page_findings(
         "architecture": architecture(inputs, config),
         "notes": notes(config),
         "size": size_values,
+        "reproduce": {"scale": text.build_scale(scale, config)},
     }
     tables = (
         {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}

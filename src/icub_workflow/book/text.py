@@ -362,6 +362,39 @@ def sweep_size(config: dict) -> tuple[int, int]:
     return points, points * config["network"]["networks"]
 
 
+def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
+    """What this build trained and tested (``scale["now"]``, runs.RunPlan.scale), and what the
+    other scale does (``scale["other"]``), in MyST: the default build answers each of the
+    book's questions at the smallest scale that supports its claims, ``robustness: true`` at
+    full scale."""
+    network = config["network"]
+
+    def words(s: dict[str, int]) -> str:
+        return (
+            f"each of the {s['readings']} readings of the paper at "
+            f"{_count(s['reading_seeds'], 'seed')}; the size study's {s['size_runs']} runs "
+            f"({_count(s['size_replications'], 'replication')}); "
+            f"{_count(s['variants'], 'robot variant')} besides the config's own networks; "
+            f"{s['fresh']} fresh networks for the confirmation; "
+            + (f"the sweep's {s['sweep']} points" if s["sweep"] else "no sweep")
+        )
+
+    made = "`robustness: true`" if config["robustness"] else "`robustness: false` (the default)"
+    other = (
+        f"The full scale, `{ROBUSTNESS_COMMAND}`, builds {words(scale['other'])}."
+        if not config["robustness"]
+        else f"The default build makes {words(scale['other'])}."
+    )
+    return (
+        f"This book was built with {made}: the paper's model once ({network['networks']} "
+        f"networks at seed {config['seed']}) and its cue ablation; {words(scale['now'])}. " + other
+    )
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
 def robustness_not_run(config: dict) -> str:
     """What the page says when this build did not run the sweep (MyST)."""
     points, networks = sweep_size(config)
