@@ -19,6 +19,7 @@ rule demos_object:
         object="|".join(config["objects"]),
         folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
     threads: 1
+    priority: 3  # every training waits on it: first
     resources:
         mem_mb=1000,
         runtime=10,
@@ -46,6 +47,7 @@ rule demos:
         objects=settings(config["objects"]),
         demos=settings(config["demos"]),
     threads: 1
+    priority: 3  # every training waits on it: first
     resources:
         mem_mb=500,
         runtime=5,

@@ -17,6 +17,7 @@ rule soms:
         seed=run_section("seed"),
         objects=settings(config["objects"]),
     threads: 1
+    priority: 3  # every training waits on it: first
     resources:
         mem_mb=500,
         runtime=5,

@@ -79,6 +79,7 @@ for _group, _runs in MEASURED_GROUPS.items():
             objects=settings(config["objects"]),
             measures=config["readings"]["measures"],
         threads: 1
+        priority: 1  # before the figures: the size study's and the readings' tables wait on it
         resources:
             mem_mb=1000,
             runtime=30,

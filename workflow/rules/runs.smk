@@ -26,6 +26,7 @@ rule run_demos:
         seed=run_section("seed"),
         posture=settings(config["initial_posture_deg"]),
     threads: 1
+    priority: 2  # a replication's maps and networks wait on it
     resources:
         mem_mb=1000,
         runtime=20,
@@ -54,7 +55,7 @@ rule run_phase1:
         network=run_section("network"),
         seed=run_section("seed"),
     threads: 1
-    priority: 1  # two trainings wait on it
+    priority: 3  # the build's longest chain: phase 1, three trainings, their robot tests
     resources:
         mem_mb=1000,
         runtime=20,
@@ -78,7 +79,7 @@ use rule train as run_train with:
         weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in NETWORKS],
     wildcard_constraints:
         folder=folders_pattern(GROUPED_RUNS),
-    priority: 0  # after the config's own networks: the robot test waits on those
+    priority: 2  # the robot variants' long trainings (the cue ablation's is short)
     log:
         "data/logs/{folder}train.log",
     benchmark:
@@ -94,4 +95,4 @@ if FRESH_NETWORKS:
             weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in FRESH_NETWORKS],
         wildcard_constraints:
             folder=folders_pattern(FRESH_RUNS),
-        priority: 1  # the longest training, and its robot test waits on all of it
+        priority: 3  # the longest training, and its robot test waits on all of it

@@ -16,6 +16,7 @@ rule visual_maps:
         objects=settings(config["objects"]),
         posture=settings(config["initial_posture_deg"]),
     threads: 1
+    priority: 3  # every training waits on it: first
     resources:
         mem_mb=1000,
         runtime=5,
