@@ -152,6 +152,7 @@ def train_schedule(
     # lr_p, d_hid, lr_h and d_out hold the update: W1p -= lr_p d_hid^T, W2T -= lr_h d_out^T, W2
     # -= its transpose (:func:`finish` makes the last one).
     d_new = np.empty(n_out)
+    err = np.empty(n_out)
     for it in range(tasks.shape[0]):
         lr = rates[it]
         o = objects[it]
@@ -198,11 +199,13 @@ def train_schedule(
                 # backward: deltas of 0.5 * squared error, with the weights before this step's
                 # update (W2 updated by the last step first)
                 _neg_exp(y, n_out, e, bits, scale)
-                for m in range(n_out):
+                target = goal[s + 1]
+                for m in range(n_out):  # in vector lanes: the sum of squares apart
                     ym = 1.0 / (1.0 + e[m])
-                    err = ym - goal[s + 1, m]
-                    sq += err * err
-                    d_new[m] = err * ym * (1.0 - ym)
+                    err[m] = ym - target[m]
+                    d_new[m] = err[m] * ym * (1.0 - ym)
+                for m in range(n_out):
+                    sq += err[m] * err[m]
                 for j in range(n_hid):
                     back[j] = 0.0
                 for m in range(n_out):
