@@ -85,11 +85,23 @@ def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
 
 
 @pytest.fixture(scope="session")
-def built(tmp_path_factory) -> Path:
-    """The whole pipeline run once on the small test config; tests read its outputs."""
-    workdir = scratch_workflow(tmp_path_factory.mktemp("pipeline"))
-    result = run_snakemake(workdir, "-c2")
-    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+def built(tmp_path_factory, worker_id) -> Path:
+    """The whole pipeline run once on the small test config; tests read its outputs (and copy
+    them before they change anything). Once for the whole test session: with pytest-xdist's
+    workers (pyproject's ``-n 2``), the first that needs it builds it, under a lock, in the
+    directory the workers share, and the others wait for it."""
+    from filelock import FileLock
+
+    shared = tmp_path_factory.getbasetemp()
+    if worker_id != "master":
+        shared = shared.parent  # the workers' base directories sit side by side in it
+    workdir = shared / "pipeline"
+    with FileLock(str(shared / "pipeline.lock")):
+        if not (shared / "pipeline.done").exists():
+            scratch_workflow(workdir)
+            result = run_snakemake(workdir, "-c2")
+            assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+            (shared / "pipeline.done").write_text("built\n")
     return workdir
 
 

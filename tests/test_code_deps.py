@@ -142,8 +142,10 @@ def test_derived_code_covers_what_python_imports():
 
 @pytest.mark.slow
 def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
-    """For every module of the project: touch it in a copy of the finished test run, dry-run,
-    and every rule of that run whose code imports the module is scheduled."""
+    """Every job of the finished test run has among its inputs every module of the project that
+    its script imports, so that editing the module reruns it (Snakemake reruns a job whose
+    input is newer than its outputs); and, end to end, touching a module in a copy of the run
+    schedules every rule that imports it: for the trainer and for the book's words."""
     work = tmp_path / "work"
     work.mkdir()
     # copies with their times kept (a new link would count as a newer input)
@@ -156,10 +158,14 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
     done = dry_run_rules(work, "--rerun-triggers", "mtime")
     assert done == set(), f"the finished run is not up to date: {done}"
     imports = {s: imported_by_python(script_sources(s)) for s in {*rule_scripts().values()}}
-    in_target = rules_in_target(work)
+    inputs = job_inputs(work)
+    in_target = set(inputs)
     modules = sorted({m for files in imports.values() for m in files})
     assert "src/icub_affordance/train.py" in modules and "src/icub_workflow/book/text.py" in modules
-    for module in modules:
+    for rule, script in rule_scripts().items():
+        if rule in in_target:
+            assert imports[script] <= inputs[rule], f"{rule}: {imports[script] - inputs[rule]}"
+    for module in ("src/icub_affordance/train.py", "src/icub_workflow/book/text.py"):
         path = work / module
         before = path.stat()
         later = time.time() + 3600  # after every output of the run
@@ -180,7 +186,17 @@ def dry_run_rules(work: Path, *args: str) -> set[str]:
     return set(re.findall(r"^rule (\w+):", result.stdout + result.stderr, re.M)) - {"all"}
 
 
-def rules_in_target(work: Path) -> set[str]:
+def job_inputs(work: Path) -> dict[str, set[str]]:
+    """Each rule of the default target (planned from scratch), and the inputs its jobs list,
+    every job's in one set."""
     result = run_snakemake(work, "-n", "-c1", "--forceall")
     assert result.returncode == 0, result.stderr[-3000:]
-    return set(re.findall(r"^rule (\w+):", result.stdout + result.stderr, re.M))
+    inputs: dict[str, set[str]] = {}
+    jobs = re.split(r"^(?=(?:local)?rule \w+:$)", result.stdout + result.stderr, flags=re.M)
+    for job in jobs:
+        rule = re.match(r"(?:local)?rule (\w+):", job)
+        if rule:
+            listed = re.search(r"^\s*input: (.*)$", job, flags=re.M)
+            files = set(listed[1].split(", ")) if listed else set()
+            inputs.setdefault(rule[1], set()).update(files)
+    return inputs

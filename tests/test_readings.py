@@ -28,6 +28,7 @@ from icub_affordance.stats import difference_tests, holm
 from icub_workflow.book import text
 from icub_workflow.book.pages import readings as readings_page
 from icub_workflow.book.pages import traced
+from icub_workflow.runs import plan_runs
 
 READINGS = ("first_step+fixed", "first_step+grows", "all_steps+fixed", "all_steps+grows")
 
@@ -397,6 +398,19 @@ def job_counts(stdout: str) -> dict[str, int]:
     return counts
 
 
+def planned_outputs(stdout: str) -> dict[str, list[str]]:
+    """A dry run's jobs: each job's heading line (rule and number) and its outputs."""
+    import re
+
+    jobs = re.split(r"^(?=(?:local)?rule \w+:$)", stdout, flags=re.M)
+    made = {}
+    for k, job in enumerate(jobs):
+        found = re.search(r"^\s*output: (.*)$", job, flags=re.M)
+        if found:
+            made[f"{k}: {job.splitlines()[0]}"] = found[1].split(", ")
+    return made
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("robustness", [False, True])
 def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
@@ -414,14 +428,27 @@ def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
     )
     assert result.returncode == 0, result.stderr[-3000:]
     counts = job_counts(result.stdout)
+    made = planned_outputs(result.stdout)
     readings = load_config()["readings"]
     n_readings = len(readings["categorisation_cue"]) * len(readings["goal_response"])
     n_reps = 1 + (len(readings["seeds"]) if robustness else 0)
-    assert counts["measures"] == n_readings * n_reps  # every replication, the main run's too
-    assert counts["run_train"] == n_readings * n_reps - 1  # a run's networks in one job
+    plan = plan_runs(load_config() | {"robustness": robustness})
+    runs = {row["run"] for row in plan.readings}
+    assert len(plan.readings) == n_readings * n_reps
+    # every replication measured by exactly one job, the main run's too: rule measures, or its
+    # seed's measured_seed<n> (with its training and maps)
+    measured = [path for paths in made.values() for path in paths if path.endswith("measures.json")]
+    assert sorted(measured) == sorted(set(measured))
+    assert {plan.path(run, "eval/measures.json") for run in runs} <= set(measured)
+    assert counts["measures"] + sum(
+        run in runs for group in plan.measured_groups.values() for run in group
+    ) == len(runs)
     # the Goal response changes the SOMs only: one set per seed and response, demos per seed
-    # (rule soms: the main run's and the others')
-    assert counts["soms"] == 1 + n_reps * (len(readings["goal_response"]) - 1) + (n_reps - 1)
+    # (whichever job makes them: rule soms, or a seed's measured job)
+    soms = {path for paths in made.values() for path in paths if path.endswith("soms/soms.npz")}
+    readings_soms = {plan.path(plan.stage_run(run, "soms"), "soms/soms.npz") for run in runs}
+    assert readings_soms <= soms
+    assert len(readings_soms) == n_reps * len(readings["goal_response"])
     assert counts.get("run_demos", 0) == n_reps - 1
 
 

@@ -119,13 +119,18 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("run_train") == 1 and jobs.pop("run_embodied") == 2
+    # the new variant, and the built one that now shares its phase 1 (the cue acts only after
+    # it: runs.RunPlan.phase1_run) and continues from it, to the same bits as before, so its
+    # robot test and film run again too
+    assert jobs.pop("run_phase1") == 1
+    assert jobs.pop("run_train") == 2 and jobs.pop("run_embodied") == 3
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_animation")  # films the retrained variant
     assert set(jobs) <= shown, jobs
 
 
@@ -181,7 +186,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     networks are the fresh indices first_network.., trained from the main run's demonstrations
     and maps (none of its own), mapping by place in the run (first half A), tested on the
     robot; its networks start from other weights than the exploration's, so they end elsewhere.
-    Planned from scratch, the run's jobs are its trainings and one robot job."""
+    Planned from scratch, the run's jobs are one training job and one robot job."""
     import numpy as np
     import pandas as pd
 
@@ -193,8 +198,8 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     # the plan: the run's networks, from the main run's demonstrations and maps
     plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
     jobs = [job for job in re.split(r"^(?=rule \w+:$)", plan, flags=re.M) if f"runs/{run}/" in job]
-    trainings = [job for job in jobs if "rule train:" in job]  # a job per network
-    assert len(trainings) == count
+    trainings = [job for job in jobs if "rule confirmation_train:" in job]  # one job
+    assert len(trainings) == 1
     for job in trainings:
         inputs = re.search(r"input: (.*)", job)[1].split(", ")
         assert "data/demos/demos.npz" in inputs and "data/soms/soms.npz" in inputs, job

@@ -111,10 +111,11 @@ def test_twelve_training_jobs_in_the_default_dag(tmp_path):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
-    # a job per network: the config's own 12, and the confirmation's fresh ones (a run with its
-    # own number of networks); every other run trains its networks in one job (run_train)
+    # a job per network: the config's own 12; a confirmation's fresh networks in one job
+    # (confirmation_train), every other run's too (run_train, measured_seed<n>)
     confirmation = load_config()["robot"]["confirmation"]
-    assert counts["train"] == 12 + confirmation["networks"] * len(confirmation["variants"])
+    assert counts["train"] == 12
+    assert counts["confirmation_train"] == len(confirmation["variants"])
     assert counts["demos_object"] == 4
     # tested in silico: the config's own run and the cue ablation
     assert counts["evaluate"] == 2 and counts["stats"] == 2

@@ -85,8 +85,8 @@ GROUPED_RUNS = [
     for run in PLAN.runs
     if run not in (*NETWORK_JOB_RUNS, *MEASURED_RUNS, *FRESH_RUNS)
 ]
-# The runs that train a phase 1 for themselves and others (rule run_phase1: robot variants that
-# differ only in the cue timing and the rate's schedule, runs.py: RunPlan.phase1_run).
+# The runs that train a phase 1 for themselves and others, in run_phase1 (robot variants that
+# differ only in the cue timing and the rate's schedule; runs.py, RunPlan.phase1_run).
 PHASE1_RUNS = list(dict.fromkeys(r for r in map(PLAN.phase1_run, PLAN.runs) if r is not None))
 
 

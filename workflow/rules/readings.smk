@@ -33,29 +33,28 @@ rule measures:
         "../scripts/measures.py"
 
 
-def measured_run(run):
-    """One run of a measured group, as its job's script reads it: settings and file paths."""
-    inputs = model_inputs({"folder": PLAN.folder(run)})
-    nets = PLAN.networks(run)
-    return {
-        "run": run,
-        "network": settings(PLAN.config(run)["network"]),
-        "seed": PLAN.config(run)["seed"],
-        **inputs,
-        "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
-        "som_settings": settings(PLAN.config(run)["soms"]),
-        "curves": [PLAN.path(run, f"train/net{net}/curve.csv") for net in nets],
-        "weights": [PLAN.path(run, f"train/net{net}/weights.npz") for net in nets],
-        "trials": PLAN.path(run, "eval/measures.csv"),
-        "json": PLAN.path(run, "eval/measures.json"),
-    }
-
-
 # The measured runs of a seed (common.smk: MEASURED_GROUPS) trained and measured in one job: the
 # steps of rules soms (for a run that makes its own maps), run_train and measures, the same files. A rule's outputs are fixed when the
 # rules are read, so each group has its rule.
 for _group, _runs in MEASURED_GROUPS.items():
-    _table = [measured_run(run) for run in _runs]
+    # each run as the job's script reads it: its settings and its files
+    _table = [
+        {
+            "run": run,
+            "network": settings(PLAN.config(run)["network"]),
+            "seed": PLAN.config(run)["seed"],
+            **model_inputs({"folder": PLAN.folder(run)}),
+            "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
+            "som_settings": settings(PLAN.config(run)["soms"]),
+            "curves": [PLAN.path(run, f"train/net{net}/curve.csv") for net in PLAN.networks(run)],
+            "weights": [
+                PLAN.path(run, f"train/net{net}/weights.npz") for net in PLAN.networks(run)
+            ],
+            "trials": PLAN.path(run, "eval/measures.csv"),
+            "json": PLAN.path(run, "eval/measures.json"),
+        }
+        for run in _runs
+    ]
 
     rule:
         """A seed's measured runs (readings, size study): each run's networks trained, then
