@@ -34,13 +34,18 @@ def test_network_shapes_and_outputs():
     assert ((y > 0) & (y < 1)).all()
 
 
-def test_fast_trainer_equals_the_plain_torch_loop():
-    """The compiled trainer computes what autograd computes, step by step, to 1e-10."""
+@pytest.mark.parametrize("hidden", [10, 40])
+@pytest.mark.parametrize("rate", ["constant", "anneal"])
+def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
+    """The compiled trainer computes what autograd computes, step by step, to 1e-10: both cue
+    timings, a constant rate and a falling one (as the annealed schedule's phase 2), the
+    paper's 10 hidden units and the robot variants' 40."""
     m = synthetic_materials()
     rng = np.random.default_rng(1)
-    w0 = Weights.init(10, 0.5, rng)
+    w0 = Weights.init(hidden, 0.5, rng)
     n = 150  # per variant
     schedule = rng.integers(0, 2, n), rng.integers(0, 4, n), rng.integers(0, 4, n)
+    rates = np.full(n, 0.075) if rate == "constant" else 0.075 * np.arange(n, 0, -1) / n
     for mapping, cue in (("A", "first_step"), ("B", "all_steps")):
         contexts = np.array([[context(m, o, k, cue) for k in range(2)] for o in range(4)])
         grips = np.array(
@@ -51,18 +56,20 @@ def test_fast_trainer_equals_the_plain_torch_loop():
         )
         net = JordanNet(w0)
         sgd = torch.optim.SGD(net.parameters(), lr=0.075)
-        reference = [
-            train_sequence_torch(net, sgd, contexts[o, k], m.demos[o, grips[o, k], s])
-            for k, o, s in zip(*schedule, strict=True)
-        ]
-        fast, rmse = train_online(w0, 0.075, contexts, m.demos, grips, schedule)
+        reference = []
+        for lr, (k, o, s) in zip(rates, zip(*schedule, strict=True), strict=True):
+            sgd.param_groups[0]["lr"] = float(lr)
+            reference.append(
+                train_sequence_torch(net, sgd, contexts[o, k], m.demos[o, grips[o, k], s])
+            )
+        fast, rmse = train_online(w0, rates, contexts, m.demos, grips, schedule)
         np.testing.assert_allclose(rmse, reference, rtol=0, atol=1e-10)
         for name in ("W1", "b1", "W2", "b2"):
             np.testing.assert_allclose(
                 getattr(fast, name), getattr(net.weights(), name), rtol=0, atol=1e-10
             )
     # the initial weights are left as they were
-    np.testing.assert_array_equal(w0.W1, Weights.init(10, 0.5, np.random.default_rng(1)).W1)
+    np.testing.assert_array_equal(w0.W1, Weights.init(hidden, 0.5, np.random.default_rng(1)).W1)
 
 
 # Trains one network of the paper's size on the synthetic materials and prints a digest of the
