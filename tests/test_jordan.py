@@ -148,6 +148,7 @@ def test_a_network_continued_from_a_shared_phase_1_is_the_network_trained_whole(
     then continued with the annealed rate and the cue at every step: the same bits as that
     network trained in one go (so robot variants that differ only in what acts after phase 1
     share it). A phase 1 of other settings is refused."""
+    from icub_affordance.jordan import TrainingState
     from icub_affordance.train import Phase1, train_phase1
 
     m = synthetic_materials()
@@ -167,6 +168,13 @@ def test_a_network_continued_from_a_shared_phase_1_is_the_network_trained_whole(
     for other in (train_config(**common | {"hidden": 11}), anneal):
         with pytest.raises(ValueError, match="other settings, mapping, seed or materials"):
             train_network(m, other, "A" if other is anneal else "B", 4, after=shared)
+    # a saved state holds every array the kernel carries; one without them all is refused
+    assert set(shared.state.arrays) == set(TrainingState.KEYS)
+    arrays = dict(np.load(tmp_path / "phase1.npz"))
+    del arrays["U"]
+    np.savez(tmp_path / "partial.npz", **arrays)
+    with pytest.raises(ValueError, match=r"lacks \['U'\]; delete it and rerun"):
+        Phase1.load(tmp_path / "partial.npz")
 
 
 def test_training_lowers_the_error():

@@ -15,6 +15,7 @@ holds them equal within 1e-10.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy.special import expit
@@ -83,6 +84,12 @@ class TrainingState:
 
     arrays: dict[str, np.ndarray]
     done: int = 0
+
+    #: the arrays a state holds
+    KEYS: ClassVar[tuple[str, ...]] = (
+        "W1cT", "W1pT", "b1", "W2T", "b2", "unique", "U", "moved", "gram", "lr_p", "d_hid",
+        "lr_h", "d_out",
+    )  # fmt: skip
 
     @classmethod
     def start(cls, weights: Weights, contexts: np.ndarray) -> TrainingState:

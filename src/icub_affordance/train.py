@@ -184,7 +184,7 @@ class Phase1:
     def load(cls, path) -> Phase1:
         from .io import load_npz
 
-        arrays = load_npz(path, required=("key", "done", "rmse", "W1cT", "unique"))
+        arrays = load_npz(path, required=("key", "done", "rmse", *TrainingState.KEYS))
         key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
         return cls(key, TrainingState(arrays, done), rmse)
 
