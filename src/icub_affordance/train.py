@@ -213,11 +213,6 @@ class _Training:
     targets: np.ndarray | None
     rates: np.ndarray
 
-    def part(self, begin: int, end: int) -> tuple:
-        """The arguments of ``TrainingState.train`` for iterations begin..end-1."""
-        tasks, objects, sequences = (a[begin:end] for a in self.schedule)
-        return self.rates[begin:end], self.contexts, (tasks, objects, sequences), self.targets
-
 
 def _training(m: Materials, config: TrainConfig, mapping: str, seed: int) -> _Training:
     rng = np.random.default_rng(seed)
@@ -243,15 +238,23 @@ def _training(m: Materials, config: TrainConfig, mapping: str, seed: int) -> _Tr
 
 
 def _train_part(m: Materials, state: TrainingState, training: _Training, begin: int, end: int):
-    rates, contexts, part, targets = training.part(begin, end)
-    return state.train(rates, contexts, m.demos, training.grips, part, targets)
+    """Train ``state`` on, over iterations begin..end-1; their RMSE."""
+    part = tuple(a[begin:end] for a in training.schedule)
+    return state.train(
+        training.rates[begin:end], training.contexts, m.demos, training.grips, part,
+        training.targets,
+    )  # fmt: skip
+
+
+def _first_phase(m: Materials, config: TrainConfig, training: _Training):
+    """The state at the end of phase 1, from the initial weights, and phase 1's RMSE."""
+    state = TrainingState.start(training.weights, training.contexts)
+    return state, _train_part(m, state, training, 0, config.phase1_iterations)
 
 
 def train_phase1(m: Materials, config: TrainConfig, mapping: str, seed: int) -> Phase1:
     """Phase 1 of one network, kept to be continued by :func:`train_network`."""
-    training = _training(m, config, mapping, seed)
-    state = TrainingState.start(training.weights, training.contexts)
-    rmse = _train_part(m, state, training, 0, config.phase1_iterations)
+    state, rmse = _first_phase(m, config, _training(m, config, mapping, seed))
     return Phase1(phase1_key(m, config, mapping, seed), state, rmse)
 
 
@@ -266,15 +269,16 @@ def train_network(
     """
     training = _training(m, config, mapping, seed)
     if after is None:
-        after = train_phase1(m, config, mapping, seed)
+        state, first = _first_phase(m, config, training)
     elif after.key != phase1_key(m, config, mapping, seed):
         raise ValueError(
             "the saved phase 1 was trained with other settings, mapping, seed or materials than "
             "this network's: delete it and rerun `snakemake -c2` to train it again"
         )
-    state = after.state.copy()
+    else:
+        state, first = after.state.copy(), after.rmse  # the saved state stays as it was
     rest = _train_part(m, state, training, config.phase1_iterations, config.iterations)
-    rmse = np.concatenate([after.rmse, rest])
+    rmse = np.concatenate([first, rest])
     trained = state.weights()
     tasks, objects, sequences = training.schedule
     kept = np.arange(curve_every(config) - 1, config.iterations, curve_every(config))

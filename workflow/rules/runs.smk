@@ -88,7 +88,7 @@ use rule train as run_train with:
 
 if FRESH_NETWORKS:
 
-    # The confirmations' fresh networks in one job each (common.smk: FRESH_RUNS).
+    # A confirmation's fresh networks in one job (common.smk: FRESH_RUNS).
     use rule run_train as confirmation_train with:
         output:
             curve=[f"data/{{folder}}train/net{net}/curve.csv" for net in FRESH_NETWORKS],
