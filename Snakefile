@@ -8,10 +8,13 @@ from snakemake.utils import min_version, update_config
 
 min_version("9.0")
 
-# One thread per job for the numerical libraries: results must not depend on how many cores a
-# library happens to use (floating-point sums in another order), and jobs run side by side.
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ[_var] = "1"
+# The same bytes on any x86-64 machine with AVX2 (src/icub_workflow/manifest.py): one thread per
+# job for the numerical libraries (a sum split over cores is a sum in another order), and the
+# same SIMD code paths of numpy and OpenBLAS whatever the CPU offers beyond AVX2. Every job's
+# process inherits these; they act when it imports numpy.
+from icub_workflow.manifest import ARITHMETIC_ENVIRONMENT
+
+os.environ.update(ARITHMETIC_ENVIRONMENT)
 
 
 configfile: "config/config.yaml"
@@ -96,8 +99,12 @@ DEFAULT_OUTPUTS = [
     *rules.cue_difference.output,
     *rules.findings.output,
     *rules.book.output,
+    "data/results.sha256",
     *([*SWEEP_OUTPUTS, *rules.sweep_cost.output] if config["robustness"] else []),
 ]
+
+
+include: "workflow/rules/manifest.smk"
 
 
 rule all:

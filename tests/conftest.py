@@ -66,7 +66,16 @@ def scratch_workflow(path: Path) -> Path:
     import shutil
 
     path.mkdir(parents=True, exist_ok=True)
-    for name in ("Snakefile", "workflow", "config", "assets", "src", "benchmarks", ".test"):
+    for name in (
+        "Snakefile",
+        "workflow",
+        "config",
+        "assets",
+        "src",
+        "benchmarks",
+        ".test",
+        "results.sha256",
+    ):
         (path / name).symlink_to(REPO / name)
     # the book's sources are copied: its build writes beside them
     shutil.copytree(REPO / "book", path / "book", ignore=shutil.ignore_patterns("_build", "_data"))

@@ -216,6 +216,9 @@ rule book:
     input:
         data=list(BOOK_DATA.values()),
         findings=list(BOOK_FINDINGS.values()),
+        # the build's results manifest and the tracked one (the first page's provenance)
+        manifest="data/results.sha256",
+        tracked_manifest="results.sha256",
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
         code=script_code("book", pages=sorted(glob.glob("book/*.md"))),

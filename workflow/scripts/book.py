@@ -9,7 +9,7 @@ from pathlib import Path
 from icub_affordance.io import atomic_path, redirect_log, write_text
 from icub_workflow.benchmark_tables import benchmark_table, job_times, read_benchmarks, timeline
 from icub_workflow.book.notebooks import execute_pages, is_notebook
-from icub_workflow.book.run import provenance, stage
+from icub_workflow.book.run import provenance, results_provenance, stage
 
 with redirect_log(snakemake.log[0]):
     book = Path("book")
@@ -17,6 +17,7 @@ with redirect_log(snakemake.log[0]):
     files = [*snakemake.input.data, *snakemake.input.findings]
     stage(dict(zip(snakemake.params.names, files, strict=True)), data_dir)
     run = provenance(dict(snakemake.params.config), Path.cwd())
+    run["results"] = results_provenance(snakemake.input.manifest, snakemake.input.tracked_manifest)
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
     # how long each rule took, from the benchmark files of every job run so far (the reproduce
     # page's table): made here, as the book is the last job and no rule can declare them

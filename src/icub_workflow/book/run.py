@@ -13,6 +13,8 @@ from datetime import UTC, datetime
 from importlib import metadata
 from pathlib import Path
 
+from icub_workflow.manifest import manifest_digest, read_manifest
+
 PACKAGES = (
     "mujoco",
     "numpy",
@@ -50,6 +52,19 @@ def provenance(config: dict, repo: Path) -> dict:
         "uncommitted_changes": dirty,
         "versions": {name: metadata.version(name) for name in PACKAGES},
         "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
+    }
+
+
+def results_provenance(manifest: str, tracked: str) -> dict:
+    """The build's results manifest, summed up: its digest and how it stands against the tracked
+    manifest of the default configuration (the same digest when every result is the same bytes)."""
+    built, expected = read_manifest(manifest), read_manifest(tracked)
+    return {
+        "digest": manifest_digest(manifest),
+        "files": len(built),
+        "tracked_digest": manifest_digest(tracked),
+        "same_as_tracked": sum(built[path] == expected.get(path) for path in built),
+        "tracked_files": len(expected),
     }
 
 

@@ -1,0 +1,9 @@
+"""data/results.sha256: the SHA-256 of each of the build's result files (sha256sum format)."""
+
+from icub_affordance.io import redirect_log, write_text
+from icub_workflow.manifest import digests, format_manifest
+
+with redirect_log(snakemake.log[0]):
+    text = format_manifest(digests(snakemake.input.results))
+    write_text(snakemake.output[0], text)
+    print(f"{len(snakemake.input.results)} result files")
