@@ -96,6 +96,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     jobs = planned(result)
     assert jobs.pop("run_train") == jobs.pop("run_embodied") == 1
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
@@ -127,6 +128,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
@@ -150,6 +152,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
     assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
     shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)

@@ -2,8 +2,11 @@
 # configuration's build, in `sha256sum` format. Included after DEFAULT_OUTPUTS (Snakefile).
 from icub_workflow.manifest import result_files
 
-# this configuration's result files: tables, arrays and summaries of the default target
-RESULT_FILES = result_files(DEFAULT_OUTPUTS)
+# this configuration's result files: the tables, arrays and summaries of the default target,
+# but a run of config `runs` (the user's own experiments, which the book does not show: adding
+# one reruns nothing of the main run's, the manifest and the book included)
+_USER_RUN_FILES = {f for run in PLAN.whole if run in config["runs"] for f in run_files(run)}
+RESULT_FILES = result_files(f for f in DEFAULT_OUTPUTS if f not in _USER_RUN_FILES)
 
 
 rule manifest:
@@ -16,6 +19,8 @@ rule manifest:
         "data/results.sha256",
     log:
         "data/logs/manifest.log",
+    benchmark:
+        "data/benchmarks/manifest.tsv"
     script:
         "../scripts/manifest.py"
 
