@@ -1,0 +1,137 @@
+"""The pipeline on a real Slurm cluster: a one-node cluster on this machine
+(tools/slurm-local/start), the test config built through workflow/profiles/slurm, each job an
+sbatch job, the bytes of a local build; a training job that fails is reported with its Slurm log,
+and the next run completes the build.
+
+Needs root and Debian's apt-get (the start script installs Slurm if it must, and stop removes what
+start installed); elsewhere the test is skipped, saying why. CI runs it.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from conftest import REPO, TEST_CONFIG, scratch_workflow
+
+pytestmark = pytest.mark.slow
+
+TOOLS = REPO / "tools" / "slurm-local"
+# the test cluster's own settings, beside the profile's: no accounting database, so job states
+# come from squeue (the cluster keeps finished jobs an hour); and a first status check after a
+# second rather than forty (the plugin's default, for a busy cluster)
+CLUSTER_ARGS = (
+    "--slurm-status-command",
+    "squeue",
+    "--slurm-init-seconds-before-status-checks",
+    "1",
+)
+SUBMITTED = re.compile(r"has been submitted with SLURM jobid (\d+) \(log: (\S+)\)\.")
+
+
+@pytest.fixture(scope="module")
+def slurm_cluster():
+    if os.geteuid() != 0 or shutil.which("apt-get") is None:
+        pytest.skip("the local Slurm cluster needs root and apt-get (tools/slurm-local/start)")
+    start = subprocess.run([TOOLS / "start"], capture_output=True, text=True, timeout=900)
+    if start.returncode == 2:  # cannot run here (e.g. this machine has a Slurm of its own)
+        pytest.skip(start.stderr.strip())
+    assert start.returncode == 0, start.stdout + start.stderr
+    assert re.search(r"^local\*?\s+up\s+\S+\s+1\s+idle", start.stdout, re.M), start.stdout
+    try:
+        yield
+    finally:
+        stop = subprocess.run([TOOLS / "stop"], capture_output=True, text=True, timeout=600)
+        assert stop.returncode == 0, stop.stdout + stop.stderr
+        for daemon in ("slurmctld", "slurmd", "munged"):
+            assert subprocess.run(["pgrep", "-x", daemon]).returncode == 1, daemon
+
+
+def _snakemake_on_slurm(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "snakemake",
+            "--profile",
+            "workflow/profiles/slurm",
+            "--configfile",
+            str(TEST_CONFIG),
+            *CLUSTER_ARGS,
+            *args,
+        ],
+        cwd=workdir,
+        capture_output=True,
+        text=True,
+        timeout=1800,
+    )
+
+
+def _slurm_jobs() -> dict[str, tuple[str, str]]:
+    """Every job the controller knows (finished ones too): id -> (state, comment)."""
+    out = subprocess.run(
+        ["squeue", "--states=all", "--noheader", "--format=%i|%T|%k"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    return {
+        i: (state, comment)
+        for i, state, comment in (line.split("|", 2) for line in out.splitlines())
+    }
+
+
+def test_the_test_config_on_slurm_is_the_local_build_and_survives_a_failed_job(
+    slurm_cluster, built, tmp_path
+):
+    work = scratch_workflow(tmp_path / "slurm")
+
+    # 1. One training job asks for 10 MB (its first attempt): the cluster kills it, and Snakemake
+    # reports it failed, naming its Slurm log. (--retries 0: the profile would retry it.)
+    starved = "train:mem_mb=10 if wildcards.net == '02' else 500"
+    failed = _snakemake_on_slurm(work, "--retries", "0", "--set-resources", starved)
+    log = failed.stdout + failed.stderr
+    assert failed.returncode != 0, log[-3000:]
+    error = re.search(r"Error in rule train:.*?(?=\n\n|\Z)", log, re.S)
+    assert error, log[-5000:]
+    assert "data/train/net02/weights.npz" in error.group(0)
+    slurm_log = re.search(r"SLURM-job '(\d+)' failed.*", log)
+    assert slurm_log, log[-5000:]
+    failed_id = slurm_log.group(1)
+    path = dict((i, p) for i, p in SUBMITTED.findall(log))[failed_id]
+    assert path in error.group(0)
+    assert "exceeded memory limit" in Path(path).read_text()
+    assert not (work / "data/train/net02/weights.npz").exists()
+
+    # 2. The profile's command, run again, finishes the build.
+    rerun = _snakemake_on_slurm(work)
+    log2 = rerun.stdout + rerun.stderr
+    assert rerun.returncode == 0, log2[-5000:]
+
+    # every job but the manifest (a local rule: it only hashes files) went to Slurm, and Slurm
+    # ran each to completion but the starved one
+    for text in (log, log2):
+        assert set(re.findall(r"^localrule (\w+):", text, re.M)) <= {"manifest", "all"}
+    submitted = dict(SUBMITTED.findall(log)) | dict(SUBMITTED.findall(log2))
+    jobs = _slurm_jobs()
+    assert set(submitted) <= set(jobs)
+    states = {i: jobs[i][0] for i in submitted}
+    assert states.pop(failed_id) in {"OUT_OF_MEMORY", "FAILED", "CANCELLED"}
+    assert set(states.values()) == {"COMPLETED"}, states
+    rules = {re.sub(r"_wildcards_.*", "", jobs[i][1]) for i in submitted}
+    assert {"rule_train", "rule_soms", "rule_book", "rule_findings"} <= rules
+
+    # the replication group: a run trained by run_train went as one job with its evaluation,
+    # statistics and measures
+    groups = [Path(p).parent.name for p in submitted.values() if "/group_replication" in p]
+    assert "group_replication_evaluate_measures_run_train_stats" in groups, groups
+
+    # the same bytes as the local build, result for result
+    ours = (work / "data/results.sha256").read_text()
+    assert ours == (built / "data/results.sha256").read_text()
+    assert len(ours.splitlines()) > 100
