@@ -40,3 +40,15 @@ def test_benchmark_scripts_say_what_is_missing(tmp_path):
         result = run(script, str(tmp_path / "nothing"))
         assert result.returncode != 0
         assert "no benchmark files" in result.stderr and "snakemake -c2" in result.stderr
+
+
+def test_the_book_says_whether_its_build_ran_on_slurm_from_the_jobs_environment():
+    from icub_workflow.benchmark_tables import executor
+
+    assert executor({"HOME": "/root"}) == {"executor": "local"}
+    slurm = {
+        "SLURM_JOB_ID": "53",
+        "SLURM_CLUSTER_NAME": "icub-local",
+        "SLURM_JOB_PARTITION": "local",
+    }
+    assert executor(slurm) == {"executor": "slurm", "cluster": "icub-local", "partition": "local"}

@@ -459,6 +459,7 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     table.to_csv(book / "_data" / "tables" / "sweep.csv", index=False)
     shutil.copy(inputs["sweep_cost.csv"], book / "_data" / "sweep_cost.csv")
     line = {"jobs": 412, "span_s": 1509.0, "job_s": 2753.0, "idle_core_s": 265.0}
+    line |= {"executor": "slurm", "cluster": "hpc", "partition": "short"}
     (book / "_data" / "timeline.json").write_text(json.dumps(line))
     execute_pages(book, [Path(page)], workers=1)
     notebook = read_myst_markdown_notebook(Path(page).read_text(), path=str(page))
@@ -466,7 +467,10 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
         notebook
     )
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
-    whole = "The whole build this book comes from (412 jobs) ran 25 minutes"
+    whole = (
+        "The whole build this book comes from (412 jobs) ran on the Slurm cluster `hpc` "
+        "(partition `short`), 25 minutes"
+    )
     for words in (values["sweep_run"], "the paper's direction", "0 of 3", "wall time (s)", whole):
         assert json.dumps(words)[1:-1] in shown, words
     assert "did not run the sweep" not in shown

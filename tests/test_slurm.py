@@ -9,6 +9,7 @@ start installed); elsewhere the test is skipped, saying why. CI runs it.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -130,6 +131,10 @@ def test_the_test_config_on_slurm_is_the_local_build_and_survives_a_failed_job(
     # statistics and measures
     groups = [Path(p).parent.name for p in submitted.values() if "/group_replication" in p]
     assert "group_replication_evaluate_measures_run_train_stats" in groups, groups
+
+    # the book says where its build ran
+    timeline = json.loads((work / "book/_data/timeline.json").read_text())
+    assert timeline["executor"] == "slurm" and timeline["cluster"] == "icub-local"
 
     # the same bytes as the local build, result for result
     ours = (work / "data/results.sha256").read_text()

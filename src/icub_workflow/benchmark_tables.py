@@ -91,3 +91,16 @@ def timeline(rows: list[tuple[float, float, str]], cores: int = 2) -> dict[str, 
         "job_s": round(sum(end - start for start, end, _ in rows), 1),
         "idle_core_s": round(float(np.clip(cores - running, 0, None).sum() * 0.05), 1),
     }
+
+
+def executor(environment: dict[str, str]) -> dict[str, str]:
+    """Where the job asking ran: on a Slurm cluster (Slurm sets SLURM_JOB_ID in a job's
+    environment) or on this machine. Asked by the book's own job, the last of a build: with
+    workflow/profiles/slurm every job but the manifest runs on the cluster, the book included."""
+    if "SLURM_JOB_ID" not in environment:
+        return {"executor": "local"}
+    return {
+        "executor": "slurm",
+        "cluster": environment.get("SLURM_CLUSTER_NAME", "unnamed"),
+        "partition": environment.get("SLURM_JOB_PARTITION", "default"),
+    }

@@ -1,13 +1,20 @@
 """Stage the outputs, record provenance, and build the Jupyter Book strictly (warnings fail)."""
 
 import json
+import os
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 from icub_affordance.io import atomic_path, redirect_log, write_text
-from icub_workflow.benchmark_tables import benchmark_table, job_times, read_benchmarks, timeline
+from icub_workflow.benchmark_tables import (
+    benchmark_table,
+    executor,
+    job_times,
+    read_benchmarks,
+    timeline,
+)
 from icub_workflow.book.notebooks import execute_pages, is_notebook
 from icub_workflow.book.run import provenance, results_provenance, stage
 
@@ -29,7 +36,7 @@ with redirect_log(snakemake.log[0]):
     with atomic_path(data_dir / "benchmarks.csv") as tmp:
         benchmark_table(benchmarks).to_csv(tmp)
     # and when they ran: for a build from scratch, its wall time up to this job
-    line = timeline(job_times(Path("data/benchmarks")))
+    line = timeline(job_times(Path("data/benchmarks"))) | executor(dict(os.environ))
     write_text(data_dir / "timeline.json", json.dumps(line, indent=2) + "\n")
     # a clean build every time: no pages left from an earlier table of contents, and the same
     # HTML as a first build (Sphinx links its CSS differently when the last build's is there)
