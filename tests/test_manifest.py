@@ -157,7 +157,16 @@ def _verify(workdir: Path, config: Path) -> subprocess.CompletedProcess:
         cwd=workdir,
         capture_output=True,
         text=True,
+        timeout=600,
     )
+
+
+def _machine() -> str:
+    """The CPU, for a report of results that differ on another machine."""
+    cpuinfo = Path("/proc/cpuinfo")
+    lines = cpuinfo.read_text().splitlines() if cpuinfo.exists() else []
+    model = next((line.split(":", 1)[1].strip() for line in lines if "model name" in line), "?")
+    return f"\nthis machine: {model} ({os.cpu_count()} CPUs)"
 
 
 @pytest.mark.slow
@@ -171,13 +180,14 @@ def test_the_default_build_in_data_is_the_tracked_manifest():
         cwd=REPO,
         capture_output=True,
         text=True,
+        timeout=600,
     )
     assert "Nothing to be done" in pending.stdout + pending.stderr, (
         "data/ is not up to date with the code: run `snakemake -c2` first\n"
         + pending.stdout[-2000:]
     )
     result = _verify(REPO, CONFIG)
-    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:] + _machine()
     assert f"all {len(read_manifest(REPO / 'results.sha256'))} result files" in result.stdout
     assert (REPO / "data" / "results.sha256").read_text() == (REPO / "results.sha256").read_text()
 
