@@ -12,9 +12,9 @@ min_version("9.0")
 # job for the numerical libraries (a sum split over cores is a sum in another order), and the
 # same SIMD code paths of numpy and OpenBLAS whatever the CPU offers beyond AVX2. Every job's
 # process inherits these; they act when it imports numpy.
-from icub_workflow.manifest import ARITHMETIC_ENVIRONMENT
+from icub_workflow.manifest import arithmetic_environment, cpu_flags
 
-os.environ.update(ARITHMETIC_ENVIRONMENT)
+os.environ.update(arithmetic_environment(cpu_flags()))
 
 
 configfile: "config/config.yaml"

@@ -83,6 +83,8 @@ def scratch_workflow(path: Path) -> Path:
 
 
 def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
+    """Snakemake on the test config (by default) in `workdir`. A run that hangs fails its test
+    after 20 minutes rather than holding CI until its own limit."""
     import subprocess
 
     return subprocess.run(
@@ -90,6 +92,7 @@ def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
         cwd=workdir,
         capture_output=True,
         text=True,
+        timeout=1200,
     )
 
 

@@ -468,8 +468,10 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     )
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
     whole = (
-        "The whole build this book comes from (412 jobs) ran on the Slurm cluster `hpc` "
-        "(partition `short`), 25 minutes"
+        "The whole build this book comes from (412 jobs) took 25 minutes from its first job's "
+        "start to the last one's end before this book, 46 minutes of job time (the page "
+        "\"Reproduce and vary it\" gives each rule's share); the book's own job ran on the "
+        "Slurm cluster `hpc` (partition `short`)"
     )
     for words in (values["sweep_run"], "the paper's direction", "0 of 3", "wall time (s)", whole):
         assert json.dumps(words)[1:-1] in shown, words

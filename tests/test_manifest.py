@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import ast
 import os
 import shutil
 import subprocess
@@ -13,8 +14,9 @@ import pytest
 from conftest import CONFIG, REPO, scratch_workflow
 
 from icub_workflow.manifest import (
-    ARITHMETIC_ENVIRONMENT,
+    arithmetic_environment,
     compare,
+    cpu_flags,
     digests,
     format_manifest,
     is_result,
@@ -131,12 +133,26 @@ def test_the_arithmetic_environment_holds_numpy_below_avx512():
         "import numpy._core._multiarray_umath as m; "
         "print(sorted(f for f in m.__cpu_dispatch__ if m.__cpu_features__.get(f)))"
     )
-    env = os.environ | ARITHMETIC_ENVIRONMENT
+    env = os.environ | arithmetic_environment(cpu_flags())
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.strip() == "['X86_V3']"  # AVX2, FMA3 and their kin
-    text = (REPO / "Snakefile").read_text()
-    assert "os.environ.update(ARITHMETIC_ENVIRONMENT)" in text
+    used = set(ast.literal_eval(out.stdout.strip()))
+    assert not used & {"X86_V4", "AVX512_ICL", "AVX512_SPR"}, used
+    assert (
+        "os.environ.update(arithmetic_environment(cpu_flags()))" in (REPO / "Snakefile").read_text()
+    )
+
+
+def test_openblas_is_held_at_haswell_only_on_a_cpu_that_has_it(tmp_path):
+    """Told Haswell, OpenBLAS would run AVX2 code on any CPU: without AVX2 it must not be told."""
+    cpuinfo = tmp_path / "cpuinfo"
+    cpuinfo.write_text("processor\t: 0\nflags\t\t: fpu sse2 avx avx2 fma avx512f\n")
+    assert cpu_flags(cpuinfo) == {"fpu", "sse2", "avx", "avx2", "fma", "avx512f"}
+    assert arithmetic_environment(cpu_flags(cpuinfo))["OPENBLAS_CORETYPE"] == "Haswell"
+    old = arithmetic_environment({"fpu", "sse2", "avx"})
+    assert "OPENBLAS_CORETYPE" not in old and "NPY_DISABLE_CPU_FEATURES" not in old
+    assert old["OPENBLAS_NUM_THREADS"] == "1"
+    assert cpu_flags(tmp_path / "missing") == set()
 
 
 # ---- slow: the pipeline's own rules -------------------------------------------------------------

@@ -21,18 +21,35 @@ from dataclasses import dataclass
 from pathlib import Path
 
 # The arithmetic the manifest's bytes assume, set by the Snakefile for every job. numpy picks SIMD
-# kernels at import by what the CPU offers: with AVX-512 its exp, log and tanh differ in the last
-# bit from the AVX2 ones; OpenBLAS likewise picks its matrix kernels (another order of sums). Both
-# are held at the AVX2 (Haswell) level that x86-64 machines of the last decade share, and every
-# library runs one thread. The trainer's numba code needs nothing: it is compiled without
+# kernels at import by what the CPU offers: with AVX-512 its exp, log1p and tanh differ in the
+# last bit from the AVX2 ones; OpenBLAS likewise picks its matrix kernels (another order of sums).
+# Both are held at the AVX2 (Haswell) level that x86-64 machines of the last decade share, and
+# every library runs one thread. The trainer's numba code needs nothing: it is compiled without
 # fast-math (no reordered sums, no fused multiply-adds) and computes its own exponential.
-ARITHMETIC_ENVIRONMENT = {
-    "OMP_NUM_THREADS": "1",
-    "OPENBLAS_NUM_THREADS": "1",
-    "MKL_NUM_THREADS": "1",
+ONE_THREAD = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+AVX2_LEVEL = {
     "NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR",
     "OPENBLAS_CORETYPE": "Haswell",
 }
+
+
+def cpu_flags(cpuinfo: str | os.PathLike[str] = "/proc/cpuinfo") -> set[str]:
+    """The CPU's feature flags as Linux lists them (none where it does not: another system)."""
+    try:
+        text = Path(cpuinfo).read_text()
+    except OSError:
+        return set()
+    line = next((line for line in text.splitlines() if line.startswith("flags")), "")
+    return set(line.partition(":")[2].split())
+
+
+def arithmetic_environment(flags: set[str]) -> dict[str, str]:
+    """The environment for the jobs of a machine with these CPU flags: one thread each and, where
+    the CPU has AVX2 and FMA, the AVX2 level. (OpenBLAS runs the kernels it is told to without
+    asking the CPU: told Haswell on a CPU without AVX2, it would stop at an illegal
+    instruction. Such a machine keeps its own kernels, and may differ in the last bits.)"""
+    return ONE_THREAD | (AVX2_LEVEL if {"avx2", "fma"} <= flags else {})
+
 
 RESULT_SUFFIXES = (".csv", ".json", ".npz", ".md")
 NOT_RESULTS = ("data/logs/", "data/benchmarks/")
