@@ -75,11 +75,8 @@ def result_files(outputs: Iterable[str]) -> list[str]:
 
 
 def sha256(path: str | os.PathLike[str]) -> str:
-    digest = hashlib.sha256()
     with open(path, "rb") as handle:
-        for block in iter(lambda: handle.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
+        return hashlib.file_digest(handle, "sha256").hexdigest()
 
 
 def digests(paths: Iterable[str], root: str | os.PathLike[str] = ".") -> dict[str, str]:
@@ -116,11 +113,6 @@ def read_manifest(path: str | os.PathLike[str]) -> dict[str, str]:
             f"{path}: no results manifest; it is tracked in git (git checkout -- {path.name})"
         )
     return parse_manifest(path.read_text(), str(path))
-
-
-def manifest_digest(path: str | os.PathLike[str]) -> str:
-    """The manifest's own SHA-256: one number that stands for every result of a build."""
-    return sha256(path)
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,7 @@ from datetime import UTC, datetime
 from importlib import metadata
 from pathlib import Path
 
-from icub_workflow.manifest import manifest_digest, read_manifest
+from icub_workflow.manifest import read_manifest, sha256
 
 PACKAGES = (
     "mujoco",
@@ -60,9 +60,9 @@ def results_provenance(manifest: str, tracked: str) -> dict:
     manifest of the default configuration (the same digest when every result is the same bytes)."""
     built, expected = read_manifest(manifest), read_manifest(tracked)
     return {
-        "digest": manifest_digest(manifest),
+        "digest": sha256(manifest),
         "files": len(built),
-        "tracked_digest": manifest_digest(tracked),
+        "tracked_digest": sha256(tracked),
         "same_as_tracked": sum(built[path] == expected.get(path) for path in built),
         "tracked_files": len(expected),
     }
