@@ -173,10 +173,12 @@ def test_a_robot_effects_statistics():
     assert np.isnan(none["estimate"]) and np.isnan(none["p"])
 
 
-def test_the_wrong_grip_rate_per_congruency_averages_the_two_sizes():
+def test_the_wrong_grip_rate_per_level_averages_the_other_factors_levels():
     rates = {"congruent_large": 0.1, "congruent_small": 0.3, "incongruent_large": 0.5,
              "incongruent_small": 0.0}  # fmt: skip
-    assert wrong_grip_by_congruency(rates) == pytest.approx({"congruent": 0.2, "incongruent": 0.25})
+    assert wrong_grip_by_congruency(rates) == pytest.approx(
+        {"congruent": 0.2, "incongruent": 0.25, "large": 0.3, "small": 0.15}
+    )
 
 
 def test_the_cost_line_is_least_squares():

@@ -11,6 +11,7 @@ from scipy import stats
 
 from icub_affordance.confirmation import (
     COLUMNS,
+    DETAIL_COLUMNS,
     bar_verdict,
     clustered_interval,
     confirmation_table,
@@ -21,15 +22,16 @@ OBJECTS = ("big_ball", "small_ball", "big_cube", "small_cube")
 
 def robot_trials(run: str, held: dict[int, list[bool]], sequences: int = 5) -> pd.DataFrame:
     """A run's robot trials: each network's grasping trial of each object repeated over the
-    test sequences (one movement), plus categorisation trials that must not count."""
+    test sequences (one movement), plus categorisation trials that must not count; even
+    networks learn mapping A, odd ones B."""
     rows = []
     for net, outcomes in held.items():
+        mine = {"run": run, "network": net, "mapping": "AB"[net % 2]}
         for obj, ok in zip(OBJECTS, outcomes, strict=True):
             for seq in range(sequences):
-                rows.append(dict(run=run, network=net, task="grasping", object=obj, success=ok))
+                rows.append(mine | dict(task="grasping", object=obj, success=ok))
                 rows.append(
-                    dict(run=run, network=net, task="categorisation", object=obj, success=True)
-                    | {"sequence": seq}
+                    mine | dict(task="categorisation", object=obj, success=True, sequence=seq)
                 )
     return pd.DataFrame(rows)
 
@@ -65,6 +67,22 @@ def test_the_interval_matches_an_independent_computation(held):
     assert got["share"] == pytest.approx(sum(held) / 48)
     assert got["ci_low"] == pytest.approx(low, abs=1e-9)
     assert got["ci_high"] == pytest.approx(high, abs=1e-9)
+    # the design effect before its floor: the clustered variance over the binomial one
+    raw = raw_design_effect(held, [4] * len(held))
+    assert got["design_effect_raw"] == pytest.approx(raw, rel=1e-9)
+    assert got["design_effect"] == pytest.approx(max(1.0, raw), rel=1e-9)
+
+
+def raw_design_effect(held: list[int], trials: list[int]) -> float:
+    """The share's variance clustered by network (statsmodels' OLS on a constant) over the
+    binomial variance of as many independent trials."""
+    import statsmodels.api as sm
+
+    y = np.concatenate([[1.0] * h + [0.0] * (n - h) for h, n in zip(held, trials, strict=True)])
+    groups = np.repeat(np.arange(len(held)), trials)
+    fit = sm.OLS(y, np.ones_like(y)).fit(cov_type="cluster", cov_kwds={"groups": groups})
+    p = float(fit.params[0])
+    return float(fit.cov_params()[0, 0]) / (p * (1 - p) / len(y))
 
 
 def test_clusters_of_one_trial_give_clopper_pearson_at_one_trial_fewer():
@@ -85,6 +103,7 @@ def test_every_trial_held_gives_the_closed_form_lower_end():
     got = clustered_interval([4] * 12, [4] * 12)
     n = 48 * (stats.t.ppf(0.975, 47) / stats.t.ppf(0.975, 11)) ** 2
     assert got["design_effect"] == 1 and got["effective_trials"] == pytest.approx(n)
+    assert np.isnan(got["design_effect_raw"])  # no binomial variance to divide by
     assert got["ci_low"] == pytest.approx(0.025 ** (1 / n)) and got["ci_high"] == 1
     # 48 of 48 held with 12 networks does not reach what 48 independent trials would show
     assert got["ci_low"] < stats.binomtest(48, 48).proportion_ci(method="exact").low
@@ -96,6 +115,9 @@ def test_clustering_widens_the_interval():
     clustered = clustered_interval([4] * 9 + [0] * 3, [4] * 12)
     assert even["share"] == clustered["share"] == 0.75
     assert clustered["design_effect"] > 3 and even["design_effect"] == 1
+    # evenly spread, every network's count is the share's: no variance between networks, a raw
+    # design effect of 0, which the interval does not take below 1
+    assert even["design_effect_raw"] == 0 and clustered["design_effect_raw"] > 3
     assert clustered["ci_high"] - clustered["ci_low"] > 1.5 * (even["ci_high"] - even["ci_low"])
 
 
@@ -117,7 +139,7 @@ def test_the_table_counts_each_network_and_object_once():
     one = pd.concat([robot_trials("explore", explored, 1), robot_trials("confirm", fresh, 1)])
     table = confirmation_table(five, variants)
     pd.testing.assert_frame_equal(table, confirmation_table(one, variants))
-    assert list(table.columns) == ["target", "hidden", *COLUMNS]
+    assert list(table.columns) == ["target", "hidden", *COLUMNS, *DETAIL_COLUMNS]
     assert list(table["seed_set"]) == ["exploration", "confirmation"]
     assert list(table["networks"]) == [12, 12] and list(table["trials"]) == [48, 48]
     assert list(table["held"]) == [44, 42]  # 4 networks miss a cube; 6 miss the small ball
@@ -127,6 +149,33 @@ def test_the_table_counts_each_network_and_object_once():
     assert (row["ci_low"], row["ci_high"]) == pytest.approx(
         (expected["ci_low"], expected["ci_high"])
     )
+    assert row["design_effect_raw"] == pytest.approx(expected["design_effect_raw"])
+
+
+def test_the_table_shows_the_misses_per_mapping_and_object():
+    """By hand: in the exploration networks 0, 3, 6 and 9 miss the big cube (two of mapping A,
+    0 and 6; two of B); in the confirmation the odd networks (all of mapping B) miss the small
+    ball. Six networks per mapping, each object once per network."""
+    explored = {n: [True, True, n % 3 > 0, True] for n in range(12)}
+    fresh = {n: [True, n % 2 == 0, True, True] for n in range(12, 24)}
+    trials = pd.concat([robot_trials("explore", explored), robot_trials("confirm", fresh)])
+    table = confirmation_table(trials, confirmed(exploration="explore", confirmation="confirm"))
+    detail = [c for c in DETAIL_COLUMNS if c != "design_effect_raw"]
+    assert detail == [f"{m}_{o}_{c}" for m in "AB" for o in OBJECTS for c in ("trials", "held")]
+    assert (table[[c for c in detail if c.endswith("_trials")]] == 6).all().all()
+    for _, row in table.iterrows():  # the per-object counts add up to the row's
+        assert sum(row[c] for c in detail if c.endswith("_held")) == row["held"]
+        assert sum(row[c] for c in detail if c.endswith("_trials")) == row["trials"]
+    explore, confirm = (table.iloc[k] for k in (0, 1))
+    missed = {c.removesuffix("_held"): 6 - explore[c] for c in detail if c.endswith("_held")}
+    assert {k: v for k, v in missed.items() if v} == {"A_big_cube": 2, "B_big_cube": 2}
+    missed = {c.removesuffix("_held"): 6 - confirm[c] for c in detail if c.endswith("_held")}
+    assert {k: v for k, v in missed.items() if v} == {"B_small_ball": 6}
+
+
+def test_no_confirmed_variant_gives_the_columns_without_rows():
+    table = confirmation_table(robot_trials("explore", {0: [True] * 4}), [])
+    assert table.empty and list(table.columns) == [*COLUMNS, *DETAIL_COLUMNS]
 
 
 def test_sequences_that_disagree_are_refused():
@@ -155,8 +204,29 @@ def test_the_bar_verdict(low, high, verdict):
 # -- the book's sentences: each a claim resting on the page's values, and moving with them -----
 
 
-def confirmation_csv(explore=(45, 0.83, 0.98), confirm=(44, 0.80, 0.97)) -> pd.DataFrame:
-    """data/embodied/confirmation.csv for one variant: (held of 48, ci_low, ci_high) per set."""
+#: The per-object cells of a row (``DETAIL_COLUMNS`` after the raw design effect).
+CELLS = [f"{m}_{o}" for m in "AB" for o in OBJECTS]
+
+
+def object_detail(held: int, networks: int = 12) -> dict[str, int]:
+    """A row's per-mapping and per-object counts: each cell the trials of its mapping's
+    networks (half of them), the misses (trials - held) dealt over the cells in turn."""
+    per_cell = networks // 2
+    missed = dict.fromkeys(CELLS, 0)
+    for k in range(networks * len(OBJECTS) - held):
+        missed[CELLS[k % len(CELLS)]] += 1
+    assert all(n <= per_cell for n in missed.values())
+    return {f"{c}_trials": per_cell for c in CELLS} | {
+        f"{c}_held": per_cell - missed[c] for c in CELLS
+    }
+
+
+def confirmation_csv(
+    explore=(45, 0.83, 0.98), confirm=(44, 0.80, 0.97), raw=(0.85, 0.85)
+) -> pd.DataFrame:
+    """data/embodied/confirmation.csv for one variant: (held of 48, ci_low, ci_high) per set,
+    its raw design effect (``raw``, below 1: the design effect floors it at 1) and its counts
+    per mapping and object, consistent with the row's (``object_detail``)."""
     variant = {
         "categorisation_cue": "all_steps",
         "target": "commands",
@@ -165,17 +235,26 @@ def confirmation_csv(explore=(45, 0.83, 0.98), confirm=(44, 0.80, 0.97)) -> pd.D
         "learning_rate_schedule": "anneal",
     }
     rows = []
-    for name, (held, low, high), first in (
-        ("exploration", explore, 0),
-        ("confirmation", confirm, 12),
+    for name, (held, low, high), first, deff in (
+        ("exploration", explore, 0, raw[0]),
+        ("confirmation", confirm, 12, raw[1]),
     ):
         rows.append(
             variant
             | {"seed_set": name, "run": name, "first_network": first, "last_network": first + 11}
             | {"networks": 12, "trials": 48, "held": held, "share": held / 48}
-            | {"design_effect": 1.0, "effective_trials": 40.0, "ci_low": low, "ci_high": high}
+            | {"design_effect": max(1.0, deff), "effective_trials": 40.0}
+            | {"ci_low": low, "ci_high": high, "design_effect_raw": deff}
+            | object_detail(held)
         )
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows)[[*variant, *COLUMNS, *DETAIL_COLUMNS]]  # as the table writes it
+
+
+def test_the_fixtures_counts_add_up_to_each_rows():
+    table = confirmation_csv(explore=(30, 0.45, 0.78))
+    for _, row in table.iterrows():
+        assert sum(row[f"{c}_held"] for c in CELLS) == row["held"]
+        assert sum(row[f"{c}_trials"] for c in CELLS) == row["trials"]
 
 
 def sentences(table: pd.DataFrame) -> dict:
@@ -192,6 +271,8 @@ def test_the_sentences_are_claims_resting_on_the_pages_values():
         assert entries and all(e.split(".", 1)[1] in page for e in entries)
         assert all(isinstance(page[e.split(".", 1)[1]], int | float) for e in entries)
     assert "grasping.confirmation_ci_low" in claims["confirmation_sentence"]
+    assert "grasping.confirmation_design_effect_raw" in claims["confirmation_sentence"]
+    assert page["confirmation_design_effect_raw"] == pytest.approx(0.85)
     assert "grasping.exploration_share" in claims["exploration_sentence"]
     explored = page["exploration_sentence"]
     assert "45 of its 48" in explored and "networks 0-11" in explored and "chosen on" in explored
@@ -200,6 +281,21 @@ def test_the_sentences_are_claims_resting_on_the_pages_values():
     assert (
         "44 of its 48" in confirmed and "networks 12-23" in confirmed and "80% to 97%" in confirmed
     )
+    # the design effect before its floor, and the four misses where they are (one each on
+    # mapping A's objects, as the fixture deals them)
+    assert "before the interval floors it at 1, 0.850" in confirmed
+    assert (
+        "per object and mapping: big ball (A) 1 of 6; small ball (A) 1 of 6; big cube (A) 1 of 6; "
+        "small cube (A) 1 of 6)" in confirmed
+    )
+    assert "(B)" not in confirmed
+    # the numbers move with the row's
+    moved = sentences(confirmation_csv(confirm=(41, 0.70, 0.92), raw=(0.85, 0.6)))["grasping"]
+    assert "0.600" in moved["confirmation_sentence"]
+    assert "big ball (B) 1 of 6" in moved["confirmation_sentence"]
+    assert "big ball (A) 2 of 6" not in moved["confirmation_sentence"]
+    held = sentences(confirmation_csv(confirm=(48, 0.93, 1.0), raw=(0.85, float("nan"))))
+    assert "per object and mapping: none)" in held["grasping"]["confirmation_sentence"]
 
 
 @pytest.mark.parametrize(

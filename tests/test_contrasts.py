@@ -203,3 +203,155 @@ def test_simple_effects_are_the_cells_differences_tested_over_networks():
     assert both["size_in_congruent"]["estimate"] == pytest.approx(0.04, abs=0.015)
     assert both["size_in_congruent"]["p"] < 0.01
     assert both["size_in_incongruent"]["ci_low"] < 0 < both["size_in_incongruent"]["ci_high"]
+
+
+# -- errors apart from reaction time, and the families --------------------------------------
+
+
+def with_errors(df: pd.DataFrame, seed: int = 5, rate: float = 0.6) -> pd.DataFrame:
+    """``df`` with trial-table grip columns: each incongruent network x object ends on the wrong
+    grip with probability ``rate`` (all its sequences alike, as in closed loop), and its RMSE
+    then grows by 0.05; congruent trials are always right."""
+    rng = np.random.default_rng(seed)
+    out = df.copy()
+    wrong = {
+        key: (not group["congruency"].eq("congruent").all()) and rng.random() < rate
+        for key, group in out.groupby(["network", "object"])
+    }
+    flag = np.array([wrong[(n, o)] for n, o in zip(out["network"], out["object"], strict=True)])
+    out["target_grip"] = "power"
+    out["final_grip"] = np.where(flag, "precision", "power")
+    out["rmse"] = out["rmse"] + 0.05 * flag
+    return out
+
+
+def test_the_within_network_fit_equals_a_model_with_a_dummy_per_network():
+    from icub_affordance.stats import with_outcomes, within_network_fit
+
+    df = with_outcomes(with_errors(synthetic(seed=11)))
+    fit = within_network_fit(df, "rmse_correct")
+    # the reference: statsmodels OLS on each network x object with a correct trial, an
+    # intercept per network and the coded within terms with their mapping interactions
+    data = coded(network_object_means(df.dropna(subset=["rmse_correct"]), "rmse_correct"))
+    data = data.dropna(subset=["rmse_correct"])
+    ref = smf.ols(
+        "rmse_correct ~ 0 + C(network) + (congruency + size + congruency:size) * mapping - mapping",
+        data=data,
+    ).fit()
+    ci = ref.conf_int()
+    for term, name in (("congruency", "congruency"), ("size", "size"),
+                       ("congruency:size", "congruency:size")):  # fmt: skip
+        assert fit[term]["estimate"] == pytest.approx(ref.params[name], abs=1e-12)
+        assert fit[term]["se"] == pytest.approx(ref.bse[name], rel=1e-9)
+        assert fit[term]["df"] == ref.df_resid
+        assert fit[term]["p"] == pytest.approx(ref.pvalues[name], rel=1e-9)
+        assert fit[term]["ci_low"] == pytest.approx(ci.loc[name, 0], rel=1e-9)
+    # every network kept, even one with no correct trial in a cell
+    assert fit["congruency"]["networks"] == 12
+    assert fit["congruency"]["observations"] == len(data) < 48
+    counts = data.groupby(["congruency", "size"])["network"].nunique()
+    assert fit["congruency"]["cells"]["incongruent_small"] == counts[(0.5, 0.5)]
+    # the correct trials carry no error effect: the truth, 0.03, is inside the interval
+    assert fit["congruency"]["ci_low"] < TRUTH["congruency"] < fit["congruency"]["ci_high"]
+
+
+def test_with_every_cell_the_within_fit_estimates_the_networks_contrasts():
+    from icub_affordance.stats import within_network_fit
+
+    df = synthetic(seed=4)
+    fit, contrasts = within_network_fit(df, "rmse"), network_contrasts(df)
+    for term in ("congruency", "size", "congruency:size"):
+        assert fit[term]["estimate"] == pytest.approx(contrasts[term]["estimate"], abs=1e-12)
+
+
+def test_a_cell_no_network_reaches_leaves_the_terms_untestable():
+    from icub_affordance.stats import with_outcomes, within_network_fit
+
+    df = with_outcomes(with_errors(synthetic(seed=2), rate=1.0))  # no correct incongruent trial
+    fit = within_network_fit(df, "rmse_correct")
+    assert all(np.isnan(fit[t]["p"]) for t in ("congruency", "size", "congruency:size"))
+    assert fit["congruency"]["cells"]["incongruent_large"] == 0
+
+
+def test_the_errors_are_the_wrong_grip_rates_contrasts():
+    from icub_affordance.stats import outcome_tests, with_outcomes
+
+    df = with_outcomes(with_errors(synthetic(seed=7)))
+    errors = outcome_tests(df, "errors")
+    per_object = df.groupby(["network", "object", "congruency"])["wrong_grip"].mean()
+    by_net = per_object.groupby(["network", "congruency"]).mean().unstack()
+    expected = (by_net["incongruent"] - by_net["congruent"]).mean()
+    assert errors["congruency"]["estimate"] == pytest.approx(expected, abs=1e-12)
+
+
+def test_the_interaction_is_twice_the_required_grip_and_the_three_way_four_times_the_shapes():
+    df = synthetic(seed=9)
+    grips = {("A", "big_ball"): "power", ("A", "small_ball"): "power",
+             ("A", "big_cube"): "precision", ("A", "small_cube"): "precision",
+             ("B", "big_ball"): "precision", ("B", "small_ball"): "precision",
+             ("B", "big_cube"): "power", ("B", "small_cube"): "power"}  # fmt: skip
+    means = network_object_means(df).assign(
+        grip=lambda d: [grips[(m, o)] for m, o in zip(d["mapping"], d["object"], strict=True)],
+        shape=lambda d: d["object"].str.split("_").str[1],
+    )
+    per_net = means.pivot_table(index=["network", "mapping"], columns="grip", values="rmse")
+    required = (per_net["power"] - per_net["precision"]).groupby("mapping").mean().mean()
+    shapes = means.pivot_table(index=["network", "mapping"], columns="shape", values="rmse")
+    cubes = (shapes["cube"] - shapes["ball"]).groupby("mapping").mean().mean()
+    tests = network_contrasts(df)
+    assert tests["congruency:size"]["estimate"] == pytest.approx(2 * required, abs=1e-12)
+    assert tests["congruency:size:mapping"]["estimate"] == pytest.approx(4 * cubes, abs=1e-12)
+
+
+def analysed(df: pd.DataFrame, confirmatory) -> dict:
+    from icub_affordance.stats import analyse
+
+    trials = with_errors(df).assign(task="categorisation", congruent=lambda d: d["congruency"].eq(
+        "congruent").astype(str))  # fmt: skip
+    trials = pd.concat([trials.assign(mode="closed_loop"), trials.assign(mode="teacher_forced")])
+    return analyse(trials, confirmatory)
+
+
+PAPER = [{"mode": "closed_loop", "measure": "rmse", "effect": e} for e in ("congruency", "size")]
+
+
+def every_test(result: dict):
+    for mode in ("closed_loop", "teacher_forced"):
+        yield from result["contrasts"][mode].values()
+        for outcome in ("errors", "correct_rt"):
+            yield from result[mode][outcome].values()
+        yield from result["simple"][mode].values()
+
+
+def test_every_test_is_holm_adjusted_within_its_named_family():
+    result = analysed(synthetic(seed=6), PAPER)
+    families: dict[str, list[dict]] = {}
+    for test in every_test(result):
+        families.setdefault(test["family"], []).append(test)
+    assert set(families) == {"confirmatory", "exploration: closed loop",
+                             "exploration: teacher forced"}  # fmt: skip
+    for tests in families.values():
+        p = np.array([t["p"] for t in tests])
+        ok = np.isfinite(p)
+        m = int(ok.sum())  # Holm by hand: (m - j) p_(j), made monotone, capped at 1
+        expected = np.minimum(np.maximum.accumulate(np.sort(p[ok]) * (m - np.arange(m))), 1)
+        got = np.array([t["p_holm"] for t in tests])[ok][np.argsort(p[ok])]
+        assert got == pytest.approx(expected, rel=1e-12)
+        assert all(t["family_size"] == ok.sum() for t in tests)
+    assert [t["family"] for t in (result["contrasts"]["closed_loop"][e] for e in
+                                  ("congruency", "size"))] == ["confirmatory"] * 2  # fmt: skip
+
+
+def test_the_headline_p_follows_the_confirmatory_family_and_nothing_else():
+    df = synthetic(seed=6)
+    paper = analysed(df, PAPER)["contrasts"]["closed_loop"]["congruency"]
+    alone = analysed(df, PAPER[:1])["contrasts"]["closed_loop"]["congruency"]
+    wider = PAPER + [{"mode": "closed_loop", "measure": "wrong_grip", "effect": "congruency"}]
+    three = analysed(df, wider)["contrasts"]["closed_loop"]["congruency"]
+    assert alone["p_holm"] == alone["p"] < paper["p_holm"]
+    assert three["family_size"] == 3 and three["p_holm"] >= paper["p_holm"]
+    # no declared test: every test is exploration
+    none = analysed(df, [])["contrasts"]["closed_loop"]["congruency"]
+    assert none["family"] == "exploration: closed loop"
+    with pytest.raises(ValueError, match="measure must be one of"):
+        analysed(df, [{"mode": "closed_loop", "measure": "speed", "effect": "size"}])

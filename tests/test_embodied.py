@@ -17,7 +17,7 @@ from icub_affordance.embodied import (
     replay_policy,
     run_trial,
 )
-from icub_affordance.embodied_stats import success_table
+from icub_affordance.embodied_stats import ROBOT_FAMILY, success_table, variant_effects
 from icub_affordance.grasp import grip_in_contact, grip_used
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
@@ -291,3 +291,205 @@ def test_first_divergent_step_needs_every_later_step_significant():
     # the adjusted p decides, not the raw one
     summary = summary.assign(p=0.001, p_holm=[0.01, 0.01, 0.06, 0.01])
     assert first_divergent_step(summary) == 4
+
+
+# -- the robot effects: per cell, per object, the interaction and the family ---------------------
+
+#: Under mapping A: object -> (size, congruent); mapping B swaps congruency. The required grip of
+#: a categorisation trial is the natural one (large: power) where congruent, the other where not.
+MADE_UP_OBJECTS = {
+    "big_ball": ("large", True),
+    "small_ball": ("small", False),
+    "big_cube": ("large", False),
+    "small_cube": ("small", True),
+}
+
+
+def made_up_trials(held, contact, networks: int, run: str = "v", sequences: int = 3):
+    """One variant's robot trials: ``held(net, obj)`` and ``contact(net, obj)`` (seconds or NaN)
+    the same in each of a trial's ``sequences``; networks 0..n/2-1 learn mapping A, the rest B;
+    every grasping trial held and touched (they must not count in the categorisation effects)."""
+    rows = []
+    for net in range(networks):
+        mapping = "A" if net < networks // 2 else "B"
+        for task in ("grasping", "categorisation"):
+            for obj, (size, congruent_a) in MADE_UP_OBJECTS.items():
+                congruent = congruent_a == (mapping == "A")
+                natural = "power" if size == "large" else "precision"
+                other = "precision" if natural == "power" else "power"
+                grasp = task == "grasping"
+                rows += [
+                    {"run": run, "network": net, "mapping": mapping, "task": task, "object": obj,
+                     "size": size, "congruent": "" if grasp else str(congruent),
+                     "target_grip": natural if grasp or congruent else other, "sequence": seq,
+                     "success": True if grasp else bool(held(net, obj)),
+                     "contact_time": 1.0 if grasp else contact(net, obj)}
+                    for seq in range(sequences)
+                ]  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def test_the_robot_effects_count_each_cell_and_each_object_by_hand():
+    """Four networks (0, 1: mapping A; 2, 3: B), three sequences each: four misses, three of
+    them incongruent small (A's small ball, B's small cube), one incongruent large (A's big
+    cube); contact times only where held."""
+    misses = {(0, "small_ball"), (1, "big_cube"), (2, "small_cube"), (3, "small_cube")}
+
+    def held(net, obj):
+        return (net, obj) not in misses
+
+    def contact(net, obj):
+        return 1.0 + 0.1 * net if held(net, obj) else np.nan
+
+    effect = variant_effects(made_up_trials(held, contact, networks=4))["v"]
+    success, times = effect["success"], effect["contact_time"]
+    assert success["distinct_trials"] == times["distinct_trials"] == 16
+    assert success["cells"] == {
+        "congruent_large": {"trials": 4, "held": 4, "mean": 1.0},
+        "congruent_small": {"trials": 4, "held": 4, "mean": 1.0},
+        "incongruent_large": {"trials": 4, "held": 3, "mean": 0.75},
+        "incongruent_small": {"trials": 4, "held": 1, "mean": 0.25},
+    }
+    # contact time: touched where held; its mean over the trials that touched
+    assert {k: (c["trials"], c["touched"]) for k, c in times["cells"].items()} == {
+        "congruent_large": (4, 4), "congruent_small": (4, 4),
+        "incongruent_large": (4, 3), "incongruent_small": (4, 1),
+    }  # fmt: skip
+    assert times["cells"]["congruent_large"]["mean"] == pytest.approx(1.15)
+    assert times["cells"]["incongruent_large"]["mean"] == pytest.approx((1.0 + 1.2 + 1.3) / 3)
+    assert times["cells"]["incongruent_small"]["mean"] == pytest.approx(1.1)  # network 1 only
+    # per mapping and object: two networks each, the misses where they are
+    objects = success["objects"]
+    assert set(objects) == {f"{m}_{o}" for m in "AB" for o in MADE_UP_OBJECTS}
+    missed = {k: o["trials"] - o["held"] for k, o in objects.items() if o["held"] < o["trials"]}
+    assert missed == {"A_small_ball": 1, "A_big_cube": 1, "B_small_cube": 2}
+    assert all(o["trials"] == 2 for o in objects.values())
+    assert objects["B_small_cube"] == {"congruency": "incongruent", "size": "small",
+                                       "target_grip": "power", "trials": 2, "held": 0,
+                                       "mean": 0.0}  # fmt: skip
+    assert objects["A_big_cube"]["target_grip"] == "precision"
+    assert times["objects"]["A_small_ball"] | {"mean": None} == {
+        "congruency": "incongruent", "size": "small", "target_grip": "power", "trials": 2,
+        "touched": 1, "mean": None,
+    }  # fmt: skip
+    assert times["objects"]["A_small_ball"]["mean"] == pytest.approx(1.1)
+    assert np.isnan(times["objects"]["B_small_cube"]["mean"])  # never touched
+
+
+def per_network_grip_difference(trials: pd.DataFrame) -> pd.Series:
+    """Per network, twice the share held of its categorisation trials that require a power grip
+    minus those that require a precision grip, over distinct trials (sequence 0)."""
+    cat = trials[(trials["task"] == "categorisation") & (trials["sequence"] == 0)]
+    rate = cat.groupby(["network", "target_grip"])["success"].mean().unstack()
+    return 2 * (rate["power"] - rate["precision"])
+
+
+def test_the_interaction_is_twice_the_power_minus_precision_difference():
+    """With four objects the congruency x size contrast is the required grip's: by hand, per
+    network 2 x (power-required share held - precision-required), tested over networks with
+    the mapping as covariate (df = networks - 2)."""
+    from scipy import stats as sps
+
+    rng = np.random.default_rng(7)
+    outcome = {(n, o): bool(rng.random() < 0.6) for n in range(8) for o in MADE_UP_OBJECTS}
+    df = made_up_trials(lambda n, o: outcome[(n, o)], lambda n, o: np.nan, networks=8)
+    term = variant_effects(df)["v"]["success"]["tests"]["congruency:size"]
+    assert term["method"] == "contrasts" and term["networks"] == 8 and term["df"] == 6
+    diff = per_network_grip_difference(df)
+    mapping = np.where(diff.index < 4, -0.5, 0.5)
+    fit = sps.linregress(mapping, diff.to_numpy())
+    # four networks per mapping: the average of the mappings' means is the mean over networks
+    assert term["estimate"] == pytest.approx(diff.mean(), abs=1e-12)
+    assert term["estimate"] == pytest.approx(fit.intercept, abs=1e-12)
+    t = fit.intercept / fit.intercept_stderr
+    assert term["p"] == pytest.approx(2 * sps.t.sf(abs(t), 6), rel=1e-9)
+    assert term["family"] == ROBOT_FAMILY
+
+
+def test_an_interaction_without_variance_has_no_test_and_no_p_holm():
+    """Every network holds the large objects only: the factors fall back to Fisher's exact test,
+    the interaction (0 in every network) has no test and stays out of the family."""
+    df = made_up_trials(lambda n, o: o.startswith("big"), lambda n, o: np.nan, networks=6)
+    tests = variant_effects(df)["v"]["success"]["tests"]
+    assert [tests[f]["method"] for f in ("congruency", "size")] == ["exact", "exact"]
+    term = tests["congruency:size"]
+    assert term["method"] == "none" and "no exact test" in term["reason"]
+    assert not {"p", "p_holm", "family", "family_size"} & set(term)
+    assert tests["size"]["family_size"] == 2  # the two exact tests, not the interaction
+
+
+def test_every_robot_test_is_holm_adjusted_within_its_named_family():
+    """Two variants, every method present: each test with a method names its family and its
+    size, and its p_holm is statsmodels' Holm over that family's tests; no test with method
+    "none" has a p_holm or a family."""
+    from statsmodels.stats.multitest import multipletests
+
+    rng = np.random.default_rng(11)
+    outcome = {(n, o): bool(rng.random() < 0.6) for n in range(6) for o in MADE_UP_OBJECTS}
+    jitter = {(n, o): float(rng.normal(0, 0.05)) for n in range(6) for o in MADE_UP_OBJECTS}
+
+    def contact(net, obj):
+        return 1.2 + 0.1 * obj.startswith("small") + jitter[(net, obj)]
+
+    df = pd.concat(
+        [
+            made_up_trials(lambda n, o: outcome[(n, o)], contact, networks=6, run="a"),
+            made_up_trials(lambda n, o: o.startswith("big"), lambda n, o: np.nan, 6, run="b"),
+        ]
+    )
+    effects = variant_effects(df)
+    tests = [
+        t for run in effects.values() for measure in run.values() for t in measure["tests"].values()
+    ]  # fmt: skip
+    assert {t["method"] for t in tests} == {"contrasts", "exact", "none"}
+    assert effects["a"]["contact_time"]["tests"]["congruency:size"]["method"] == "contrasts"
+    families: dict[str, list[dict]] = {}
+    for t in tests:
+        if t["method"] == "none":
+            assert "p_holm" not in t and "family" not in t and "family_size" not in t
+        else:
+            families.setdefault(t["family"], []).append(t)
+    assert set(families) == {ROBOT_FAMILY} == {"exploration: robot"}
+    for family in families.values():
+        expected = multipletests([t["p"] for t in family], method="holm")[1]
+        np.testing.assert_allclose([t["p_holm"] for t in family], expected, rtol=1e-12)
+        assert {t["family_size"] for t in family} == {len(family)}
+    assert len(families[ROBOT_FAMILY]) == 3 + 3 + 2  # a: 3 + 3 contrasts; b: 2 exact
+
+
+def test_the_books_robot_sentences_read_the_effects_as_written():
+    """The book's effect sentences from ``variant_effects``' own output (with its interaction,
+    cells and objects): one per factor, each with the p adjusted over the robot's family."""
+    from icub_workflow.book import pages
+
+    df = made_up_trials(lambda n, o: o.startswith("big"), lambda n, o: np.nan, networks=6)
+    values = pages._robot_effect_values(variant_effects(df), "v", "best")
+    assert set(values) == {
+        f"best_{m}_{f}{end}" for m in ("success", "contact_time") for f in ("congruency", "size")
+        for end in ("", "_estimate", "_p")
+    } | {
+        f"best_{m}_interaction{end}" for m in ("success", "contact_time")
+        for end in ("", "_estimate", "_p_holm")
+    } | {"best_misses"}  # fmt: skip
+    assert "Holm-adjusted" in values["best_success_size"].text
+    assert ROBOT_FAMILY in values["best_success_size"].text and "(2 tests)" in values[
+        "best_success_size"].text  # fmt: skip
+    assert values["best_contact_time_size"].text.startswith("not estimable (")
+    # every factor's sentence shows the cells: the large objects held, the small ones never
+    cells = "congruent large 6/6, congruent small 0/6, incongruent large 6/6, incongruent small 0/6"
+    for factor in ("congruency", "size"):
+        assert f"per cell, {cells}" in values[f"best_success_{factor}"].text
+    # the interaction: 0 in every network, no test and no exact fallback
+    interaction = values["best_success_interaction"]
+    assert interaction.text.startswith(f"not tested (per cell, {cells}; ")
+    assert "no exact test" in interaction.text
+    assert np.isnan(values["best_success_interaction_p_holm"])
+    assert interaction.rests_on == (
+        "grasping.best_success_interaction_estimate",
+        "grasping.best_success_interaction_p_holm",
+    )
+    assert values["best_contact_time_interaction"].text.startswith("not tested (")
+    # the misses: every small object, three networks per mapping
+    assert values["best_misses"] == (
+        "A small ball 3 of 3; A small cube 3 of 3; B small ball 3 of 3; B small cube 3 of 3"
+    )

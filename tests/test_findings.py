@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+import yaml
 from conftest import REPO
 
 from icub_affordance import findings
@@ -173,7 +174,8 @@ def test_the_joint_counts():
 def term(estimate: float, p: float, df: float = 10.0, se: float = 0.01, **extra) -> dict:
     """A tested term as ``stats`` writes it (t from the estimate and se)."""
     return {"estimate": estimate, "se": se, "t": estimate / se, "df": df, "p": p,
-            "ci_low": estimate - 0.02, "ci_high": estimate + 0.02, "p_holm": p} | extra  # fmt: skip
+            "ci_low": estimate - 0.02, "ci_high": estimate + 0.02, "p_holm": p,
+            "family": "a family", "family_size": 4} | extra  # fmt: skip
 
 
 def test_the_words_say_the_verdict():
@@ -192,16 +194,16 @@ def test_the_words_say_the_verdict():
     assert [text.lower_or_higher(v) for v in (yes, reversed_, weak, against)] == [
         "lower", "higher", "not significantly different", "not significantly different"
     ]  # fmt: skip
+    # the all-trials RMSE is said in RMSE, never in speed (errors and correct trials apart)
     assert text.results_sentence("congruency", yes) == (
-        "congruent trials were faster (lower RMSE) than incongruent ones, significantly"
+        "congruent trials gave a lower RMSE than incongruent ones, significantly"
     )
-    # size is said in RMSE, not speed (a large object's grips lie further apart)
     assert text.results_sentence("size", reversed_) == (
         "large objects gave a higher RMSE than small ones, significantly"
     )
     assert text.results_sentence("size", reversed_, interacts=True) == (
-        "large objects gave a higher RMSE than small ones on average over the other "
-        "factor, which it interacts with, significantly"
+        "large objects gave a higher RMSE than small ones on average over the required "
+        "grips, which differ, significantly"
     )
     # a difference that its test does not show is not stated, whichever way the means lie
     assert (
@@ -211,75 +213,99 @@ def test_the_words_say_the_verdict():
     )
 
 
-def test_the_congruency_paragraph_follows_its_test_and_the_cue():
+def test_a_verdict_word_reads_the_p_adjusted_within_its_family():
+    from icub_workflow.book import text
+
+    assert text.verdict_word(term(0.03, 0.01)) == "reproduced"
+    assert text.verdict_word(term(-0.03, 0.01)) == "reversed"
+    # the raw p is significant, the adjusted one is not: not shown
+    assert text.verdict_word(term(-0.03, 0.01, p_holm=0.2)) == "not shown"
+    assert text.verdict_word(term(0.03, float("nan"))) == "not testable"
+    # the adjusted p crosses alpha and the word follows
+    assert text.verdict_word(term(0.03, 0.049)) == "reproduced"
+    assert text.verdict_word(term(0.03, 0.051)) == "not shown"
+    assert "within the family “a family” (4 tests) p = 0.010" in text.fmt_term(term(0.03, 0.01))
+
+
+def test_the_congruency_paragraph_keeps_errors_apart_from_reaction_time():
     from icub_workflow.book import text
 
     wrong = {"congruent": 0.0, "incongruent": 0.6}
-    shown = text.discussion_congruency(Verdict(True, True), wrong, "first_step")
-    assert shown.text.startswith("**The congruency effect is reproduced.**")
-    assert "60% of incongruent trials" in shown.text and "Task map shows" in shown.text
-    # the design argument belongs to the first-step cue only
+    rmse, errors = term(0.03, 0.001), term(0.6, 0.001)
+    rt_none = term(0.005, 0.4, cells={"congruent_large": 12, "incongruent_small": 3})
+    shown = text.discussion_congruency(rmse, errors, rt_none, wrong, "first_step")
+    assert shown.text.startswith("**On the paper's measure the congruency effect is reproduced**")
+    assert "incongruent trials ended on the wrong grip more often" in shown.text
+    assert "60% of incongruent against 0% of congruent" in shown.text
+    # no "faster" unless the correct-trial measure shows it
+    assert "faster" not in shown.text and "slower" not in shown.text
+    assert "not shown to differ in speed" in shown.text and "incongruent small 3" in shown.text
+    faster = text.discussion_congruency(rmse, errors, term(0.01, 0.001), wrong, "first_step")
+    assert "congruent trials were faster (lower RMSE) than incongruent ones" in faster.text
+    slower = text.discussion_congruency(rmse, errors, term(-0.01, 0.001), wrong, "all_steps")
+    assert "congruent trials were slower" in slower.text and "Task map shows" not in slower.text
+    assert "Task map shows" in shown.text  # the design argument: the first-step cue only
     assert (
-        "Task map shows"
-        not in text.discussion_congruency(Verdict(True, True), wrong, "all_steps").text
-    )  # noqa: E501
-    for flipped in (Verdict(True, False), Verdict(False, True)):
-        assert "not reproduced" in text.discussion_congruency(flipped, wrong, "first_step").text
-    assert set(shown.rests_on) >= {"discussion.congruency_estimate", "discussion.congruency_p_holm"}
+        "is reversed"
+        in text.discussion_congruency(term(-0.03, 0.001), errors, rt_none, wrong, "first_step").text
+    )
+    assert (
+        "is not shown"
+        in text.discussion_congruency(term(0.03, 0.2), errors, rt_none, wrong, "first_step").text
+    )
+    assert set(shown.rests_on) >= {
+        "discussion.congruency_p_holm", "discussion.errors_congruency_p_holm",
+        "discussion.rt_congruency_p_holm",
+    }  # fmt: skip
 
 
-def test_the_size_paragraph_says_what_drift_can_and_cannot_explain():
+def test_the_size_paragraph_names_its_cells_and_calls_a_reversal_reversed():
     from icub_workflow.book import text
 
-    slower_congruent = {"size_in_congruent": term(-0.03, 0.001)}
-    no_drift = {"congruent": 0.0, "incongruent": 0.6}
-    size = term(-0.026, 0.17, holm_family="over the readings' 28 tests")
-    reversed_ = text.discussion_size(Verdict(False, True), slower_congruent, no_drift, size)
-    assert "**The size effect is reversed.**" in reversed_.text
-    assert "over the readings' 28 tests p = 0.170" in reversed_.text
-    assert "among congruent trials large objects give a higher RMSE" in reversed_.text
-    assert "is not drift toward the wrong grip" in reversed_.text and "not known" in reversed_.text
-    # not significant after the family's correction: said so, whichever way the estimate lies
-    not_shown = text.discussion_size(Verdict(False, False), slower_congruent, no_drift, size)
-    assert "**The size effect is not shown in closed loop**" in not_shown.text
-    assert "reversed" not in not_shown.text
-    # the congruent-only difference not significant: nothing is ruled out
+    simple = {"size_in_congruent": term(-0.03, 0.001)}
+    wrong = {"congruent": 0.0, "incongruent": 0.6, "large": 0.3, "small": 0.3}
+    errors, rt = term(0.0, 1.0), term(0.002, 0.6)
+    grip = term(0.064, 0.001)
+    reversed_ = text.discussion_size(term(-0.026, 0.01), errors, rt, simple, wrong, grip)
+    assert "trials that require a power grip gave a higher RMSE than precision ones" in (
+        reversed_.text
+    )
+    assert "**On the paper's measure the size effect is reversed**" in reversed_.text
+    assert (
+        "the small object with a precision grip required gives a lower RMSE than the large "
+        "object with a power grip required" in reversed_.text
+    )
+    assert "twice the difference between the trials that require a power grip" in reversed_.text
+    not_shown = text.discussion_size(term(-0.026, 0.17), errors, rt, simple, wrong, grip)
+    assert "is not shown" in not_shown.text and "reversed" not in not_shown.text
+    # "no difference" is never said from a test that only fails to show one
+    assert "either way" not in not_shown.text and "not evidence of its absence" in not_shown.text
     unsettled = text.discussion_size(
-        Verdict(False, True), {"size_in_congruent": term(-0.03, 0.2)}, no_drift, size
+        term(-0.026, 0.01), errors, rt, {"size_in_congruent": term(-0.03, 0.2)}, wrong, grip
     )
-    assert "size difference is not significant" in unsettled.text
-    # congruent trials that drift: drift is not ruled out
-    drifting = text.discussion_size(
-        Verdict(False, True), slower_congruent, {"congruent": 0.1, "incongruent": 0.6}, size
-    )
-    assert "not drift" not in drifting.text
-    good = text.discussion_size(Verdict(True, True), slower_congruent, no_drift, size)
-    assert "reproduced" in good.text
+    assert "were not shown to differ in RMSE" in unsettled.text
+    quiet = text.discussion_size(term(0.02, 0.01), errors, rt, simple, wrong, term(0.06, 0.3))
+    assert "is reproduced" in quiet.text and "required grip was not shown to matter" in quiet.text
     assert {"discussion.size_p_holm", "discussion.size_in_congruent_p_holm"} <= set(
         reversed_.rests_on
     )
 
 
-def test_the_teacher_forced_size_is_stated_with_its_interaction():
+def test_the_teacher_forced_size_is_stated_with_the_required_grip():
     from icub_workflow.book import text
 
     simple = {"size_in_congruent": term(-0.01, 0.01), "size_in_incongruent": term(0.05, 0.001)}
-    forced = {
-        "size": term(0.014, 0.03, p_table=0.03),
-        "congruency:size": term(0.038, 0.001, p_table=0.001),
-    }
+    forced = {"size": term(0.014, 0.03), "congruency:size": term(0.038, 0.001)}
     words = text.discussion_forced(forced, simple).text
-    assert "the size term is +0.0140" in words and "interaction +0.0380" in words
-    assert "depends on congruency" in words
-    assert "among congruent trials large objects give a higher RMSE" in words
-    assert "among incongruent trials large objects give a lower RMSE" in words
-    # without the interaction (after the table's correction), the simple effects are not brought in
-    calm = forced | {"congruency:size": term(0.038, 0.01, p_table=0.08)}
-    assert "depends on congruency" not in text.discussion_forced(calm, simple).text
+    assert "the size term is +0.0140" in words and "power − precision), +0.0380" in words
+    assert "the required grip matters" in words
+    assert "The small object with a precision grip required gives a lower RMSE" in words
+    assert "the small object with a power grip required gives a higher RMSE" in words
+    # without the required-grip term (adjusted within its family), no simple effects
+    calm = forced | {"congruency:size": term(0.038, 0.01, p_holm=0.08)}
+    assert "required grip matters" not in text.discussion_forced(calm, simple).text
     simple_ns = simple | {"size_in_congruent": term(-0.01, 0.3)}
-    assert "among congruent trials the size difference is not significant" in (
-        text.discussion_forced(forced, simple_ns).text
-    )
+    assert "were not shown to differ in RMSE" in text.discussion_forced(forced, simple_ns).text
 
 
 def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
@@ -343,24 +369,29 @@ def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, f
 
 
 def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
+    from icub_affordance.stats import holm
+
     anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
-    # the verdict reads the main reading's p in the readings' whole family (summary.csv)
-    summary = pd.read_csv(built / "data" / "readings" / "summary.csv")
-    row = summary[(summary["reading"] == "first_step+fixed") & (summary["measure"] == "rmse")]
-    p_holm = float(row.set_index("effect").loc["congruency", "p_holm"])
-    assert found["intro"]["congruency_p_holm"] == pytest.approx(p_holm, rel=1e-12)
-    estimate = anova["contrasts"]["closed_loop"]["congruency"]["estimate"]
-    assert found["intro"]["cong_dir"] == (
-        "not significantly different" if p_holm >= 0.05 else "lower" if estimate > 0 else "higher"
+    closed = anova["contrasts"]["closed_loop"]
+    # the headline reads the confirmatory family: Holm over the config's declared tests alone
+    config = yaml.safe_load((built / "config" / "config.yaml").read_text())
+    declared = [t for t in config["confirmatory"] if t["measure"] == "rmse"]
+    tests = [anova["contrasts"][t["mode"]][t["effect"]] for t in declared]
+    for test, p in zip(tests, holm([t["p"] for t in tests]), strict=True):
+        assert test["family"] == "confirmatory" and test["p_holm"] == pytest.approx(p, rel=1e-12)
+    p_holm = closed["congruency"]["p_holm"]
+    assert found["intro"]["congruency_p_holm"] == p_holm
+    estimate = closed["congruency"]["estimate"]
+    assert found["intro"]["congruency_verdict"] == (
+        "not shown" if p_holm >= 0.05 else "reproduced" if estimate > 0 else "reversed"
     )
     results = (built / "book" / "_build" / "html" / "results.html").read_text()
     for mode in ("closed_loop", "teacher_forced"):
         assert found["results"][f"{mode}_cong_sentence"] in results
-    c = anova["contrasts"]["closed_loop"]["congruency"]
     expected = (
         "shows no significant congruency effect"
         if p_holm >= 0.05
-        else "shows the congruency effect" + ("" if c["estimate"] > 0 else " reversed")
+        else "shows the congruency effect" + ("" if estimate > 0 else " reversed")
     )
     assert found["beyond"]["cue_main_verdict"] == expected
 
@@ -374,8 +405,48 @@ def test_the_rules_tables_are_the_ones_the_book_shows(built):
     )
     comparison = pd.read_csv(tables / "comparison.csv", dtype=str)
     html = (built / "book" / "_build" / "html" / "comparison.html").read_text()
-    for value in comparison["this run (closed loop)"]:
+    for value in comparison["this run"]:
         assert value in html or escape(value) in html, value
+
+
+def holm_by_family(table: pd.DataFrame, p: str, adjusted: str, family: str) -> None:
+    """Every adjusted p of ``table`` equals Holm's over its named family, recomputed here (by
+    hand: the step-down products, made monotone, capped at 1); a row without a p has none."""
+    for name, rows in table.groupby(family):
+        values = rows[p].to_numpy(dtype=float)
+        ok = np.isfinite(values)
+        m = int(ok.sum())
+        order = np.argsort(values[ok])
+        expected = np.empty(m)
+        expected[order] = np.minimum(
+            np.maximum.accumulate(values[ok][order] * (m - np.arange(m))), 1
+        )
+        got = rows[adjusted].to_numpy(dtype=float)
+        assert np.isnan(got[~ok]).all(), name
+        assert got[ok] == pytest.approx(expected, rel=1e-9), name
+
+
+def test_the_books_test_tables_name_their_families_and_adjust_within_them(built):
+    tables = built / "data" / "book" / "tables"
+    both = pd.concat(
+        [
+            pd.read_csv(tables / f"contrasts_{mode}.csv")
+            for mode in ("closed_loop", "teacher_forced")
+        ]
+    )
+    assert set(both["family"]) == {
+        "confirmatory", "exploration: closed loop", "exploration: teacher forced"
+    }  # fmt: skip
+    holm_by_family(both, "p", "p (Holm, within its family)", "family")
+    headline = pd.read_csv(tables / "headline.csv")
+    # the front page's rows are tests of these tables: the same p, family and adjusted p
+    for _, row in headline.iterrows():
+        if np.isnan(row["p"]):
+            assert np.isnan(row["Holm p"])
+            continue
+        match = both[(both["family"] == row["family"]) & np.isclose(both["p"], row["p"])]
+        assert len(match) >= 1, row.to_dict()
+        assert match["p (Holm, within its family)"].iloc[0] == pytest.approx(row["Holm p"])
 
 
 @pytest.mark.slow
@@ -447,8 +518,14 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     assert values["ran"] and values["sweep_run"].startswith(
         "This build ran the sweep: 3 replications (seeds 1, 2, 3) of one setting, 3 points of"
     )
-    assert "congruent faster than incongruent, the paper's direction" in values["sweep_findings"]
-    assert "large objects slower than small objects, against the paper" in values["sweep_findings"]
+    assert (
+        "congruent lower in RMSE than incongruent, the paper's direction"
+        in values["sweep_findings"]
+    )
+    assert (
+        "large objects higher in RMSE than small objects, against the paper"
+        in values["sweep_findings"]
+    )
     assert "it takes three to tell" in values["cost_findings"]
     assert table["significant"].tolist() == ["3 of 3", "0 of 3"]
 
@@ -503,3 +580,26 @@ def test_the_hidden_layer_sentence_follows_the_adjusted_tests():
 
     assert text.divergence_sentence(3).text.startswith("From step 3 on, incongruent trials are")
     assert "not significantly further" in text.divergence_sentence(None).text
+
+
+@pytest.mark.slow
+def test_the_headline_reads_the_confirmatory_family_and_nothing_else(built, tmp_path):
+    """Changing the declared confirmatory family reruns the config's own run's statistics (and
+    so the headline's adjusted p); declaring another readings measure leaves them alone."""
+    from conftest import load_test_config, run_snakemake
+
+    def dry_run(**changes) -> str:
+        path = tmp_path / "config.yaml"
+        path.write_text(yaml.safe_dump(load_test_config() | changes))
+        result = run_snakemake(built, "-n", "--nolock", "data/eval/anova.json", config=path)
+        assert result.returncode == 0, result.stderr[-3000:]
+        return result.stdout
+
+    assert "Nothing to be done" in dry_run()
+    alone = [{"mode": "closed_loop", "measure": "rmse", "effect": "congruency"}]
+    assert re.search(r"rule stats:\n(?:    .*\n)*?    output: data/eval/anova\.json", dry_run(
+        confirmatory=alone
+    ))  # fmt: skip
+    readings = load_test_config()["readings"]
+    fewer = readings | {"measures": [m for m in readings["measures"] if m != "commitment"]}
+    assert "Nothing to be done" in dry_run(readings=fewer)

@@ -6,12 +6,20 @@ import numpy as np
 import pytest
 
 from icub_affordance.measures import (
+    DERIVED,
+    EXCESS,
     MEASURES,
+    MISSING_BY_DESIGN,
     analysed,
+    can_lack_cells,
     commitment,
     commitment_steps,
     grip_distance,
+    is_derived,
+    is_hypothesis,
     is_null_control,
+    margin_measure,
+    with_excess,
     wrong_grip,
 )
 
@@ -100,20 +108,65 @@ def test_measures_need_matching_lengths():
 
 
 def test_analysed_adds_each_null_control_after_its_measure():
+    """A measure with a null control is followed by it and by its excess over it; the excess is
+    the hypothesis, the measure and its null control are shown beside it."""
     assert analysed(MEASURES) == [
         "rmse",
+        "rmse_correct",
         "wrong_grip",
         "commitment",
         "rmse_per_grip_distance",
         "rmse_per_grip_distance_null",
+        "rmse_per_grip_distance_excess",
     ]
+    assert EXCESS == {"rmse_per_grip_distance": "rmse_per_grip_distance_excess"}
     assert analysed(["rmse"]) == ["rmse"]
     assert is_null_control("rmse_per_grip_distance_null") and not is_null_control("rmse")
+    assert not is_null_control("rmse_per_grip_distance_excess")
+    hypotheses = [m for m in analysed(MEASURES) if is_hypothesis(m)]
+    assert hypotheses == [
+        "rmse",
+        "rmse_correct",
+        "wrong_grip",
+        "commitment",
+        "rmse_per_grip_distance_excess",
+    ]
+    # the excess is in the measure's units: it takes the measure's declared margin
+    assert margin_measure("rmse_per_grip_distance_excess") == "rmse_per_grip_distance"
+    assert margin_measure("rmse") == "rmse"
     with pytest.raises(ValueError, match="time_to_commit"):
         analysed(["rmse", "time_to_commit"])
+
+
+def test_the_excess_is_the_measure_minus_its_null_control_trial_by_trial():
+    import pandas as pd
+
+    trials = pd.DataFrame(
+        {
+            "rmse": [0.1, 0.2, 0.3],
+            "rmse_per_grip_distance": [0.5, 0.9, 1.4],
+            "rmse_per_grip_distance_null": [0.4, 1.0, 1.0],
+        }
+    )
+    out = with_excess(trials)
+    assert out["rmse_per_grip_distance_excess"].to_numpy() == pytest.approx([0.1, -0.1, 0.4])
+    assert "rmse_per_grip_distance_excess" not in trials  # the input is left as it was
+    # without its null control there is no excess
+    assert "rmse_per_grip_distance_excess" not in with_excess(trials[["rmse"]])
 
 
 def test_grip_distance_ignores_the_common_first_step():
     required = np.array([0.5, 0.7, 0.9])[:, None]
     other = np.array([0.5, 0.3, 0.1])[:, None]
     assert grip_distance(required, other) == pytest.approx(np.sqrt((0.4**2 + 0.8**2) / 2))
+
+
+def test_the_correct_trial_rmse_is_declared_derived_and_able_to_lack_cells():
+    """rmse_correct is computed at analysis time from two written measures, and declared (not
+    found in the data) to be a measure a network can lack in a cell."""
+    assert MISSING_BY_DESIGN == {"rmse_correct"} and can_lack_cells("rmse_correct")
+    assert is_derived("rmse_correct") and DERIVED["rmse_correct"] == ("rmse", "wrong_grip")
+    assert set(DERIVED["rmse_correct"]) <= set(MEASURES) - set(DERIVED)
+    assert MISSING_BY_DESIGN <= set(MEASURES)
+    assert not any(can_lack_cells(m) or is_derived(m) for m in ("rmse", "wrong_grip"))
+    assert analysed(["rmse", "rmse_correct"]) == ["rmse", "rmse_correct"]

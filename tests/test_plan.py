@@ -170,10 +170,8 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
     assert set(grouped) == expected
     for name, runs in groups.items():
         assert {f"seed{plan.config(run)['seed']}" for run in runs} == {name}
-    seeds = {
-        config["seed"],
-        *config["size_dose"]["seeds"][: config["size_dose"]["replications"] - 1],
-    }
+    # the readings at the config's seed; the size study at its own seeds
+    seeds = {config["seed"], *config["size_dose"]["seeds"][: config["size_dose"]["replications"]]}
     assert set(groups) == {f"seed{seed}" for seed in seeds}
 
 
@@ -206,7 +204,9 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
     """The reproduce page's scale: the default build and the full one, counted from the plan
     and checked against the config's lists."""
     study, readings = config["size_dose"], config["readings"]
-    per_replication = len(study["categorisation_cue"]) * (len(study["doses"]) + study["removal"])
+    # per cue timing and replication: each dose, the removal control and the equal-grips one
+    controls = study["removal"] + study["equal_grips"]
+    per_replication = len(study["categorisation_cue"]) * (len(study["doses"]) + controls)
     assert plan.scale() == {
         "reading_seeds": 1,
         "readings": len(readings["categorisation_cue"]) * len(readings["goal_response"]),
@@ -219,6 +219,7 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
     full = plan_runs(config | {"robustness": True}).scale()
     assert full["reading_seeds"] == 1 + len(readings["seeds"])
     assert full["size_runs"] == per_replication * study["robustness_replications"]
+    assert full["size_replications"] == study["robustness_replications"]
     assert full["fresh"] == config["robot"]["confirmation"]["robustness_networks"]
     assert full["variants"] + 1 == len(NetworkVariant.grid(config["robot"]))
     assert full["sweep"] == len(config["sweep"]["seeds"]) * len(

@@ -7,6 +7,7 @@ changed when the statistic it rests on is."""
 from __future__ import annotations
 
 import functools
+import io
 
 import numpy as np
 import pandas as pd
@@ -15,16 +16,32 @@ from conftest import REPO, load_config, run_snakemake, scratch_workflow
 from scipy import stats as sps
 
 from icub_affordance.readings import (
+    BY_EXCESS,
     DIFFERENCE_COLUMNS,
+    FAMILY_DIFFERENCES,
+    FAMILY_EQUIVALENCE,
+    FAMILY_SUMMARY,
+    NOT_TESTED,
+    NULL_CONTROL,
     SUMMARY_COLUMNS,
+    analyse_measures,
     difference_replications,
     difference_verdict,
     differences,
     direction,
     matrix,
+    replication_rows,
     summary,
 )
-from icub_affordance.stats import difference_tests, holm
+from icub_affordance.stats import (
+    categorisation_trials,
+    difference_tests,
+    equivalence,
+    holm,
+    network_contrasts,
+    with_outcomes,
+    within_network_fit,
+)
 from icub_workflow.book import text
 from icub_workflow.book.pages import readings as readings_page
 from icub_workflow.book.pages import traced
@@ -117,10 +134,14 @@ MAPPING = {
 }
 
 
-def run_trials(congruency, size, networks: int = 8, seed: int = 0, sd: float = 0.002):
+def run_trials(
+    congruency, size, networks: int = 8, seed: int = 0, sd: float = 0.002, wrong=frozenset()
+):
     """A run's categorisation trials (closed loop, 2 identical sequences): each network's value
     0.1 + its congruency effect if incongruent (coded +-0.5) + its size effect if small, with
-    network noise; ``congruency``/``size`` per network or a constant. Every measure the same."""
+    network noise; ``congruency``/``size`` per network or a constant. Every measure the same.
+    ``wrong_grip`` is 1 for the (network, object) pairs in ``wrong`` (their RMSE 0.05 higher),
+    else 0."""
     rng = np.random.default_rng(seed)
     cong = np.broadcast_to(np.asarray(congruency, dtype=float), (networks,))
     sz = np.broadcast_to(np.asarray(size, dtype=float), (networks,))
@@ -135,6 +156,8 @@ def run_trials(congruency, size, networks: int = 8, seed: int = 0, sd: float = 0
                 + sz[net] * (0.5 if osize == "small" else -0.5)
                 + rng.normal(0, sd)
             )
+            is_wrong = (net, obj) in wrong
+            value += 0.05 * is_wrong
             for seq in range(2):
                 rows.append(
                     {
@@ -146,6 +169,7 @@ def run_trials(congruency, size, networks: int = 8, seed: int = 0, sd: float = 0
                         "size": osize,
                         "congruent": str(congruent),
                         "sequence": seq,
+                        "wrong_grip": int(is_wrong),
                     }
                     | {m: value for m in ("rmse", "rmse_per_grip_distance")}
                     | {"rmse_per_grip_distance_null": 0.5 + rng.normal(0, sd)}
@@ -233,6 +257,229 @@ def test_a_missing_margin_is_a_clear_error():
         differences(difference_replications(table, trials, ["rmse"]), {})
 
 
+# -- the correct-trial RMSE: a measure a network can lack in a cell ---------------------------
+
+#: Network 0 (mapping A) always takes the wrong grip on the small ball, network 5 (B) on the big
+#: cube: each has no correct trial there.
+WRONG = frozenset({(0, "small_ball"), (5, "big_cube")})
+
+
+def closed_loop(trials: pd.DataFrame) -> pd.DataFrame:
+    return categorisation_trials(with_outcomes(trials), "closed_loop")
+
+
+def test_the_correct_trial_rmse_keeps_a_network_that_lacks_a_cell():
+    trials = run_trials(0.03, 0.01, wrong=WRONG)
+    out = analyse_measures(trials, ["rmse", "rmse_correct"])["closed_loop"]["rmse_correct"]
+    df = closed_loop(trials)
+    fit = within_network_fit(df, "rmse_correct")
+    for effect in ("congruency", "size"):
+        for stat in ("estimate", "se", "df", "p"):
+            assert out["contrasts"][effect][stat] == pytest.approx(fit[effect][stat])
+    # every network informs the test; the per-network contrasts would have dropped two
+    assert out["contrasts"]["size"]["networks"] == 8
+    assert network_contrasts(df, "rmse_correct")["size"]["networks"] == 6
+    assert out["contrasts"]["size"]["cells"] == fit["size"]["cells"]
+    assert sorted(out["contrasts"]["size"]["cells"].values()) == [7, 7, 8, 8]
+    # the wrong trials are out of the means: a mean over the defined networks, counted as such
+    small_ball = df[(df["mapping"] == "A") & (df["object"] == "small_ball")]
+    defined = small_ball.dropna(subset=["rmse_correct"]).groupby("network")["rmse_correct"].mean()
+    entry = out["object_means"]["A_small_ball"]
+    assert entry["n_networks"] == 3 == len(defined)
+    assert entry["mean"] == pytest.approx(defined.mean())
+    assert entry["mean"] < small_ball["rmse"].max()  # network 0's wrong trials (+0.05) not in it
+    cell = f"{small_ball['congruency'].iloc[0]}_small"
+    per_net = df[(df["congruency"] == small_ball["congruency"].iloc[0]) & (df["size"] == "small")]
+    expected = per_net.groupby("network")["rmse_correct"].mean().dropna().mean()
+    assert out["means"][cell] == pytest.approx(expected)
+
+
+def test_the_route_follows_the_declaration_not_the_data():
+    """Without a single wrong trial the correct-trial RMSE still goes through the fit that keeps
+    every network (its estimates then those of the per-network contrasts), and the RMSE through
+    the per-network contrasts."""
+    trials = run_trials(0.03, 0.01)
+    out = analyse_measures(trials, ["rmse", "rmse_correct"])["closed_loop"]
+    assert "cells" in out["rmse_correct"]["contrasts"]["size"]
+    assert "mapping" not in out["rmse_correct"]["contrasts"]  # the network intercepts absorb it
+    assert "mapping" in out["rmse"]["contrasts"] and "cells" not in out["rmse"]["contrasts"]["size"]
+    for effect in ("congruency", "size"):
+        assert out["rmse_correct"]["contrasts"][effect]["estimate"] == pytest.approx(
+            out["rmse"]["contrasts"][effect]["estimate"]
+        )
+
+
+def test_the_correct_trial_rmses_differences_are_unpaired_with_welch_df():
+    table = readings_table()
+    wrong = {"first_step+fixed": WRONG, "all_steps+fixed": frozenset({(2, "big_ball")})}
+    trials = {
+        row["run"]: run_trials(0.03 + 0.02 * (row["cue"] == "first_step"), 0.0, seed=i,
+                               wrong=wrong.get(row["reading"], frozenset()))
+        for i, row in enumerate(table)
+    }  # fmt: skip
+    reps = difference_replications(table, trials, ["rmse_correct"])
+    row = reps[(reps["comparison"] == "cue_timing") & (reps["at"] == "fixed")]
+    row = row[row["effect"] == "congruency"].iloc[0]
+    a = within_network_fit(closed_loop(trials["first_step+fixed_2009"]), "rmse_correct")
+    b = within_network_fit(closed_loop(trials["all_steps+fixed_2009"]), "rmse_correct")
+    a, b = a["congruency"], b["congruency"]
+    se = np.sqrt(a["se"] ** 2 + b["se"] ** 2)
+    welch = se**4 / (a["se"] ** 4 / a["df"] + b["se"] ** 4 / b["df"])
+    assert row["estimate"] == pytest.approx(a["estimate"] - b["estimate"])
+    assert row["estimate"] == pytest.approx(0.02, abs=0.003)
+    assert (row["se"], row["df"]) == pytest.approx((se, welch))
+    t = row["estimate"] / se
+    assert row["p"] == pytest.approx(2 * sps.t.sf(abs(t), welch))
+    assert row["networks"] == 8
+
+
+def test_a_difference_of_a_term_one_run_does_not_identify_is_undefined():
+    """Every network wrong on every incongruent object in one reading: its correct-trial RMSE
+    identifies neither effect (congruency needs the incongruent cells, size averaged over the
+    congruencies too), so the differences are undefined, not made up."""
+    table = readings_table()
+    incongruent = {
+        (net, obj) for net in range(8) for obj in OBJECTS
+        if (obj in ("small_ball", "big_cube")) == (net < 4)
+    }  # fmt: skip
+    trials = {
+        row["run"]: run_trials(0.03, 0.01, seed=i,
+                               wrong=incongruent if row["reading"] == "first_step+fixed" else ())
+        for i, row in enumerate(table)
+    }  # fmt: skip
+    first = closed_loop(trials["first_step+fixed_2009"])
+    assert first.loc[first["congruency"] == "incongruent", "rmse_correct"].isna().all()
+    reps = difference_replications(table, trials, ["rmse_correct"])
+    row = reps[(reps["comparison"] == "cue_timing") & (reps["at"] == "fixed")].set_index("effect")
+    for effect in ("congruency", "size"):
+        assert row.loc[effect, ["estimate", "se", "df", "p"]].isna().all(), effect
+    other = reps[(reps["comparison"] == "cue_timing") & (reps["at"] == "grows")]
+    assert other["p"].notna().all()  # the readings that identify them are tested
+
+
+def test_identical_cells_are_not_tested():
+    """A measure constant on every network in both readings (no wrong grip anywhere): its
+    differences have no spread, so no test, no TOST and no place in any Holm family."""
+    table = readings_table()
+    trials = {row["run"]: run_trials(0.03, 0.0, seed=i) for i, row in enumerate(table)}
+    margins = {"rmse": 0.01, "wrong_grip": 0.10}
+    out = differences(difference_replications(table, trials, ["rmse", "wrong_grip"]), margins)
+    assert list(out.columns) == DIFFERENCE_COLUMNS
+    same = out[out["measure"] == "wrong_grip"]
+    assert same["identical"].all() and not out[out["measure"] == "rmse"]["identical"].any()
+    assert (same["diff"] == 0).all()
+    for column in ("p", "p_holm", "p_equivalence", "p_equivalence_holm"):
+        assert same[column].isna().all(), column
+    assert (same["family"] == NOT_TESTED).all() and (same["family_equivalence"] == "").all()
+    assert same.apply(difference_verdict, axis=1).eq("identical").all()
+    # the other rows are adjusted among themselves alone
+    tested = out[~out["identical"]]
+    assert tested["p_holm"].to_numpy() == pytest.approx(holm(tested["p"]))
+    goal = tested[tested["comparison"] == "goal_response"]
+    assert goal["p_equivalence_holm"].to_numpy() == pytest.approx(holm(goal["p_equivalence"]))
+    # as the book reads it back
+    back = pd.read_csv(io.StringIO(out.to_csv(index=False)))
+    verdicts = back.apply(difference_verdict, axis=1)
+    assert (verdicts[back["measure"] == "wrong_grip"] == "identical").all()
+    assert not (verdicts[back["measure"] == "rmse"] == "identical").any()
+
+
+@pytest.mark.parametrize("estimate", [0.0, 0.05, 0.5])
+def test_an_equivalence_test_without_spread_has_no_p(estimate):
+    tost = equivalence({"estimate": estimate, "se": 0.0, "df": 6.0}, 0.1)
+    assert np.isnan(tost["p"]) and np.isnan(tost["p_lower"]) and np.isnan(tost["p_upper"])
+    assert equivalence({"estimate": estimate, "se": 0.01, "df": 6.0}, 0.1)["p"] >= 0
+
+
+# -- the Holm families the tables name ----------------------------------------------------------
+
+
+def holm_within_families(table: pd.DataFrame, family="family", p="p", p_holm="p_holm") -> set:
+    """Holm recomputed (statsmodels) over the rows of each named family of a table as its CSV
+    reads back, against the table's own adjusted p; the families seen. The rows in no family (a
+    null control's, a measure's tested by its excess, an untested difference's) have no
+    adjusted p."""
+    from statsmodels.stats.multitest import multipletests
+
+    back = pd.read_csv(io.StringIO(table.to_csv(index=False)))
+    back[family] = back[family].fillna("")
+    for name, rows in back.groupby(family):
+        tested = rows[p].notna()
+        if name in (NULL_CONTROL, BY_EXCESS, NOT_TESTED, ""):
+            assert rows[p_holm].isna().all(), name
+            continue
+        expected = multipletests(rows.loc[tested, p].to_numpy(dtype=float), method="holm")[1]
+        assert rows.loc[tested, p_holm].to_numpy() == pytest.approx(expected), name
+        assert rows.loc[~tested, p_holm].isna().all(), name
+    return set(back[family])
+
+
+def family_tables():
+    """The summary and differences of three replications of every reading, on the RMSE, the
+    correct-trial RMSE, the wrong-grip rate and RMSE per grip distance with its null control and
+    its excess over it."""
+    table = readings_table(seeds=(1, 2, 3))
+    trials = {
+        row["run"]: run_trials(0.02 + 0.01 * row["seed"], 0.005 * (row["cue"] == "all_steps"),
+                               seed=i, wrong=WRONG if row["goal_response"] == "grows" else ())
+        for i, row in enumerate(table)
+    }  # fmt: skip
+    measures = ["rmse", "rmse_correct", "wrong_grip", "rmse_per_grip_distance"]
+    analyses = [analyse_measures(trials[row["run"]], measures) for row in table]
+    summ = summary(replication_rows(table, analyses, measures))
+    margins = load_config()["readings"]["equivalence_margin"]
+    diffs = differences(difference_replications(table, trials, measures), margins)
+    return summ, diffs
+
+
+def test_the_summary_names_its_holm_family():
+    """The null control and the measure tested by its excess are shown (with their raw p), in
+    no family; the excess is the hypothesis, in the family with the other measures."""
+    summ, _ = family_tables()
+    assert holm_within_families(summ) == {FAMILY_SUMMARY, NULL_CONTROL, BY_EXCESS}
+    null = summ["measure"] == "rmse_per_grip_distance_null"
+    raw = summ["measure"] == "rmse_per_grip_distance"
+    assert (summ.loc[null, "family"] == NULL_CONTROL).all()
+    assert (summ.loc[raw, "family"] == BY_EXCESS).all()
+    assert summ.loc[null | raw, "p_holm"].isna().all()
+    assert summ.loc[null | raw, "p"].notna().all()  # shown, with their raw p
+    assert (summ.loc[~null & ~raw, "family"] == FAMILY_SUMMARY).all()
+    assert set(summ["measure"]) >= {"rmse_correct", "rmse_per_grip_distance_excess"}
+    excess = summ[summ["measure"] == "rmse_per_grip_distance_excess"]
+    assert len(excess) == len(summ[raw]) and excess["p_holm"].notna().all()
+
+
+def test_the_differences_name_their_holm_families():
+    _, diffs = family_tables()
+    families = holm_within_families(diffs)
+    assert families >= {FAMILY_DIFFERENCES, NULL_CONTROL, BY_EXCESS}
+    assert families <= {FAMILY_DIFFERENCES, NULL_CONTROL, BY_EXCESS, NOT_TESTED}
+    raw = diffs["measure"] == "rmse_per_grip_distance"
+    assert (diffs.loc[raw, "family"] == BY_EXCESS).all() and diffs.loc[raw, "p_holm"].isna().all()
+    excess = diffs["measure"] == "rmse_per_grip_distance_excess"
+    assert excess.sum() == raw.sum()
+    assert diffs.loc[excess, "family"].isin([FAMILY_DIFFERENCES, NOT_TESTED]).all()
+    equivalence_families = holm_within_families(
+        diffs, "family_equivalence", "p_equivalence", "p_equivalence_holm"
+    )
+    assert equivalence_families == {FAMILY_EQUIVALENCE, ""}
+    tost = diffs[diffs["family_equivalence"] == FAMILY_EQUIVALENCE]
+    assert (tost["comparison"] == "goal_response").all() and tost["p_equivalence"].notna().all()
+    assert not tost["measure"].str.endswith("_null").any()
+    # the excess is tested for equivalence within its measure's margin, the raw measure is not
+    assert "rmse_per_grip_distance" not in set(tost["measure"])
+    margins = load_config()["readings"]["equivalence_margin"]
+    excess = tost[tost["measure"] == "rmse_per_grip_distance_excess"]
+    assert len(excess) and (excess["margin"] == margins["rmse_per_grip_distance"]).all()
+
+
+def test_the_config_declares_the_correct_trial_rmse_with_its_margin():
+    readings = load_config()["readings"]
+    measures = readings["measures"]
+    assert measures[measures.index("rmse") + 1] == "rmse_correct"
+    assert readings["equivalence_margin"]["rmse_correct"] == 0.01
+
+
 # -- the sentences: each changes when the statistic it rests on does --------------------------
 
 
@@ -258,8 +505,6 @@ def _built_tables(cong_shift, grows_size, margin, seed):
         row["run"]: run_trials(*effects[row["reading"]], seed=i) for i, row in enumerate(table)
     }
     measures = ["rmse", "rmse_per_grip_distance"]
-    from icub_affordance.readings import analyse_measures, replication_rows
-
     analyses = [analyse_measures(trials[row["run"]], measures) for row in table]
     summ = summary(replication_rows(table, analyses, measures))
     margins = {"rmse": margin, "rmse_per_grip_distance": margin}
@@ -468,7 +713,7 @@ def test_closed_loop_trials_do_not_depend_on_the_sequence(built):
 
 
 def test_readings_summary_has_every_cell(built):
-    from icub_affordance.measures import analysed
+    from icub_affordance.measures import analysed, can_lack_cells
 
     table = pd.read_csv(built / "data" / "readings" / "summary.csv")
     readings = load_config()["readings"]
@@ -481,9 +726,18 @@ def test_readings_summary_has_every_cell(built):
     from conftest import TEST_CONFIG
 
     networks = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
-    assert (table["df"] == networks - 2).all()  # one replication: its own t over networks
-    hypotheses = table[table["measure"] != "rmse_per_grip_distance_null"]
+    # one replication: its own t over networks (networks - 2); the correct-trial RMSE's from its
+    # model over network x object observations (observations - rank)
+    pooled = table["measure"].map(can_lack_cells)
+    assert (table.loc[~pooled, "df"] == networks - 2).all()
+    assert (table.loc[pooled, "df"] > 0).all()
+    from icub_affordance.measures import is_hypothesis
+
+    # the null control and the measure tested by its excess over it are in no family
+    hypothesis = table["measure"].map(is_hypothesis)
+    hypotheses = table[hypothesis]
     assert hypotheses["p_holm"].to_numpy() == pytest.approx(holm(hypotheses["p"]), nan_ok=True)
+    assert table.loc[~hypothesis, "p_holm"].isna().all()
     diffs = pd.read_csv(built / "data" / "readings" / "differences.csv")
     assert list(diffs.columns) == DIFFERENCE_COLUMNS
     # each comparison at each level of the other choice, every measure, both effects

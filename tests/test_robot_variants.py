@@ -132,7 +132,9 @@ def test_a_contrast_without_variance_falls_back_to_the_exact_test_over_distinct_
     df = trials("v", success=lambda net, obj: obj.startswith("big"), contact=lambda n, o: np.nan)
     effect = variant_effects(df)["v"]
     success = effect["success"]
-    assert {t["method"] for t in success["tests"].values()} == {"exact"}
+    assert {success["tests"][f]["method"] for f in ("congruency", "size")} == {"exact"}
+    # an interaction has no exact fallback: with no variance it is not tested
+    assert success["tests"]["congruency:size"]["method"] == "none"
     assert success["distinct_trials"] == 16
     cat = distinct_trials(df)
     cat = cat[cat["task"] == "categorisation"]
@@ -181,7 +183,8 @@ def test_success_is_tested_by_per_network_contrasts_and_contact_time_by_its_own(
     assert term["p"] == pytest.approx(2 * sps.t.sf(abs(fit.intercept / intercept_se), 4))
     assert term["df"] == 4 and term["networks"] == 6
     times = effect["contact_time"]
-    assert {t["method"] for t in times["tests"].values()} == {"contrasts"}
+    assert {times["tests"][f]["method"] for f in ("congruency", "size")} == {"contrasts"}
+    assert times["tests"]["congruency:size"]["method"] == "none"  # 0 in every network
     assert times["tests"]["congruency"]["estimate"] == pytest.approx(0.2 + 0.01, abs=1e-6)
     assert times["tests"]["size"]["estimate"] == pytest.approx(0.1 + 0.0075, abs=1e-6)
     verdict = robot_effect_verdict(times, "contact_time", "congruency")

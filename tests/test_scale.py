@@ -336,10 +336,11 @@ def test_the_sweep_words_follow_the_numbers():
     summary = pd.DataFrame([row, row | {"categorisation_cue": "all_steps", "size_ci_high": 0.01}])
     text = sweep_findings(summary)
     assert (
-        "congruent faster than incongruent, the paper's direction (mean difference 0.0300" in text
+        "congruent lower in RMSE than incongruent, the paper's direction (mean difference 0.0300"
+        in text
     )
     assert "in 9 of 10 replications, significantly reversed in 0" in text
-    assert "large objects slower than small objects, against the paper" in text
+    assert "large objects higher in RMSE than small objects, against the paper" in text
     assert "no consistent difference between large objects and small objects" in text
     table = sweep_summary_display(summary)
     assert len(table) == 4  # two settings x two effects

@@ -20,7 +20,9 @@ effective number of trials that accounts for that clustering, the method of Korn
   ``var = m / (m - 1) * sum_i (held_i - share * trials_i)**2 / trials**2`` for m networks;
 - the design effect ``deff = var / (share * (1 - share) / trials)``, taken as at least 1, so the
   interval is never narrower than if every trial were independent (with 12 networks a smaller
-  estimate is mostly noise; at a share of 0 or 1 the variance is 0 and deff is 1);
+  estimate is mostly noise; at a share of 0 or 1 the variance is 0 and deff is 1); the estimate
+  before that floor is reported too (``design_effect_raw``; undefined, NaN, at a share of 0 or
+  1), so a reader sees how far below 1 it was;
 - the effective trials ``trials / deff``, times ``(t(trials - 1) / t(m - 1))**2`` (the 97.5%
   points of Student's t), which widens the interval for a variance estimated from m networks
   only;
@@ -34,6 +36,8 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 import pandas as pd
+
+from .spec import OBJECT_NAMES
 
 #: The seed sets of a confirmation, in the order of data/embodied/confirmation.csv.
 SEED_SETS = ("exploration", "confirmation")
@@ -51,6 +55,15 @@ COLUMNS = (
     "effective_trials",
     "ci_low",
     "ci_high",
+)
+#: The networks' mappings, whose objects differ in congruency (not in the grasping task's grip).
+MAPPINGS = ("A", "B")
+#: The columns after ``COLUMNS``: the design effect before its floor at 1, and per mapping and
+#: object (``{mapping}_{object}``) its distinct grasping trials and how many held, so that the
+#: misses per object show beside the share.
+DETAIL_COLUMNS = (
+    "design_effect_raw",
+    *(f"{m}_{o}_{c}" for m in MAPPINGS for o in OBJECT_NAMES for c in ("trials", "held")),
 )
 
 
@@ -74,7 +87,8 @@ def clustered_interval(
 ) -> dict[str, float]:
     """The share held over clusters (networks) with ``held[i]`` of ``trials[i]`` each, and its
     Korn-Graubard interval (module docstring): share, design_effect, effective_trials, ci_low,
-    ci_high."""
+    ci_high; and design_effect_raw, the estimate before its floor at 1 (NaN at a share of 0 or
+    1)."""
     from scipy import stats
 
     held, trials = np.asarray(held, dtype=float), np.asarray(trials, dtype=float)
@@ -84,7 +98,8 @@ def clustered_interval(
     share = float(held.sum() / n)
     var = m / (m - 1) * float(np.sum((held - share * trials) ** 2)) / n**2
     binomial = share * (1 - share) / n
-    deff = max(1.0, var / binomial) if binomial > 0 else 1.0
+    raw = var / binomial if binomial > 0 else float("nan")
+    deff = max(1.0, raw) if binomial > 0 else 1.0
     alpha = 1 - level
     widen = (stats.t.ppf(1 - alpha / 2, n - 1) / stats.t.ppf(1 - alpha / 2, m - 1)) ** 2
     effective = n / deff * widen
@@ -97,16 +112,30 @@ def clustered_interval(
         "effective_trials": float(effective),
         "ci_low": low,
         "ci_high": high,
+        "design_effect_raw": float(raw),
     }
+
+
+def object_counts(grasping: pd.DataFrame) -> dict[str, int]:
+    """Per mapping and object (``DETAIL_COLUMNS``' ``{mapping}_{object}_trials`` and
+    ``_held``), the distinct grasping trials and how many held: 0 and 0 where none."""
+    out = {}
+    for mapping in MAPPINGS:
+        for obj in OBJECT_NAMES:
+            mine = grasping[(grasping["mapping"] == mapping) & (grasping["object"] == obj)]
+            out[f"{mapping}_{obj}_trials"] = int(len(mine))
+            out[f"{mapping}_{obj}_held"] = int(mine["success"].sum())
+    return out
 
 
 def confirmation_table(
     trials: pd.DataFrame, confirmation: Sequence[Mapping[str, object]], level: float = 0.95
 ) -> pd.DataFrame:
     """One row per confirmed variant and seed set (``SEED_SETS``): the variant's keys, then
-    ``COLUMNS``, from its grasping trials counted once per network and object.
+    ``COLUMNS``, then ``DETAIL_COLUMNS``, from its grasping trials counted once per network and
+    object.
 
-    ``trials``: robot trials with columns run, network, task, object, success (e.g.
+    ``trials``: robot trials with columns run, network, mapping, task, object, success (e.g.
     data/embodied/trials.csv with the confirmation's joined); ``confirmation``: one mapping per
     variant, its keys (``variants.NetworkVariant.keys()``) and the runs ``exploration`` and
     ``confirmation``.
@@ -133,11 +162,12 @@ def confirmation_table(
                     "held": int(per_net["sum"].sum()),
                 }
                 | interval
+                | object_counts(mine)
             )
     if not rows:
-        return pd.DataFrame(columns=list(COLUMNS))
-    keys = [k for k in rows[0] if k not in COLUMNS]
-    return pd.DataFrame(rows)[[*keys, *COLUMNS]]
+        return pd.DataFrame(columns=[*COLUMNS, *DETAIL_COLUMNS])
+    keys = [k for k in rows[0] if k not in COLUMNS and k not in DETAIL_COLUMNS]
+    return pd.DataFrame(rows)[[*keys, *COLUMNS, *DETAIL_COLUMNS]]
 
 
 def bar_verdict(ci_low: float, ci_high: float, bar: float) -> str:

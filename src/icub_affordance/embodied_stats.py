@@ -7,7 +7,10 @@ In closed loop a network's test sequences of one object and task are one and the
 (``embodied.embodied_network``): every count, rate and test here is over distinct trials, one
 per network x object x task (``distinct_trials``), never over the duplicated sequences. The
 variants' congruency and size effects are tested per network (``stats.contrast_tests``), with
-Fisher's exact test where the contrast has no variance, and Holm's adjustment over them all.
+Fisher's exact test where the contrast has no variance; their congruency x size interaction by
+the per-network contrast only; and Holm's adjustment over them all, one family
+(``ROBOT_FAMILY``). Each effect keeps its counts per cell and per object, so that a reader sees
+which trials were missed.
 """
 
 from __future__ import annotations
@@ -17,6 +20,7 @@ import pandas as pd
 
 from .body import TOUCH_NAMES
 from .stats import (
+    adjust_families,
     categorisation_trials,
     cell_means,
     contrast_tests,
@@ -28,6 +32,9 @@ from .stats import (
     trial_conditions,
 )
 from .variants import NetworkVariant
+
+#: The family of the config's own networks' robot tests in ``success_analysis``.
+OWN_ROBOT_FAMILY = "exploration: the config's own networks on the robot"
 
 #: The columns a robot trial's physics decides: the same in every test sequence of one network x
 #: object x task, which are one movement on the robot (``embodied_network``).
@@ -134,6 +141,14 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
             "contrasts": contrasts,
             "repeated_measures": anova,
         }
+    # the config's own networks' final-error tests on the robot, one family (their success is
+    # tested with every variant's, variant_effects)
+    own = [
+        measures["final_error"]["contrasts"][e]
+        for e in ("congruency", "size")
+        if measures["final_error"]["contrasts"]
+    ]
+    adjust_families([(OWN_ROBOT_FAMILY, term) for term in own])
     grasping = trials[trials["task"] == "grasping"]
     return {
         "n_networks": int(df["network"].nunique()),
@@ -241,6 +256,50 @@ def _counts(df: pd.DataFrame, factor: str, measure: str) -> dict[str, dict[str, 
 #: The two levels of each factor the robot effects compare, the paper's faster one first.
 FACTOR_LEVELS = {"congruency": ("congruent", "incongruent"), "size": ("large", "small")}
 
+#: The interaction's key in a measure's ``tests``. With four objects it is twice the difference
+#: between the trials that require a power grip (congruent large, incongruent small, under
+#: either mapping) and those that require a precision grip: a grip effect, not a size one.
+INTERACTION = "congruency:size"
+
+#: The family of every robot test (``p_holm``): the variants were explored, none confirmed.
+ROBOT_FAMILY = "exploration: robot"
+
+#: What a cell or object counts for each measure: the trials held (success), or touched
+#: (contact time, defined only where the required fingers touched).
+COUNTED = {"success": "held", "contact_time": "touched"}
+
+
+def _tally(g: pd.DataFrame, measure: str) -> dict[str, float]:
+    """The distinct trials of ``g``, how many were held or touched (``COUNTED``) and the
+    measure's mean over them (NaN where none)."""
+    count = g[measure].sum() if measure == "success" else g[measure].notna().sum()
+    mean = float(g[measure].mean()) if len(g) else float("nan")
+    return {"trials": int(len(g)), COUNTED[measure]: int(count), "mean": mean}
+
+
+def _cells(df: pd.DataFrame, measure: str) -> dict[str, dict[str, float]]:
+    """Per congruency x size cell ("congruent_large", ...), the counts of ``_tally``: a main
+    effect resting on one cell shows here."""
+    return {
+        f"{c}_{s}": _tally(df[(df["congruency"] == c) & (df["size"] == s)], measure)
+        for c in FACTOR_LEVELS["congruency"]
+        for s in FACTOR_LEVELS["size"]
+    }
+
+
+def _objects(df: pd.DataFrame, measure: str) -> dict[str, dict[str, object]]:
+    """Per mapping and object ("A_big_ball", ...), its congruency, size and required grip, and
+    the counts of ``_tally``: which objects the misses are."""
+    out = {}
+    for (mapping, obj), g in df.groupby(["mapping", "object"], sort=True):
+        first = g.iloc[0]
+        out[f"{mapping}_{obj}"] = {
+            "congruency": str(first["congruency"]),
+            "size": str(first["size"]),
+            "target_grip": str(first["target_grip"]),
+        } | _tally(g, measure)
+    return out
+
 
 def _exact_test(df: pd.DataFrame, factor: str) -> dict[str, object]:
     """Fisher's exact test of success against ``factor``, over the distinct trials of ``df``
@@ -278,13 +337,34 @@ def _defined(term: dict) -> bool:
     return bool(np.isfinite(term["se"]) and term["se"] > 0 and np.isfinite(term["p"]))
 
 
+def _no_test(measure: str, contrasts: dict | None, networks: int, exact: bool) -> dict:
+    """A term with no test, and why: too few networks with all four cells, or no variance in
+    the per-network contrast; ``exact`` (the interaction of success, whose factors fall back on
+    Fisher's test): says that it has no such fallback."""
+    some, every = (
+        ("network(s) touched in", "every network that touched in")
+        if measure == "contact_time"
+        else ("network(s) with trials in", "every network with trials in")
+    )
+    reason = (
+        f"{networks} {some} all four congruency x size cells, "
+        "fewer than the three a test over networks needs"
+        if contrasts is None
+        else f"{every} all four cells shows the same contrast"
+    )
+    if exact:
+        reason += "; an interaction has no exact test to fall back on"
+    return {"method": "none", "reason": reason}
+
+
 def _measure_effects(
     tested: pd.DataFrame, counted: pd.DataFrame, measure: str, exact: pd.DataFrame | None
 ) -> dict[str, object]:
     """One measure's effects in one variant: the per-network contrasts over ``tested``; per
     factor the contrast's test where it is defined, else Fisher's exact test over ``exact``
-    (success, as booleans) or, without it (contact time), no test and why; and the counts per
-    level over ``counted``, the variant's distinct trials."""
+    (success, as booleans) or, without it (contact time), no test and why; the interaction
+    (``INTERACTION``) by the contrast only; and the counts over ``counted``, the variant's
+    distinct trials, per level, per cell and per mapping and object."""
     contrasts, networks = _contrasts_or_none(tested, measure)
     tests: dict[str, object] = {}
     for factor in FACTOR_LEVELS:
@@ -293,17 +373,17 @@ def _measure_effects(
         elif exact is not None:
             tests[factor] = _exact_test(exact, factor)
         else:
-            reason = (
-                f"{networks} network(s) touched in all four congruency x size cells, "
-                "fewer than the three a test over networks needs"
-                if contrasts is None
-                else "every network that touched in all four cells shows the same contrast"
-            )
-            tests[factor] = {"method": "none", "reason": reason}
+            tests[factor] = _no_test(measure, contrasts, networks, exact=False)
+    if contrasts is not None and _defined(contrasts[INTERACTION]):
+        tests[INTERACTION] = {"method": "contrasts"} | contrasts[INTERACTION]
+    else:
+        tests[INTERACTION] = _no_test(measure, contrasts, networks, exact=exact is not None)
     return {
         "distinct_trials": int(len(counted)),
         "congruency": _counts(counted, "congruency", measure),
         "size": _counts(counted, "size", measure),
+        "cells": _cells(counted, measure),
+        "objects": _objects(counted, measure),
         "networks": networks,
         "contrasts": contrasts,
         "tests": tests,
@@ -321,9 +401,15 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     Fisher's exact test over the distinct trials. Contact time: the per-network contrasts over
     the trials that touched, from the networks that touched in all four congruency x size cells;
     where that test is undefined (fewer than three such networks, or no variance) the effect is
-    not estimable and says why. Each measure keeps its counts per level and the per-factor
-    ``tests`` ({"method": "contrasts" | "exact" | "none", ...}); every defined test's p is also
-    given Holm-adjusted over all the variants' tests together (``p_holm``).
+    not estimable and says why. The congruency x size interaction (``INTERACTION``): the
+    per-network contrast where defined, else no test (an interaction has no exact fallback).
+
+    Each measure keeps its counts per level, per cell (``cells``: "congruent_large", ...) and per
+    mapping and object (``objects``: "A_big_ball", ...), each with its distinct trials, how many
+    were held or touched (``COUNTED``) and the mean; and its ``tests`` per factor and for the
+    interaction ({"method": "contrasts" | "exact" | "none", ...}). Every test with a method is
+    in one family over all the variants (``family``, ``ROBOT_FAMILY``; ``family_size``) with its
+    p Holm-adjusted over it (``p_holm``).
     """
     out = {}
     for run, df in distinct_trials(trials).groupby("run", sort=False):
@@ -342,9 +428,10 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
 
 
 def _holm_over_family(effects: dict[str, dict]) -> None:
-    """Every defined test of every variant, measure and factor is one family (the robot
-    chapter reads them together): each gains ``p_holm``, Holm's adjustment over the family,
-    which the verdicts read."""
+    """Every test of every variant, measure and term (the robot chapter reads them together) is
+    one family, ``ROBOT_FAMILY``: each gains ``family``, ``family_size`` and ``p_holm``, Holm's
+    adjustment over the family, which the verdicts read. A term with no test (method "none")
+    is not in the family and has no ``p_holm``."""
     tests = [
         test
         for measures in effects.values()
@@ -352,5 +439,7 @@ def _holm_over_family(effects: dict[str, dict]) -> None:
         for test in measure["tests"].values()
         if test["method"] != "none"
     ]
-    for test, p in zip(tests, holm([t["p"] for t in tests]), strict=True):
-        test["p_holm"] = float(p)
+    p = [t["p"] for t in tests]
+    size = int(np.isfinite(p).sum())
+    for test, adjusted in zip(tests, holm(p), strict=True):
+        test |= {"family": ROBOT_FAMILY, "family_size": size, "p_holm": float(adjusted)}

@@ -494,10 +494,13 @@ def dose_response(summary, replications, manipulation, path) -> None:
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     cues = list(dict.fromkeys(summary["cue"]))
-    doses = [d for d in dict.fromkeys(summary["dose"]) if d != "removed"]
+    controls = {"removed": ("s", "C3", "no size (removal)"),
+                "equal_grips": ("D", "C4", "dose 0, grips at one distance")}  # fmt: skip
+    doses = [d for d in dict.fromkeys(summary["dose"]) if d not in controls]
     x = {d: float(d) for d in doses}
     step = (max(x.values()) - min(x.values())) / max(len(doses) - 1, 1)
     x["removed"] = min(x.values()) - 1.5 * step
+    x["equal_grips"] = min(x.values()) + 0.5 * step
     fig, axes = plt.subplots(
         len(measures) + 1, len(cues), figsize=(4.2 * len(cues), 2.4 * (len(measures) + 1)),
         squeeze=False, sharex=True,
@@ -506,17 +509,18 @@ def dose_response(summary, replications, manipulation, path) -> None:
         for i, measure in enumerate(measures):
             ax = axes[i, j]
             rows = summary[(summary["cue"] == cue) & (summary["measure"] == measure)]
-            dosed = rows[rows["dose"] != "removed"]
+            dosed = rows[~rows["dose"].isin(list(controls))]
             xs = [x[d] for d in dosed["dose"]]
             mean = dosed["diff"].to_numpy(dtype=float)
             err = np.vstack([mean - dosed["ci_low"], dosed["ci_high"] - mean])
             ax.errorbar(xs, mean, yerr=err, fmt="o-", color="C0", capsize=3, ms=4)
-            for _, row in rows[rows["dose"] == "removed"].iterrows():
-                ax.errorbar(
-                    [x["removed"]], [row["diff"]],
-                    yerr=[[row["diff"] - row["ci_low"]], [row["ci_high"] - row["diff"]]],
-                    fmt="s", color="C3", capsize=3, ms=5, label="no size (removal)",
-                )  # fmt: skip
+            for control, (marker, colour, label) in controls.items():
+                for _, row in rows[rows["dose"] == control].iterrows():
+                    ax.errorbar(
+                        [x[control]], [row["diff"]],
+                        yerr=[[row["diff"] - row["ci_low"]], [row["ci_high"] - row["diff"]]],
+                        fmt=marker, color=colour, capsize=3, ms=5, label=label,
+                    )  # fmt: skip
             reps = replications[(replications["cue"] == cue) & (replications["measure"] == measure)]
             ax.scatter([x[d] for d in reps["dose"]], reps["estimate"], s=6, c="0.45", zorder=3)
             ax.axhline(0, color="0.3", lw=0.8)
@@ -526,7 +530,9 @@ def dose_response(summary, replications, manipulation, path) -> None:
             if i == 0 and j == 0:
                 ax.legend(fontsize=7, loc="best")
         ax = axes[-1, j]
-        checks = manipulation[(manipulation["cue"] == cue) & (manipulation["dose"] != "removed")]
+        checks = manipulation[
+            (manipulation["cue"] == cue) & ~manipulation["dose"].isin(list(controls))
+        ]
         mean_ratio = checks.groupby(["shape", "map", "dose"], sort=False)["ratio"].mean()
         for (shape, name), style in zip(
             [("ball", "object"), ("ball", "goal"), ("cube", "object"), ("cube", "goal")],
@@ -538,8 +544,11 @@ def dose_response(summary, replications, manipulation, path) -> None:
             )
         ax.axhline(2, color="0.4", lw=0.8, ls=":")
         ax.set_ylabel("large / small\nactive units", fontsize=8)
-        ax.set_xlabel("dose: cluster width per sqrt(edge cell)")
-        ax.set_xticks([x["removed"], *xs], ["none", *[f"{d:g}" for d in doses]], fontsize=7)
+        ax.set_xlabel("nominal dose (delivered: the Goal map's ln large/small units)", fontsize=8)
+        delivered = summary[summary["cue"] == cue].groupby("dose", sort=False)["delivered_dose"]
+        delivered = delivered.mean()
+        labels = [f"{d:g}\n({delivered[d]:.2f})" for d in doses]
+        ax.set_xticks([x["removed"], *xs], ["none", *labels], fontsize=7)
         ax.grid(alpha=0.3)
         if j == 0:
             ax.legend(fontsize=7, loc="best")

@@ -232,13 +232,18 @@ def robot_effect_statistics(effect: dict, factor: str) -> dict[str, float]:
 
 
 def wrong_grip_by_congruency(rates: dict[str, float]) -> dict[str, float]:
-    """The share of categorisation trials answered with the wrong grip, per congruency: the
-    mean of its large and small objects' (``anova.json``'s ``wrong_grip_rate``, per
-    congruency_size)."""
-    return {
+    """The share of categorisation trials answered with the wrong grip, per congruency (the mean
+    of its large and small objects') and per size (the mean of its two congruency levels), from
+    ``anova.json``'s ``wrong_grip_rate`` per congruency_size."""
+    by_congruency = {
         c: float(np.mean([rates[f"{c}_{s}"] for s in ("large", "small")]))
         for c in ("congruent", "incongruent")
     }
+    by_size = {
+        s: float(np.mean([rates[f"{c}_{s}"] for c in ("congruent", "incongruent")]))
+        for s in ("large", "small")
+    }
+    return by_congruency | by_size
 
 
 def tolerated_noise(table: pd.DataFrame, bar: float = GRASPS) -> pd.Series | None:

@@ -31,6 +31,13 @@ further from the required grip: the paper's reading is that higher is slower.
   trial's grip distance. Whatever effect the null control shows comes from the denominator
   alone.
 
+- ``rmse_correct``: the trial's RMSE where its grip was right (``wrong_grip`` 0), else undefined:
+  the reaction-time analogue, as people's reaction times are measured on correct responses with
+  errors reported apart. Derived at analysis time from ``rmse`` and ``wrong_grip``
+  (``stats.with_outcomes``), not a column of ``measures.csv``. In closed loop a network's trials
+  of one object are one trial, so a network that always took the wrong grip on an object has no
+  value there: a network can lack a cell by design (``MISSING_BY_DESIGN``).
+
 ``time_to_commit`` (the first step from which the output stayed nearer the required grip) was
 retired: in closed loop it took almost only the values 1 and ``steps``, the latter exactly for
 the trials that ended nearer the wrong grip, so it was a rescaled wrong-grip indicator, not a
@@ -47,25 +54,76 @@ from .spec import MODES
 from .train import Materials
 
 #: The measures that can be declared, in the order of the tables (config ``readings.measures``).
-MEASURES: tuple[str, ...] = ("rmse", "wrong_grip", "commitment", "rmse_per_grip_distance")
+MEASURES: tuple[str, ...] = (
+    "rmse",
+    "rmse_correct",
+    "wrong_grip",
+    "commitment",
+    "rmse_per_grip_distance",
+)
+
+#: The measures computed at analysis time from other measures' columns (``stats.with_outcomes``),
+#: with the columns each needs: not written by ``measure_network``.
+DERIVED: dict[str, tuple[str, ...]] = {"rmse_correct": ("rmse", "wrong_grip")}
+
+#: The measures a network can lack in a cell by design (no correct trial of an object): their
+#: contrasts come from ``stats.within_network_fit``, which keeps such a network, never from the
+#: per-network contrasts, which drop it. Declared here, never read off the data.
+MISSING_BY_DESIGN: frozenset[str] = frozenset({"rmse_correct"})
 
 #: A measure's null control, analysed beside it whenever it is declared (not a hypothesis).
 NULL_CONTROLS: dict[str, str] = {"rmse_per_grip_distance": "rmse_per_grip_distance_null"}
 
 
+#: A measure with a null control is tested by its excess over it: each trial's value minus its
+#: null control's, what the movements add to what the denominator alone makes. The measure and
+#: its null control are shown beside the excess; the excess is the hypothesis.
+EXCESS: dict[str, str] = {"rmse_per_grip_distance": "rmse_per_grip_distance_excess"}
+
+
 def analysed(measures) -> list[str]:
-    """The declared measures with each one's null control right after it: what is analysed."""
+    """The declared measures with each one's null control and excess right after it: what is
+    analysed."""
     unknown = [m for m in measures if m not in MEASURES]
     if unknown:
         raise ValueError(f"unknown measure(s) {unknown}; the measures are {list(MEASURES)}")
     out = []
     for m in measures:
-        out += [m] + ([NULL_CONTROLS[m]] if m in NULL_CONTROLS else [])
+        out += [m] + ([NULL_CONTROLS[m], EXCESS[m]] if m in NULL_CONTROLS else [])
     return out
 
 
 def is_null_control(measure: str) -> bool:
     return measure in NULL_CONTROLS.values()
+
+
+def is_hypothesis(measure: str) -> bool:
+    """A measure whose tests are hypotheses: not a null control, and not a measure that is
+    tested by its excess over its null control (``EXCESS``: that measure is shown beside it)."""
+    return not is_null_control(measure) and measure not in EXCESS
+
+
+def margin_measure(measure: str) -> str:
+    """Whose declared equivalence margin a measure uses: an excess its measure's (same units)."""
+    return next((m for m, excess in EXCESS.items() if excess == measure), measure)
+
+
+def with_excess(trials):
+    """``trials`` (a table with the measures' columns) with each ``EXCESS`` column: the measure
+    minus its null control, trial by trial."""
+    out = trials.copy()
+    for measure, excess in EXCESS.items():
+        if measure in out and NULL_CONTROLS[measure] in out:
+            out[excess] = out[measure] - out[NULL_CONTROLS[measure]]
+    return out
+
+
+def is_derived(measure: str) -> bool:
+    return measure in DERIVED
+
+
+def can_lack_cells(measure: str) -> bool:
+    return measure in MISSING_BY_DESIGN
 
 
 def _check(outputs, required, other) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

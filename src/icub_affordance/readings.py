@@ -18,7 +18,12 @@ summary, every comparison x measure x effect of the differences; a null control'
 (``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
 out of the family (their ``p_holm`` is empty). A verdict ("paper", "reversed") needs the adjusted p
 below ``findings.ALPHA``; otherwise it is "none", which is not "no difference": only an equivalence
-test (TOST, with a margin declared in config) can say that.
+test (TOST, with a margin declared in config) can say that. Each table names, per row, the family
+its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
+
+A measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``: the correct-trial
+RMSE) is tested with ``stats.within_network_fit``, which keeps such a network; its differences
+between readings cannot be paired by network (``difference_replications``).
 """
 
 from __future__ import annotations
@@ -27,7 +32,15 @@ import numpy as np
 import pandas as pd
 
 from .findings import ALPHA
-from .measures import analysed, is_null_control
+from .measures import (
+    analysed,
+    can_lack_cells,
+    is_derived,
+    is_hypothesis,
+    is_null_control,
+    margin_measure,
+    with_excess,
+)
 from .spec import MODES
 from .stats import (
     categorisation_trials,
@@ -36,12 +49,27 @@ from .stats import (
     equivalence,
     holm,
     network_contrasts,
+    network_object_means,
     object_means,
     t_term,
+    with_outcomes,
+    within_network_fit,
 )
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")
+
+#: The Holm families of the readings' tables (a row's ``family``): every hypothesis of the
+#: summary, every difference between readings, every equivalence test (TOST) of a difference.
+FAMILY_SUMMARY = "exploration: readings"
+FAMILY_DIFFERENCES = "exploration: readings' differences"
+FAMILY_EQUIVALENCE = "exploration: readings' equivalence"
+#: A null control's rows: shown beside their measure, in no family (empty ``p_holm``).
+NULL_CONTROL = "null control (not a hypothesis)"
+#: A difference with no spread at all (``identical``): not tested, in no family.
+NOT_TESTED = "not tested (identical)"
+#: A measure tested by its excess over its null control (``measures.EXCESS``): shown, no test.
+BY_EXCESS = "shown (tested by its excess over the null control)"
 
 #: The columns that say which effect on which measure, and its mean and interval.
 _EFFECT_COLUMNS = ["measure", "effect", "replications", "diff", "ci_low", "ci_high"]
@@ -57,11 +85,13 @@ SUMMARY_COLUMNS = [
     "df",
     "p",
     "p_holm",
+    "family",
 ]
 
 #: The columns of data/readings/differences.csv: one row per comparison (the readings ``a`` and
 #: ``b`` differing in one choice, the other choice ``at``), measure and effect; ``diff`` is a's
-#: effect minus b's. The equivalence columns are filled for the Goal response only.
+#: effect minus b's. The equivalence columns are filled for the Goal response only. ``identical``:
+#: every replication's difference the same with no spread (se 0), so nothing to test.
 DIFFERENCE_COLUMNS = [
     "comparison",
     "at",
@@ -69,11 +99,14 @@ DIFFERENCE_COLUMNS = [
     "b",
     *_EFFECT_COLUMNS,
     "df",
+    "identical",
     "p",
     "p_holm",
+    "family",
     "margin",
     "p_equivalence",
     "p_equivalence_holm",
+    "family_equivalence",
 ]
 
 #: The comparisons between readings: which choice differs, and its two levels a, b (a - b).
@@ -83,22 +116,62 @@ COMPARISONS = {
 }
 
 
+def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
+    """``trials`` with the derived measures among ``measures`` (``measures.DERIVED``: the
+    correct-trial RMSE, from ``rmse`` and ``wrong_grip``) as columns."""
+    if any(is_derived(m) for m in analysed(measures)):
+        trials = with_outcomes(trials)
+    return with_excess(trials)
+
+
+def contrasts(df: pd.DataFrame, measure: str) -> dict[str, dict]:
+    """A measure's contrasts: ``stats.within_network_fit`` for a measure that a network can lack
+    in a cell (``measures.MISSING_BY_DESIGN``: the per-network contrasts would drop that
+    network), the per-network contrasts otherwise."""
+    if can_lack_cells(measure):
+        return within_network_fit(df, measure)
+    return network_contrasts(df, measure)
+
+
+def defined_object_means(df: pd.DataFrame, measure: str) -> dict[str, dict[str, float]]:
+    """``stats.object_means`` over the networks with a defined value (means over the defined
+    trials): every object kept, its ``n_networks`` the networks defined there."""
+    out = object_means(df, measure)
+    per_net = network_object_means(df, measure).dropna(subset=[measure])
+    counts = per_net.groupby(["mapping", "object"]).size()
+    for key, entry in out.items():
+        mapping, obj = key.split("_", 1)
+        entry["n_networks"] = int(counts.get((mapping, obj), 0))
+    return out
+
+
 def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dict]:
     """Per test mode and measure (the declared ones, each with its null control:
-    ``measures.analysed``): the contrasts, the cell means and the per-object means of the
-    categorisation trials (``measures.csv``'s rows)."""
+    ``measures.analysed``; the derived ones computed here, ``with_derived``): the contrasts
+    (``contrasts``), the cell means and the per-object means of the categorisation trials
+    (``measures.csv``'s rows), each mean over the defined values only."""
+    trials = with_derived(trials, measures)
     out: dict[str, dict] = {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         out[mode] = {
             measure: {
-                "contrasts": network_contrasts(df, measure),
-                "means": cell_means(df, measure),
-                "object_means": object_means(df, measure),
+                "contrasts": contrasts(df, measure),
+                "means": cell_means(df.dropna(subset=[measure]), measure),
+                "object_means": defined_object_means(df, measure),
             }
             for measure in analysed(measures)
         }
     return out
+
+
+def flat_term(term: dict) -> dict:
+    """A term as one table row: ``within_network_fit``'s networks per cell as ``cells_{cell}``
+    columns."""
+    cells = term.get("cells", {})
+    return {k: v for k, v in term.items() if k != "cells"} | {
+        f"cells_{cell}": n for cell, n in cells.items()
+    }
 
 
 def replication_rows(
@@ -106,12 +179,13 @@ def replication_rows(
 ) -> pd.DataFrame:
     """One row per reading, replication, measure and effect: the contrasts' estimate, its
     interval, df and p. ``table`` holds the readings' rows (reading, cue, goal_response, seed,
-    run), ``analyses`` each row's ``analyse_measures`` result."""
+    run), ``analyses`` each row's ``analyse_measures`` result. A ``within_network_fit``'s
+    networks per cell are the ``cells_{cell}`` columns."""
     rows = []
     for row, analysis in zip(table, analyses, strict=True):
         for measure in analysed(measures):
             for effect in EFFECTS:
-                term = analysis[mode][measure]["contrasts"][effect]
+                term = flat_term(analysis[mode][measure]["contrasts"][effect])
                 rows.append(dict(row) | {"measure": measure, "effect": effect} | term)
     return pd.DataFrame(rows)
 
@@ -139,19 +213,31 @@ def over_replications(terms: pd.DataFrame) -> dict[str, float]:
 
 
 def holm_hypotheses(table: pd.DataFrame, column: str = "p") -> np.ndarray:
-    """Holm's adjustment of ``column`` over the rows that are hypotheses (a null control's rows
-    are not: NaN)."""
+    """Holm's adjustment of ``column`` over the rows that are hypotheses (``measures.
+    is_hypothesis``: a null control's rows and those of a measure tested by its excess are not:
+    NaN)."""
     out = np.full(len(table), np.nan)
-    hypothesis = ~table["measure"].map(is_null_control).to_numpy(dtype=bool)
+    hypothesis = table["measure"].map(is_hypothesis).to_numpy(dtype=bool)
     out[hypothesis] = holm(table.loc[hypothesis, column].to_numpy(dtype=float))
     return out
+
+
+def family_names(table: pd.DataFrame, family: str) -> list[str]:
+    """Each row's Holm family as ``holm_hypotheses`` adjusts it: ``family`` for a hypothesis,
+    ``NULL_CONTROL`` for a null control's row, ``BY_EXCESS`` for a measure tested by its excess
+    over its null control."""
+    return [
+        family if is_hypothesis(m) else NULL_CONTROL if is_null_control(m) else BY_EXCESS
+        for m in table["measure"]
+    ]
 
 
 def summary(replications: pd.DataFrame) -> pd.DataFrame:
     """One row per reading, measure and effect (``SUMMARY_COLUMNS``). ``diff``, its interval,
     ``df`` and ``p`` from ``over_replications``; ``p_holm`` Holm's over the table's hypotheses
-    (``holm_hypotheses``). ``n_paper`` and ``n_reversed`` count the replications with (raw)
-    p < ALPHA in and against the paper's direction."""
+    (``holm_hypotheses``), its ``family`` named (``FAMILY_SUMMARY``, or ``NULL_CONTROL``).
+    ``n_paper`` and ``n_reversed`` count the replications with (raw) p < ALPHA in and against
+    the paper's direction."""
     rows = []
     keys = ["reading", "cue", "goal_response", "measure", "effect"]
     for key, group in replications.groupby(keys, sort=False):
@@ -169,6 +255,39 @@ def summary(replications: pd.DataFrame) -> pd.DataFrame:
         )
     out = pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
     out["p_holm"] = holm_hypotheses(out) if len(out) else []
+    out["family"] = family_names(out, FAMILY_SUMMARY)
+    return out
+
+
+def welch_df(se_a: float, se_b: float, df_a: float, df_b: float) -> float:
+    """The Welch-Satterthwaite degrees of freedom of a difference of two independent estimates;
+    with both standard errors 0 (no variance to weigh), the two df pooled; NaN where either
+    estimate has no test."""
+    va, vb = se_a**2, se_b**2
+    if not (df_a > 0 and df_b > 0 and np.isfinite(va + vb)):
+        return float("nan")
+    if va + vb == 0:
+        return float(df_a + df_b)
+    return float((va + vb) ** 2 / (va**2 / df_a + vb**2 / df_b))
+
+
+def unpaired_difference(a: pd.DataFrame, b: pd.DataFrame, measure: str) -> dict[str, dict]:
+    """A minus B for a measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``):
+    a network's contrast is then undefined, so the runs cannot be paired by network. Each term
+    is the difference of the two runs' ``stats.within_network_fit`` estimates, with
+    se = sqrt(se_a^2 + se_b^2) and Welch-Satterthwaite df. Conservative: the two runs' networks
+    are the same networks (same seeds, same mappings), whose estimates correlate positively, and
+    the unpaired se ignores that covariance."""
+    fa, fb = within_network_fit(a, measure), within_network_fit(b, measure)
+    out = {}
+    for effect in EFFECTS:
+        ta, tb = fa[effect], fb[effect]
+        se = float(np.hypot(ta["se"], tb["se"]))
+        df = welch_df(ta["se"], tb["se"], ta["df"], tb["df"])
+        out[effect] = t_term(ta["estimate"] - tb["estimate"], se, df) | {
+            "networks": min(ta["networks"], tb["networks"]),
+            "observations": ta["observations"] + tb["observations"],
+        }
     return out
 
 
@@ -183,7 +302,8 @@ def difference_replications(
     (``stats.difference_tests`` on the two runs' trials of the same seed: a run's network k has
     the seed ``train.network_seed(seed, k)`` and the mapping ``train.mapping_of(k)`` whatever
     the reading, so network k is the same network under the two settings). ``trials`` maps each
-    run to its ``measures.csv``."""
+    run to its ``measures.csv``. A measure that a network can lack in a cell
+    (``measures.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""
     by = {(r["cue"], r["goal_response"], r["seed"]): r for r in table}
     rows = []
     for comparison, (choice, level_a, level_b) in COMPARISONS.items():
@@ -194,10 +314,15 @@ def difference_replications(
             rb = by.get((level_b, goal, seed) if choice == "cue" else (cue, level_b, seed))
             if rb is None:  # the config reads only one level of this choice
                 continue
-            a = categorisation_trials(trials[ra["run"]], mode)
-            b = categorisation_trials(trials[rb["run"]], mode)
+            a, b = (
+                categorisation_trials(with_derived(trials[r["run"]], measures), mode)
+                for r in (ra, rb)
+            )
             for measure in analysed(measures):
-                terms = difference_tests(a, b, measure)
+                if can_lack_cells(measure):
+                    terms = unpaired_difference(a, b, measure)
+                else:
+                    terms = difference_tests(a, b, measure)
                 for effect in EFFECTS:
                     rows.append(
                         {
@@ -214,39 +339,60 @@ def difference_replications(
     return pd.DataFrame(rows)
 
 
+def identical(group: pd.DataFrame, test: dict[str, float]) -> bool:
+    """Every replication's difference exactly 0 and no spread within (se 0: e.g. a measure
+    constant on every network in both readings): the two readings gave the same values, and
+    there is nothing to test. (A difference that is the same non-zero value everywhere, se 0,
+    has no variance to test either: its p is undefined, see ``differences``.)"""
+    estimates = group["estimate"].to_numpy(dtype=float)
+    return bool(np.all(estimates == 0) and test["se"] == 0)
+
+
+def equivalence_row(row: dict, test: dict[str, float], margins: dict[str, float]) -> dict:
+    """A differences row's TOST within its measure's declared margin (config
+    ``readings.equivalence_margin``), for the Goal response's hypotheses only."""
+    measure = row["measure"]
+    if row["comparison"] != "goal_response" or not is_hypothesis(measure):
+        return {"margin": np.nan, "p_equivalence": np.nan}
+    if margin_measure(measure) not in margins:
+        raise ValueError(f"readings.equivalence_margin has no margin for {measure!r}")
+    margin = float(margins[margin_measure(measure)])
+    tost = equivalence({"estimate": test["diff"], "se": test["se"], "df": test["df"]}, margin)
+    return {"margin": margin, "p_equivalence": np.nan if row["identical"] else tost["p"]}
+
+
 def differences(replications: pd.DataFrame, margins: dict[str, float]) -> pd.DataFrame:
     """One row per comparison, level, measure and effect (``DIFFERENCE_COLUMNS``): the
-    difference over replications (``over_replications``), Holm's p over the table's hypotheses,
-    and for the Goal response the equivalence test (TOST) within the measure's declared margin
-    (config ``readings.equivalence_margin``), its p Holm-adjusted over the equivalence tests (a
-    null control has none)."""
+    difference over replications (``over_replications``), Holm's p over the table's hypotheses
+    (``FAMILY_DIFFERENCES``), and for the Goal response the equivalence test (TOST) within the
+    measure's declared margin (``equivalence_row``), its p Holm-adjusted over the equivalence
+    tests (``FAMILY_EQUIVALENCE``; a null control has none). An ``identical`` row is not tested:
+    its p and TOST p are NaN, so it is in no family (``NOT_TESTED``)."""
     keys = ["comparison", "at", "a", "b", "measure", "effect"]
     rows = []
     for key, group in replications.groupby(keys, sort=False):
         test = over_replications(group)
         row = dict(zip(keys, key, strict=True)) | {"replications": len(group)} | test
-        row |= {"margin": np.nan, "p_equivalence": np.nan}
-        measure = row["measure"]
-        if row["comparison"] == "goal_response" and not is_null_control(measure):
-            if measure not in margins:
-                raise ValueError(f"readings.equivalence_margin has no margin for {measure!r}")
-            margin = float(margins[measure])
-            tost = equivalence(
-                {"estimate": test["diff"], "se": test["se"], "df": test["df"]}, margin
-            )
-            row |= {"margin": margin, "p_equivalence": tost["p"]}
-        rows.append(row)
+        row["identical"] = identical(group, test)
+        if row["identical"] or test["se"] == 0:
+            row["p"] = np.nan  # no variance: no test, in no family
+        rows.append(row | equivalence_row(row, test, margins))
     out = pd.DataFrame(rows, columns=[*DIFFERENCE_COLUMNS])
     if len(out):
         out["p_holm"] = holm_hypotheses(out)
         out["p_equivalence_holm"] = holm_hypotheses(out, "p_equivalence")
+        out["family"] = family_names(out, FAMILY_DIFFERENCES)
+        null = ~out["measure"].map(is_hypothesis).to_numpy(dtype=bool)
+        out.loc[out["identical"].to_numpy(dtype=bool) & ~null, "family"] = NOT_TESTED
+        tost = out["margin"].notna() & ~out["identical"]
+        out["family_equivalence"] = np.where(tost, FAMILY_EQUIVALENCE, "")
     return out
 
 
 def verdict_p(row) -> float:
-    """The p a row's verdict uses: Holm's for a hypothesis, the raw p for a null control (shown
-    for comparison, not a hypothesis)."""
-    return float(row["p"] if is_null_control(row["measure"]) else row["p_holm"])
+    """The p a row's verdict uses: Holm's for a hypothesis, the raw p for a row shown for
+    comparison (a null control, a measure tested by its excess), which is no hypothesis."""
+    return float(row["p_holm"] if is_hypothesis(row["measure"]) else row["p"])
 
 
 def direction(row) -> str:
@@ -281,6 +427,8 @@ def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
         )
         if is_null_control(row["measure"]):
             return numbers + " (null control, not a hypothesis)"
+        if not is_hypothesis(row["measure"]):
+            return numbers + " (shown; its excess over the null control is the hypothesis)"
         return (
             f"{numbers}, Holm p {fmt_p(row['p_holm'])}"
             f"{counts if row['replications'] > 1 else ''} ({direction(row)})"
@@ -294,9 +442,14 @@ def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
 
 
 def difference_verdict(row) -> str:
-    """A differences row's verdict: "a > b" or "a < b" (its effect larger or smaller in a than
-    in b) when its p (Holm's; a null control's raw p) is below ALPHA, "equivalent" when the TOST
-    within the margin is (Holm's), else "not shown" (neither a difference nor its absence)."""
+    """A differences row's verdict: "identical" when there was nothing to test (``identical``:
+    no spread at all), "a > b" or "a < b" (its effect larger or smaller in a than in b) when its
+    p (Holm's; a null control's raw p) is below ALPHA, "equivalent" when the TOST within the
+    margin is (Holm's), else "not shown" (neither a difference nor its absence)."""
+    if str(row.get("identical", False)) == "True":  # a bool, or the CSV's text
+        return "identical"
+    if not is_hypothesis(row["measure"]):
+        return "not a hypothesis"
     if verdict_p(row) < ALPHA:
         return "a > b" if row["diff"] > 0 else "a < b"
     if row["p_equivalence_holm"] < ALPHA:
@@ -318,7 +471,7 @@ def difference_display(table: pd.DataFrame) -> pd.DataFrame:
             "difference [95% interval]": table.apply(interval, axis=1),
             "p": table["p"].map(fmt_p),
             "Holm p": [
-                "control" if is_null_control(m) else fmt_p(p)
+                fmt_p(p) if is_hypothesis(m) else "not a hypothesis"
                 for m, p in zip(table["measure"], table["p_holm"], strict=True)
             ],
             "margin": table["margin"].map(lambda m: f"±{m:g}" if np.isfinite(m) else "–"),

@@ -269,10 +269,6 @@ def simple_effects(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str
     for name, (plus, minus) in SIMPLE.items():
         values = (cells[plus] - cells[minus]).to_numpy()
         out[name] = group_regression(values, mapping)["mean"] | {"networks": int(len(cells))}
-    # the four simple effects are one family of follow-up tests: Holm over them
-    adjusted = holm([out[name]["p"] for name in SIMPLE])
-    for name, p in zip(SIMPLE, adjusted, strict=True):
-        out[name]["p_holm"] = float(p)
     return out
 
 
@@ -327,18 +323,16 @@ def cue_timing_difference(
 def equivalence(term: dict[str, float], margin: float) -> dict[str, float]:
     """Two one-sided t-tests (TOST) of ``|estimate| < margin`` from a term's estimate, standard
     error and df: ``p`` is the larger one-sided p; below alpha, the difference is within the
-    margin (a "no difference" claim). ``margin`` must be declared before the result is read."""
+    margin (a "no difference" claim). ``margin`` must be declared before the result is read. A
+    zero standard error has no test: NaN p."""
     from scipy import stats as sps
 
     est, se, df = term["estimate"], term["se"], term["df"]
     if not (margin > 0):
         raise ValueError(f"an equivalence margin must be positive, got {margin}")
-    if not (np.isfinite(se) and df > 0):
+    if not (np.isfinite(se) and se > 0 and df > 0):  # se 0: no spread, no test (not p = 0)
         return {"margin": margin, "p_lower": float("nan"), "p_upper": float("nan"),
                 "p": float("nan")}  # fmt: skip
-    if se == 0:
-        inside = float(abs(est) < margin)
-        return {"margin": margin, "p_lower": 1 - inside, "p_upper": 1 - inside, "p": 1 - inside}
     p_lower = float(sps.t.sf((est + margin) / se, df))  # H0: estimate <= -margin
     p_upper = float(sps.t.cdf((est - margin) / se, df))  # H0: estimate >= +margin
     return {"margin": margin, "p_lower": p_lower, "p_upper": p_upper, "p": max(p_lower, p_upper)}
@@ -372,13 +366,149 @@ def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, 
     return out
 
 
-def analyse(trials: pd.DataFrame) -> dict[str, object]:
-    """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode, and
-    the per-network contrasts (the analysis used for inference) per mode under ``contrasts``, the
-    paper's two effects with ``p_holm`` (Holm over the two), and
-    the simple effects (``simple_effects``) under ``simple``."""
+#: The three readings of the paper's measure, as the keys of ``anova.json`` and the columns of
+#: the trial tables they test: the all-trials RMSE the paper reports (``contrasts``), the
+#: wrong-grip rate (``errors``: the trial ended nearer the other grip), and the correct-trial
+#: RMSE (``correct_rt``: the reaction-time analogue, as people's reaction times are measured on
+#: correct responses with errors reported apart).
+OUTCOMES = {"contrasts": "rmse", "errors": "wrong_grip", "correct_rt": "rmse_correct"}
+
+#: The family of every test of a run that the config does not declare confirmatory, per mode.
+EXPLORATION = "exploration: {mode}"
+#: The confirmatory family's name (config ``confirmatory``).
+CONFIRMATORY = "confirmatory"
+
+
+def with_outcomes(trials: pd.DataFrame) -> pd.DataFrame:
+    """``trials`` with ``wrong_grip`` (1.0 where the final posture is nearer the other grip: the
+    measures' table has it, the trial table's ``final_grip`` and ``target_grip`` give it) and
+    ``rmse_correct`` (the trial's RMSE where its grip was right, else NaN: no reaction time)."""
+    out = trials.copy()
+    if "wrong_grip" not in out:
+        out["wrong_grip"] = (out["final_grip"] != out["target_grip"]).astype(float)
+    out["rmse_correct"] = out["rmse"].where(out["wrong_grip"].astype(float) == 0)
+    return out
+
+
+def cell_counts(df: pd.DataFrame, depvar: str) -> dict[str, int]:
+    """Per congruency x size cell, the networks with at least one defined ``depvar`` there."""
+    defined = df.dropna(subset=[depvar])
+    return {
+        f"{c}_{s}": int(defined[(defined["congruency"] == c) & (defined["size"] == s)][
+            "network"].nunique())
+        for c in ("congruent", "incongruent")
+        for s in ("large", "small")
+    }  # fmt: skip
+
+
+def within_network_fit(df: pd.DataFrame, depvar: str) -> dict[str, dict[str, float]]:
+    """The within-network effects (``WITHIN`` and each one's difference between mappings) of a
+    measure that a network may lack in some cells: the correct-trial RMSE, where a network that
+    always took the wrong grip on an object has no correct trial of it. Each network x object
+    with a defined value is one observation (its mean over its defined trials); a least-squares
+    model with an intercept per network (which absorbs the network's speed and its mapping) and
+    the coded within terms; t with the residual degrees of freedom (observations - rank). No
+    network is dropped: one with a missing cell still informs the terms its other cells reach.
+    With every cell present the estimates equal ``network_contrasts``' (the tests pool the
+    three contrasts' error, as a repeated-measures ANOVA does). A term the observations do not
+    identify has NaN statistics. ``cells`` counts the networks per cell."""
+    data = network_object_means(df.dropna(subset=[depvar]), depvar).dropna(subset=[depvar])
+    data = coded(data)
+    names = ["congruency", "size", "congruency:size"]
+    both = data["mapping"].nunique() == 2
+    c, s, m = (data[k].to_numpy(dtype=float) for k in ("congruency", "size", "mapping"))
+    columns = [c, s, c * s] + ([c * m, s * m, c * s * m] if both else [])
+    names += [f"{n}:mapping" for n in names] if both else []
+    networks = sorted(data["network"].unique())
+    dummies = [(data["network"].to_numpy() == n).astype(float) for n in networks]
+    X = np.column_stack(dummies + columns) if len(data) else np.zeros((0, len(networks) + 3))
+    y = data[depvar].to_numpy(dtype=float)
+    rank = int(np.linalg.matrix_rank(X)) if len(data) else 0
+    dof = len(y) - rank
+    beta = np.linalg.lstsq(X, y, rcond=None)[0] if len(data) else np.zeros(X.shape[1])
+    resid = y - X @ beta
+    s2 = float(resid @ resid / dof) if dof > 0 else float("nan")
+    cov = s2 * np.linalg.pinv(X.T @ X)
+    tol = 1e-12 * max(1.0, float(np.abs(y).max()) if len(y) else 1.0)
+    if dof > 0 and np.allclose(resid, 0, atol=tol):
+        cov = np.zeros_like(cov)  # every network's contrasts the same: no variance
+    out = {}
+    nan = float("nan")
+    for j, name in enumerate(names, start=len(networks)):
+        without = np.delete(X, j, axis=1)
+        identified = len(data) > 0 and int(np.linalg.matrix_rank(without)) < rank
+        if identified:
+            term = t_term(beta[j], np.sqrt(max(cov[j, j], 0.0)), dof)
+        else:
+            term = {k: nan for k in ("estimate", "se", "t", "ci_low", "ci_high", "p")}
+            term["df"] = float(dof)
+        out[name] = term | {"networks": len(networks), "observations": int(len(y))}
+    cells = cell_counts(df, depvar)
+    return {name: term | {"cells": cells} for name, term in out.items()}
+
+
+def outcome_tests(df: pd.DataFrame, outcome: str) -> dict[str, dict[str, float]]:
+    """One mode's tests of one of ``OUTCOMES``: the per-network contrasts (every term of
+    ``TERMS``) for the all-trials RMSE; the within terms for the wrong-grip rate (every network
+    has every cell: per-network contrasts) and for the correct-trial RMSE (a network may lack a
+    cell: ``within_network_fit``)."""
+    depvar = OUTCOMES[outcome]
+    if outcome == "contrasts":
+        return network_contrasts(df, depvar)
+    if outcome == "errors":
+        tests = network_contrasts(df, depvar)
+        return {t: tests[t] | {"cells": cell_counts(df, depvar)} for t in WITHIN}
+    fit = within_network_fit(df, depvar)
+    return {t: fit[t] for t in WITHIN}
+
+
+def confirmatory_keys(confirmatory) -> set[tuple[str, str, str]]:
+    """The config's confirmatory tests (``confirmatory.tests``: mode, measure, effect) as
+    (mode, outcome key of ``OUTCOMES``, term) triples; an unknown measure or effect is refused."""
+    by_measure = {measure: key for key, measure in OUTCOMES.items()}
+    keys = set()
+    for test in confirmatory:
+        if test["measure"] not in by_measure:
+            raise ValueError(
+                f"confirmatory test {dict(test)}: measure must be one of {sorted(by_measure)}"
+            )
+        if test["effect"] not in WITHIN or test["mode"] not in MODES:
+            raise ValueError(
+                f"confirmatory test {dict(test)}: effect must be one of {list(WITHIN)}, "
+                f"mode one of {list(MODES)}"
+            )
+        keys.add((test["mode"], by_measure[test["measure"]], test["effect"]))
+    return keys
+
+
+def adjust_families(tests: list[tuple[str, dict]]) -> None:
+    """Holm's adjustment within each family: every test ``(family, term)`` gets ``family``,
+    ``family_size`` (its tests with a defined p) and ``p_holm`` (adjusted within it)."""
+    families: dict[str, list[dict]] = {}
+    for family, term in tests:
+        families.setdefault(family, []).append(term)
+    for family, terms in families.items():
+        adjusted = holm([t["p"] for t in terms])
+        size = int(np.isfinite([t["p"] for t in terms]).sum())
+        for term, p in zip(terms, adjusted, strict=True):
+            term |= {"family": family, "family_size": size, "p_holm": float(p)}
+
+
+def analyse(trials: pd.DataFrame, confirmatory=(), run: str | None = None) -> dict[str, object]:
+    """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode;
+    the tests of the paper's measure and its two parts (``OUTCOMES``): the all-trials RMSE's
+    per-network contrasts under ``contrasts`` (the analysis used for inference), and per mode
+    ``errors`` (wrong-grip rate) and ``correct_rt`` (correct-trial RMSE); the simple effects
+    (``simple_effects``) under ``simple``. Every test names its ``family`` and its ``p_holm``
+    within it: the tests ``confirmatory`` declares (config ``confirmatory.tests``; none for a
+    run other than the config's own) are one family, every other test of a mode is that mode's
+    exploration (``EXPLORATION``, named with ``run`` where it is given: another run's families
+    are its own)."""
     result: dict[str, object] = {}
     contrasts, simple = {}, {}
+    declared = confirmatory_keys(confirmatory)
+    trials = with_outcomes(trials)
+    family: list[tuple[str, dict]] = []
     for mode in MODES:
         df = categorisation_trials(trials, mode)
         result[mode] = {
@@ -388,17 +518,24 @@ def analyse(trials: pd.DataFrame) -> dict[str, object]:
             "repeated_measures": repeated_measures_anova(df),
             "means": cell_means(df),
             "wrong_grip_rate": wrong_grip_rates(df),
+            # NaN where no network has a correct trial in the cell
+            "means_correct": dict.fromkeys(cell_means(df), float("nan"))
+            | cell_means(df.dropna(subset=["rmse_correct"]), "rmse_correct"),
         }
-        contrasts[mode] = network_contrasts(df)
-        # the paper's two hypotheses are one family (per test mode): Holm over them
-        # and every term of the mode's table together, for a sentence that reads other terms
-        table = holm([contrasts[mode][t]["p"] for t in TERMS])
-        for term, p in zip(TERMS, table, strict=True):
-            contrasts[mode][term]["p_table"] = float(p)
-        adjusted = holm([contrasts[mode][t]["p"] for t in PAPER_EFFECTS])
-        for term, p in zip(PAPER_EFFECTS, adjusted, strict=True):
-            contrasts[mode][term]["p_holm"] = float(p)
+        contrasts[mode] = outcome_tests(df, "contrasts")
+        for outcome in ("errors", "correct_rt"):
+            result[mode][outcome] = outcome_tests(df, outcome)
         simple[mode] = simple_effects(df)
+        explore = EXPLORATION.format(mode=mode.replace("_", " "))
+        if run is not None:
+            explore = explore.replace("exploration: ", f"exploration: run {run}, ")
+        for outcome in OUTCOMES:
+            tests = contrasts[mode] if outcome == "contrasts" else result[mode][outcome]
+            for term, test in tests.items():
+                declared_here = (mode, outcome, term) in declared
+                family.append((CONFIRMATORY if declared_here else explore, test))
+        family += [(explore, test) for test in simple[mode].values()]
+    adjust_families(family)
     result["contrasts"] = contrasts
     result["simple"] = simple
     return result

@@ -308,8 +308,41 @@ def network_seed(seed: int, network: int) -> int:
     return int(np.random.SeedSequence([seed, 1000 + network]).generate_state(1)[0])
 
 
-def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
-    """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle."""
+#: What the networks learn of the two grips' distance (config ``grip_distance``): the
+#: demonstrations as made, or each object's grips moved apart or together to one distance.
+GRIP_DISTANCES = ("natural", "equal")
+
+
+def final_grip_distances(postures: np.ndarray) -> np.ndarray:
+    """Per object, the mean over sequences of the distance (over the 16 DoF, 0-1 units) between
+    the two grips' final postures; ``postures`` (object, grip, sequence, step, DoF)."""
+    final = postures[:, :, :, -1]
+    return np.linalg.norm(final[:, 0] - final[:, 1], axis=-1).mean(axis=1)
+
+
+def equal_grip_distance(postures: np.ndarray, scale: np.ndarray | None = None) -> np.ndarray:
+    """The demonstrations with every object's two grips at one final distance, the four objects'
+    mean: at every step the two grips' postures are moved apart or together about their
+    midpoint by the object's factor (mean distance / the object's, from ``postures`` unless
+    ``scale`` gives them), then held within the joints' ranges (0-1). With four objects a large
+    object's grips lie further apart than a small one's, so object size and the grips' distance
+    go together; equal distances take the distance away and leave the size. Step 0, common to
+    both grips, does not move."""
+    postures = np.asarray(postures, dtype=float)
+    if scale is None:
+        distances = final_grip_distances(postures)
+        scale = distances.mean() / distances
+    mid = postures.mean(axis=1, keepdims=True)
+    factor = np.asarray(scale, dtype=float)[:, None, None, None, None]
+    return np.clip(mid + factor * (postures - mid), 0.0, 1.0)
+
+
+def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natural") -> Materials:
+    """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle;
+    with ``grip_distance`` "equal", the demonstrations (and the servo targets, by the same
+    factors) with every object's grips at one distance (``equal_grip_distance``)."""
+    if grip_distance not in GRIP_DISTANCES:
+        raise ValueError(f"grip_distance must be one of {GRIP_DISTANCES}, not {grip_distance!r}")
     from .io import load_npz
 
     demos = load_npz(demos_path, required=("angles", "commands_deg", "objects", "grips"))
@@ -321,13 +354,19 @@ def load_materials(visual_maps_path, soms_path, demos_path) -> Materials:
             f"{soms_path} and {demos_path} list different objects: delete both and rerun "
             "`snakemake -c2`."
         )
+    angles = demos["angles"]
+    # a servo target may lie beyond a joint's range (pressing against the stop); the sigmoid
+    # outputs cannot, so they learn the range's end
+    commands = np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0)
+    if grip_distance == "equal":
+        distances = final_grip_distances(angles)
+        scale = distances.mean() / distances
+        angles, commands = (equal_grip_distance(a, scale) for a in (angles, commands))
     return Materials(
         objects=objects,
         grips=tuple(demos["grips"].tolist()),
         visual=np.array([maps[o].ravel() for o in objects], dtype=float),
         goal=soms["goal_act"].reshape(len(objects), len(TASKS), -1),
-        demos=demos["angles"],
-        # a servo target may lie beyond a joint's range (pressing against the stop); the
-        # sigmoid outputs cannot, so they learn the range's end
-        commands=np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0),
+        demos=angles,
+        commands=commands,
     )

@@ -263,13 +263,21 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
         )
     yield from _confirmation_problems(config, listed, key)
     study = config["size_dose"]
-    needed = max(study["replications"], study["robustness_replications"]) - 1
-    if len([seed for seed in study["seeds"] if seed != config["seed"]]) < needed:
+    needed = max(study["replications"], study["robustness_replications"])
+    if len(study["seeds"]) < needed:
         yield (
-            f"{key('size_dose.seeds')}: {len(study['seeds'])} seeds for "
-            f"{needed + 1} replications (the first at `seed`, which the list may not repeat). "
-            f"Allowed: at least {needed} other seeds. Fix: add seeds or lower "
-            "size_dose.replications / robustness_replications."
+            f"{key('size_dose.seeds')}: {len(study['seeds'])} seeds for {needed} replications "
+            f"(each replication takes the next seed of the list). Allowed: at least {needed} "
+            "seeds. Fix: add seeds or lower size_dose.replications / robustness_replications."
+        )
+    run = {"removed": study["removal"], "equal_grips": study["equal_grips"]}
+    studied = [float(d) for d in study["doses"]] + [c for c, on in run.items() if on]
+    missing = [d for d in study["declared"]["doses"] if d not in studied]
+    if missing:
+        yield (
+            f"{key('size_dose.declared.doses')}: {missing} are not run by the study. Allowed: "
+            f"{studied} (size_dose.doses, and removed or equal_grips where switched on). Fix: "
+            "declare only what the study runs, or add the dose."
         )
     if 0 not in robot["tolerance"]["noise"]:
         yield (

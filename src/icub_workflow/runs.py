@@ -346,18 +346,28 @@ def _confirmation(
 
 def _size_dose(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
     """The dose study (config ``size_dose``): every dose under every cue timing, replicated at the
-    config's seed and the first of ``size_dose.seeds``; and, with ``removal``, the control with
-    no size in the input. A dose is the Object and Goal maps' width per sqrt(edge cell), the Goal
-    map growing, the clusters kept whole."""
+    first seeds of ``size_dose.seeds`` (its own: seeds whose runs no earlier analysis read, so
+    its declared tests are read on fresh data); and, with ``removal``, the control with no size
+    in the input; with ``equal_grips``, the control at dose 0 whose networks learn every object's
+    grips at one distance (config ``grip_distance``). A dose is the Object and Goal maps' width
+    per sqrt(edge cell), the Goal map growing, the clusters kept whole."""
     study = config["size_dose"]
     count = study["robustness_replications" if config["robustness"] else "replications"]
-    seeds = [config["seed"], *(s for s in study["seeds"] if s != config["seed"])][:count]
-    doses: list[Any] = [*study["doses"], *(["removed"] if study["removal"] else [])]
+    seeds = list(study["seeds"][:count])
+    doses: list[Any] = [
+        *study["doses"],
+        *(["removed"] if study["removal"] else []),
+        *(["equal_grips"] if study["equal_grips"] else []),
+    ]
+    no_size = {"object_width_per_edge": 0.0, "goal_response": "grows", "keep_whole": True}
     table = []
     for cue, dose, seed in itertools.product(study["categorisation_cue"], doses, seeds):
         if dose == "removed":
             overrides: dict[str, Any] = {"size_free_input": True}
             name = f"size_removed_{cue}"
+        elif dose == "equal_grips":  # dose 0's maps, every object's grips at one distance
+            overrides = {"soms": no_size, "grip_distance": "equal"}
+            name = f"size_equalgrips_{cue}"
         else:
             grows = {"object_width_per_edge": dose, "goal_response": "grows", "keep_whole": True}
             overrides = {"soms": grows}

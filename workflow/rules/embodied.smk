@@ -15,6 +15,7 @@ rule embodied:
         states="data/{folder}embodied/net{net}/states.npz",
     params:
         network=run_section("network"),
+        grip_distance=run_section("grip_distance"),
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
     wildcard_constraints:
@@ -256,6 +257,7 @@ rule robot_animation:
         categorise="data/figures/robot_categorise.gif",
     params:
         network=settings(PLAN.config(ANIMATED_RUN)["network"]),
+        grip_distance=PLAN.config(ANIMATED_RUN)["grip_distance"],
         networks=[int(net) for net in EMBODIED_FILM_NETWORKS],
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),

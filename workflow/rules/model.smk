@@ -80,6 +80,7 @@ rule train:
         weights="data/{folder}train/net{net}/weights.npz",
     params:
         network=run_section("network"),
+        grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     threads: 1
     wildcard_constraints:
@@ -109,6 +110,7 @@ rule evaluate:
         hidden="data/{folder}eval/hidden.npz",
     params:
         network=run_section("network"),
+        grip_distance=run_section("grip_distance"),
     threads: 1
     resources:
         mem_mb=1000,
@@ -129,6 +131,11 @@ rule stats:
     output:
         json="data/{folder}eval/anova.json",
         table="data/{folder}eval/anova_table.md",
+    params:
+        # the confirmatory family is the config's own run's alone
+        confirmatory=lambda w: settings(config["confirmatory"]) if run_of(w) == OWN else [],
+        # another run's exploration families carry its name (the own run's none)
+        run=lambda w: None if run_of(w) == OWN else run_of(w),
     threads: 1
     resources:
         mem_mb=500,

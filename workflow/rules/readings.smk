@@ -18,6 +18,7 @@ rule measures:
         json="data/{folder}eval/measures.json",
     params:
         network=run_section("network"),
+        grip_distance=run_section("grip_distance"),
         measures=config["readings"]["measures"],
     wildcard_constraints:
         folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_RUNS]),
@@ -42,6 +43,7 @@ for _group, _runs in MEASURED_GROUPS.items():
         {
             "run": run,
             "network": settings(PLAN.config(run)["network"]),
+            "grip_distance": PLAN.config(run)["grip_distance"],
             "seed": PLAN.config(run)["seed"],
             **model_inputs({"folder": PLAN.folder(run)}),
             "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)

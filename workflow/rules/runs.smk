@@ -53,6 +53,7 @@ rule run_phase1:
         folder=folders_pattern(PHASE1_RUNS),
     params:
         network=run_section("network"),
+        grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     threads: 1
     priority: 3  # the build's longest chain: phase 1, three trainings, their robot tests

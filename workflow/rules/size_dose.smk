@@ -27,9 +27,10 @@ rule size_free_maps:
 
 rule size_dose:
     """The dose-response of the size effect: per dose, cue timing and measure, the effect over
-    whole replications with the manipulation check's ratios; its slope on the dose per cue
-    timing and measure; and, per dose and without size, whether the demonstrations' geometry
-    accounts for each object's error."""
+    whole replications with the manipulation check's ratios and the delivered dose; its slope on
+    the nominal and on the delivered dose per cue timing and measure; the design's power to
+    detect a size effect at dose 0; and, per dose and without size, whether the demonstrations'
+    geometry accounts for each object's error."""
     input:
         measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose],
         soms=[
@@ -45,6 +46,8 @@ rule size_dose:
     output:
         summary="data/size_dose/summary.csv",
         slope="data/size_dose/slope.csv",
+        power="data/size_dose/power.csv",
+        grips="data/size_dose/grip_distance.csv",
         replications="data/size_dose/replications.csv",
         manipulation="data/size_dose/manipulation.csv",
         geometry="data/size_dose/geometry.csv",
@@ -52,6 +55,7 @@ rule size_dose:
     params:
         table=PLAN.size_dose,
         measures=config["readings"]["measures"],
+        declared=settings(config["size_dose"]["declared"]),
     threads: 1
     resources:
         mem_mb=1000,

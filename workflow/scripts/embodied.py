@@ -25,7 +25,12 @@ with redirect_log(snakemake.log[0]):
         nets = list(range(first, first + settings["networks"]))
     if not len(nets) == len(weights_files) == len(trials_files) == len(states_files):
         raise ValueError(f"networks {nets}, but {len(weights_files)} weights files")
-    materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
+    materials = load_materials(
+        snakemake.input.maps,
+        snakemake.input.soms,
+        snakemake.input.demos,
+        snakemake.params.grip_distance,
+    )
     robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     for net, weights_path, trials_path, states_path in zip(
         nets, weights_files, trials_files, states_files, strict=True

@@ -23,7 +23,12 @@ def as_list(paths):
 
 
 with redirect_log(snakemake.log[0]):
-    m = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
+    m = load_materials(
+        snakemake.input.maps,
+        snakemake.input.soms,
+        snakemake.input.demos,
+        snakemake.params.grip_distance,
+    )
     films = filmed_networks(
         m,
         snakemake.params.network,

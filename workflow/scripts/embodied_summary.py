@@ -1,7 +1,9 @@
 """Join every tested variant's robot trials (every test sequence a row, as the robot test wrote
 them); the config's own networks' success by condition and congruency effect; each variant's
-success and contact time, and their effects: the summaries count each network x object x task
-once (``embodied_stats.distinct_trials``)."""
+success and contact time, and their effects (effects.json: congruency, size and their
+interaction, with the counts per cell and per object and one Holm family over every variant's
+tests): the summaries count each network x object x task once
+(``embodied_stats.distinct_trials``)."""
 
 import json
 

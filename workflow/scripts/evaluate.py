@@ -9,7 +9,12 @@ from icub_affordance.jordan import Weights
 from icub_affordance.train import load_materials, mapping_of
 
 with redirect_log(snakemake.log[0]):
-    materials = load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos)
+    materials = load_materials(
+        snakemake.input.maps,
+        snakemake.input.soms,
+        snakemake.input.demos,
+        snakemake.params.grip_distance,
+    )
     n_networks = snakemake.params.network["networks"]
     cue = snakemake.params.network["categorisation_cue"]
     target = snakemake.params.network["target"]

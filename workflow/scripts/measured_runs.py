@@ -13,7 +13,7 @@ with redirect_log(snakemake.log[0]):
             make_soms(
                 run["maps"], snakemake.params.objects, run["som_settings"], run["seed"], run["soms"]
             )
-        materials = load_materials(run["maps"], run["soms"], run["demos"])
+        materials = load_materials(run["maps"], run["soms"], run["demos"], run["grip_distance"])
         train_networks(materials, run["network"], run["seed"], None, run["curves"], run["weights"])
         measure_networks(
             materials,

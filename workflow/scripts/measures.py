@@ -7,7 +7,12 @@ from icub_workflow.steps import measure_networks
 
 with redirect_log(snakemake.log[0]):
     measure_networks(
-        load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos),
+        load_materials(
+            snakemake.input.maps,
+            snakemake.input.soms,
+            snakemake.input.demos,
+            snakemake.params.grip_distance,
+        ),
         snakemake.params.network,
         list(snakemake.input.weights),
         snakemake.params.measures,

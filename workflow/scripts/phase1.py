@@ -6,7 +6,12 @@ from icub_workflow.steps import train_phase1s
 
 with redirect_log(snakemake.log[0]):
     train_phase1s(
-        load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos),
+        load_materials(
+            snakemake.input.maps,
+            snakemake.input.soms,
+            snakemake.input.demos,
+            snakemake.params.grip_distance,
+        ),
         snakemake.params.network,
         snakemake.params.seed,
         list(snakemake.output),

@@ -4,12 +4,13 @@ import pandas as pd
 
 from icub_affordance.figures import dose_response
 from icub_affordance.io import redirect_log
+from icub_affordance.size_dose import dose_value
 
 
 def read(path: str) -> pd.DataFrame:
-    """A study table, its doses as numbers but the removal control's "removed"."""
+    """A study table, its doses as numbers but the controls' names."""
     frame = pd.read_csv(path)
-    frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
+    frame["dose"] = [dose_value(d) for d in frame["dose"].astype(str)]
     return frame
 
 

@@ -15,7 +15,12 @@ def as_list(paths):
 with redirect_log(snakemake.log[0]):
     nets = [int(snakemake.wildcards.net)] if "net" in snakemake.wildcards.keys() else None
     train_networks(
-        load_materials(snakemake.input.maps, snakemake.input.soms, snakemake.input.demos),
+        load_materials(
+            snakemake.input.maps,
+            snakemake.input.soms,
+            snakemake.input.demos,
+            snakemake.params.grip_distance,
+        ),
         snakemake.params.network,
         snakemake.params.seed,
         nets,

@@ -18,18 +18,25 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied_stats import FACTOR_LEVELS
+from icub_affordance.embodied_stats import FACTOR_LEVELS, INTERACTION
 from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
 from icub_affordance.robot_statistics import record_table
-from icub_affordance.size_dose import ranked_like_size
+from icub_affordance.size_dose import FAMILY_DECLARED, dose_value, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
-from icub_affordance.stats import TERMS
+from icub_affordance.stats import TERMS, WITHIN
 from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
 from icub_workflow.runs import OWN
 
 from . import text
+
+#: The three readings of the paper's measure (``stats.OUTCOMES``), as the tables name them.
+OUTCOME_LABELS = {
+    "contrasts": "RMSE, all trials",
+    "errors": "wrong-grip rate",
+    "correct_rt": "RMSE, correct trials",
+}
 
 ANALYSES = (("two_way", "two-way (trials)"), ("repeated_measures", "repeated measures (networks)"))
 
@@ -78,21 +85,34 @@ def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
 
 
 def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
-    """The per-network contrasts of one test mode, one row per term (results page)."""
+    """Every test of one test mode, one row per measure and term (results page): the all-trials
+    RMSE's per-network contrasts and simple effects, the wrong-grip rate's and the correct-trial
+    RMSE's within terms; each with its family and its p adjusted within it (the families are
+    whole across the two modes' tables)."""
+    rmse = OUTCOME_LABELS["contrasts"]
+    sources = (
+        [(rmse, anova["contrasts"][mode][t], text.term_name(t)) for t in TERMS]
+        + [
+            (OUTCOME_LABELS[o], anova[mode][o][t], text.term_name(t))
+            for o in ("errors", "correct_rt")
+            for t in WITHIN
+        ]
+        + [(rmse, term, text.simple_name(name)) for name, term in anova["simple"][mode].items()]
+    )
     return pd.DataFrame(
         [
             {
-                "term": term.replace(":", " × "),
-                "estimate": anova["contrasts"][mode][term]["estimate"],
-                "95% interval": text.fmt_ci(anova["contrasts"][mode][term]),
-                "t": anova["contrasts"][mode][term]["t"],
-                "df": anova["contrasts"][mode][term]["df"],
-                "p": anova["contrasts"][mode][term]["p"],
-                "p (Holm, the paper's two effects)": anova["contrasts"][mode][term].get(
-                    "p_holm", float("nan")
-                ),
+                "measure": label,
+                "term": name,
+                "estimate": test["estimate"],
+                "95% interval": text.fmt_ci(test),
+                "t": test["t"],
+                "df": test["df"],
+                "p": test["p"],
+                "family": test["family"],
+                "p (Holm, within its family)": test["p_holm"],
             }
-            for term in TERMS
+            for label, test, name in sources
         ]
     )
 
@@ -189,38 +209,74 @@ def _term_values(prefix: str, term: dict) -> dict:
     return {f"{prefix}_estimate": term["estimate"], f"{prefix}_p": term["p"]}
 
 
+def headline(anova: dict) -> pd.DataFrame:
+    """The front page's table: the paper's two effects (closed loop) on the paper's measure and
+    its two parts, each with its test, its family, its p adjusted within it and a verdict word
+    (``text.verdict_word``)."""
+    closed = anova["closed_loop"]
+    sources = {"contrasts": anova["contrasts"]["closed_loop"]} | {
+        o: closed[o] for o in ("errors", "correct_rt")
+    }
+    rows = []
+    for outcome, tests in sources.items():
+        for effect in ("congruency", "size", "congruency:size"):
+            term = tests[effect]
+            rows.append(
+                {
+                    "measure": OUTCOME_LABELS[outcome],
+                    "effect": text.term_name(effect),
+                    "estimate [95% interval]": f"{term['estimate']:+.4f} {text.fmt_ci(term)}",
+                    "df": term["df"],
+                    "p": term["p"],
+                    "family": term["family"],
+                    "Holm p": term["p_holm"],
+                    "verdict": text.claim_verdict(term, outcome, effect),
+                }
+            )
+    return pd.DataFrame(rows)
+
+
 def intro(anova: dict) -> dict:
     closed = anova["closed_loop"]
     means, contrasts = closed["means"], anova["contrasts"]["closed_loop"]
-    cong = science.contrast_verdict(contrasts, "congruency")
-    size = science.contrast_verdict(contrasts, "size")
-    return (
-        {
-            "n_networks": closed["n_networks"],
-            "cong": means["congruent"],
-            "incong": means["incongruent"],
-            "large": means["large"],
-            "small": means["small"],
-            "cong_stats": text.fmt_term(contrasts["congruency"]),
-            "size_stats": text.fmt_term(contrasts["size"]),
-            "cong_dir": text.Claim(
-                text.lower_or_higher(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
-            ),
-            "size_dir": text.Claim(
-                text.lower_or_higher(size), ("intro.size_estimate", "intro.size_p_holm")
-            ),
-            "cong_verdict": text.Claim(
-                text.paper_agreement(cong), ("intro.congruency_estimate", "intro.congruency_p_holm")
-            ),
-            "size_verdict": text.Claim(
-                text.paper_agreement(size), ("intro.size_estimate", "intro.size_p_holm")
-            ),
-            "congruency_p_holm": contrasts["congruency"]["p_holm"],
-            "size_p_holm": contrasts["size"]["p_holm"],
-        }
-        | _term_values("congruency", contrasts["congruency"])
-        | _term_values("size", contrasts["size"])
+    wrong = science.wrong_grip_by_congruency(closed["wrong_grip_rate"])
+    out = {
+        "n_networks": closed["n_networks"],
+        "cong": means["congruent"],
+        "incong": means["incongruent"],
+        "large": means["large"],
+        "small": means["small"],
+        "family_size": contrasts["congruency"]["family_size"],
+        "wrong_congruent": wrong["congruent"],
+        "wrong_incongruent": wrong["incongruent"],
+    }
+    for effect in ("congruency", "size"):
+        for prefix, term in (
+            ("", contrasts[effect]),
+            ("errors_", closed["errors"][effect]),
+            ("rt_", closed["correct_rt"][effect]),
+        ):
+            out |= _term_values(f"{prefix}{effect}", term)
+            out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
+            keys = (f"intro.{prefix}{effect}_estimate", f"intro.{prefix}{effect}_p_holm")
+            out[f"{prefix}{effect}_verdict"] = text.Claim(text.verdict_word(term), keys)
+            out[f"{prefix}{effect}_stats"] = text.fmt_term(term)
+    out["rt_sentence"] = text.Claim(
+        text.rt_phrase("congruency", closed["correct_rt"]["congruency"]),
+        ("intro.rt_congruency_estimate", "intro.rt_congruency_p_holm"),
     )
+    grip = closed["correct_rt"]["congruency:size"]
+    out |= {"rt_grip_estimate": grip["estimate"], "rt_grip_p_holm": grip["p_holm"]}
+    out["rt_grip_sentence"] = text.Claim(
+        text.required_grip_phrase(grip), ("intro.rt_grip_estimate", "intro.rt_grip_p_holm")
+    )
+    out["errors_sentence"] = text.Claim(
+        text.error_phrase(
+            "congruency", closed["errors"]["congruency"], (wrong["congruent"], wrong["incongruent"])
+        ),
+        ("intro.errors_congruency_estimate", "intro.errors_congruency_p_holm"),
+    )
+    return out
 
 
 def results(anova: dict, curve: dict, cue: str) -> dict:
@@ -245,13 +301,17 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
         for term, r in contrasts.items():
             out[f"{mode}_contrast_{term.replace(':', '_x_')}"] = text.fmt_term(r)
         interaction = contrasts["congruency:size"]
-        out[f"{mode}_interaction_p"] = interaction["p"]
+        out[f"{mode}_interaction_p"] = interaction["p_holm"]
+        for key, value in m["means_correct"].items():
+            out[f"{mode}_correct_{key}"] = value
         for effect, short in (("congruency", "cong"), ("size", "size")):
             out |= _term_values(f"{mode}_{effect}", contrasts[effect])
             out[f"{mode}_{effect}_p_holm"] = contrasts[effect]["p_holm"]
             out[f"{mode}_{short}_sentence"] = text.Claim(
                 text.results_sentence(
-                    effect, science.contrast_verdict(contrasts, effect), interaction["p"] < 0.05
+                    effect,
+                    science.contrast_verdict(contrasts, effect),
+                    interaction["p_holm"] < science.ALPHA,
                 ),
                 (
                     f"results.{mode}_{effect}_estimate",
@@ -266,43 +326,31 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
     return out
 
 
-def with_readings_family(anova: dict, summary: pd.DataFrame, config: dict) -> dict:
-    """``anova`` with its closed-loop congruency and size tests Holm-adjusted over the readings'
-    whole family (``data/readings/summary.csv``): the run is one reading among equals, so its
-    test of an effect is one of the family's and gets the family's verdict, not a second one
-    from a smaller family. Unchanged where the run is no reading of that table."""
-    rows = summary[
-        (summary["cue"] == config["network"]["categorisation_cue"])
-        & (summary["goal_response"] == config["soms"]["goal_response"])
-        & (summary["measure"] == "rmse")
-    ].set_index("effect")
-    family = int(summary["p_holm"].notna().sum())
-    out = json.loads(json.dumps(anova))  # a copy
-    for effect in ("congruency", "size"):
-        if effect in rows.index and np.isfinite(rows.loc[effect, "p_holm"]):
-            term = out["contrasts"]["closed_loop"][effect]
-            term["p_holm"] = float(rows.loc[effect, "p_holm"])
-            term["holm_family"] = f"over the readings' {family} tests"
-    return out
-
-
 def discussion(anova: dict, demos: dict, cue: str) -> dict:
     """The discussion's paragraphs, each a claim on this page's numbers, in ``order``."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
     simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
-    wrong = science.wrong_grip_by_congruency(anova["closed_loop"]["wrong_grip_rate"])
+    loop = anova["closed_loop"]
+    wrong = science.wrong_grip_by_congruency(loop["wrong_grip_rate"])
     out = (
         {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"]}
-        | _term_values("congruency", closed["congruency"])
-        | _term_values("size", closed["size"])
         | {"forced_size_estimate": forced["size"]["estimate"]}
-        | {"forced_size_p_table": forced["size"]["p_table"]}
+        | {"forced_size_p_holm": forced["size"]["p_holm"]}
         | {"forced_interaction_estimate": forced["congruency:size"]["estimate"]}
-        | {"forced_interaction_p_table": forced["congruency:size"]["p_table"]}
-        | {"wrong_congruent": wrong["congruent"], "wrong_incongruent": wrong["incongruent"]}
-        | {f"{e}_p_holm": closed[e]["p_holm"] for e in ("congruency", "size")}
+        | {"forced_interaction_p_holm": forced["congruency:size"]["p_holm"]}
+        | {f"wrong_{k}": v for k, v in wrong.items()}
     )
+    for effect in ("congruency", "size"):
+        for prefix, term in (
+            ("", closed[effect]),
+            ("errors_", loop["errors"][effect]),
+            ("rt_", loop["correct_rt"][effect]),
+        ):
+            out |= _term_values(f"{prefix}{effect}", term)
+            out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
+    grip = loop["correct_rt"]["congruency:size"]
+    out |= {"rt_grip_estimate": grip["estimate"], "rt_grip_p_holm": grip["p_holm"]}
     for name, term in simple.items():
         out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}
     for name, term in forced_simple.items():
@@ -312,10 +360,19 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         }
     paragraphs = {
         "congruency_text": text.discussion_congruency(
-            science.contrast_verdict(closed, "congruency"), wrong, cue
+            closed["congruency"],
+            loop["errors"]["congruency"],
+            loop["correct_rt"]["congruency"],
+            wrong,
+            cue,
         ),
         "size_text": text.discussion_size(
-            science.contrast_verdict(closed, "size"), simple, wrong, closed["size"]
+            closed["size"],
+            loop["errors"]["size"],
+            loop["correct_rt"]["size"],
+            simple,
+            wrong,
+            loop["correct_rt"]["congruency:size"],
         ),
         "forced_text": text.discussion_forced(forced, forced_simple),
         "readings_text": text.discussion_readings(cue),
@@ -332,7 +389,8 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
         first, second = science.PAPER_ORDER[name]
         lower = first if m[first] < m[second] else second
         return (
-            f"{lower} lower: {m[first]:.4f} vs {m[second]:.4f}; per-network contrast "
+            f"closed loop, {lower} lower: {first} {m[first]:.4f}, {second} {m[second]:.4f}; "
+            "per-network contrast "
             f"{text.fmt_term(anova['contrasts']['closed_loop'][name])}"
         )
 
@@ -361,7 +419,7 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
     ]
     return pd.DataFrame(
         [(quantity, PAPER[key], run) for quantity, key, run in rows],
-        columns=["quantity", "paper", "this run (closed loop)"],
+        columns=["quantity", "paper", "this run"],
     )
 
 
@@ -397,9 +455,13 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
         term = (err["contrasts"] or {}).get(effect)
         out[f"emb_final_error_{effect}_estimate"] = term["estimate"] if term else float("nan")
         out[f"emb_final_error_{effect}_p"] = term["p"] if term else float("nan")
+        out[f"emb_final_error_{effect}_p_holm"] = term["p_holm"] if term else float("nan")
         out[f"emb_final_error_{effect}"] = text.Claim(
             text.fmt_term(term) if term else "not estimable",
-            (f"beyond.emb_final_error_{effect}_estimate", f"beyond.emb_final_error_{effect}_p"),
+            (
+                f"beyond.emb_final_error_{effect}_estimate",
+                f"beyond.emb_final_error_{effect}_p_holm",
+            ),
         )
     # success: the per-network contrast, or the exact test over distinct trials without variance
     stats = science.robot_effect_statistics(own_effects["success"], "congruency")
@@ -420,7 +482,10 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
         "suc_diff": text.points_difference(suc["incongruent_minus_congruent"]),
         "emb_err_sentence": text.Claim(
             text.robot_error_sentence(err_verdict),
-            ("beyond.emb_final_error_congruency_estimate", "beyond.emb_final_error_congruency_p"),
+            (
+                "beyond.emb_final_error_congruency_estimate",
+                "beyond.emb_final_error_congruency_p_holm",
+            ),
         ),
         "emb_ceiling_sentence": text.Claim(
             "below" if robot["below_ceiling"] else "at or above",
@@ -446,11 +511,9 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
 def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
     """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
     emb = _json(inputs["embodied_analysis.json"])
-    # each run's verdicts are its reading's in the readings' whole family (as on the other pages)
-    summary = pd.read_csv(inputs["readings_summary.csv"])
-    other = {**config, "network": {**config["network"], "categorisation_cue": ablation_cue}}
-    main = with_readings_family(_json(inputs["anova.json"]), summary, config)
-    ablation = with_readings_family(_json(inputs["ablation_anova.json"]), summary, other)
+    # each run's tests in its own families (anova.json: the main run's confirmatory, the
+    # ablation's exploration)
+    main, ablation = _json(inputs["anova.json"]), _json(inputs["ablation_anova.json"])
     divergence = pd.read_csv(inputs["divergence.csv"])
     first_step = _json(inputs["divergence.json"])["first_divergent_step"]
     explained = pd.read_csv(inputs["hidden_explained.csv"])
@@ -505,6 +568,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     ]
     if len(row) == 1:
         difference["p_holm"] = float(row["p_holm"].iloc[0])
+        difference["family"] = str(row["family"].iloc[0]) if "family" in row else "readings"
     out |= _term_values("cue_difference", difference)
     out["cue_difference_p_holm"] = difference.get("p_holm", difference["p"])
     out |= {
@@ -633,11 +697,27 @@ def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
             f"the schedule were tried: the exploration), {label} holds the object in "
             f"{share('exploration')}"
         )
+        out[f"confirmation_design_effect_raw{suffix}"] = float(mine["design_effect_raw"])
+        entries["confirmation"].append(f"grasping.confirmation_design_effect_raw{suffix}")
+        misses = [
+            f"{o.replace('_', ' ')} ({m}) {int(mine[f'{m}_{o}_trials'] - mine[f'{m}_{o}_held'])} "
+            f"of {int(mine[f'{m}_{o}_trials'])}"
+            for m in confirmation_science.MAPPINGS
+            for o in confirmation_science.OBJECT_NAMES
+            if mine[f"{m}_{o}_held"] < mine[f"{m}_{o}_trials"]
+        ]
+        raw = float(mine["design_effect_raw"])
+        raw_design = (
+            f"the raw design effect, before the interval floors it at 1, {raw:.3f}"
+            if np.isfinite(raw)
+            else "no design effect: every trial or none was held, so there is no spread"
+        )
         said["confirmation"].append(
             f"on {v['confirmation', 'networks']} fresh networks ({networks('confirmation')}, "
             "never used to choose it; the same demonstrations and maps), "
             f"{'it' if len(explored) == 1 else label} holds the object in "
-            f"{share('confirmation')}: {said_bar[verdict]}"
+            f"{share('confirmation')}: {said_bar[verdict]} ({raw_design}; the trials it missed, "
+            f"per object and mapping: {'; '.join(misses) or 'none'})"
         )
     out["exploration_sentence"] = text.Claim(
         "Counted once per network and object, and with an interval that takes each network's "
@@ -686,9 +766,8 @@ def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
 
 
 def _level_counts(effect: dict, measure: str, factor: str) -> str:
-    """The two levels' distinct trials of one robot effect, the paper's faster level first:
-    "held in 19 of 24 distinct large trials and 15 of 24 small" (success), or the same with
-    "touched" (contact time)."""
+    """The two levels' distinct trials of one robot effect, the paper's faster level first, and
+    every congruency x size cell's beside them: an effect can come from one cell alone."""
     first, second = FACTOR_LEVELS[factor]
     a, b = effect[factor][first], effect[factor][second]
     if measure == "success":
@@ -696,7 +775,17 @@ def _level_counts(effect: dict, measure: str, factor: str) -> str:
     else:
         verb, x, y = "touched", a["n"], b["n"]
     return (
-        f"{verb} in {x} of {a['trials']} distinct {first} trials and {y} of {b['trials']} {second}"
+        f"{verb} in {x} of {a['trials']} distinct {first} trials and {y} of {b['trials']} "
+        f"{second}; per cell, {_cell_counts(effect, measure)}"
+    )
+
+
+def _cell_counts(effect: dict, measure: str) -> str:
+    """Each congruency x size cell's count of the measure over its distinct trials."""
+    counted = "held" if measure == "success" else "touched"
+    return ", ".join(
+        f"{name.replace('_', ' ')} {cell[counted]}/{cell['trials']}"
+        for name, cell in effect["cells"].items()
     )
 
 
@@ -725,29 +814,70 @@ def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
         numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}{_holm_words(test)}"
     if not verdict.significant:  # a direction is not claimed from a test that does not show it
         return f"not shown ({numbers})"
+    grip = effect["tests"][INTERACTION]
+    if grip["method"] == "contrasts" and grip["p_holm"] < science.ALPHA:
+        numbers += (
+            "; the congruency × size term is shown too, so this difference is an average over "
+            "cells that differ with the required grip, not an effect of every cell"
+        )
     return f"{text.paper_agreement(verdict)} ({numbers})"
+
+
+def _robot_interaction_text(effect: dict, measure: str) -> str:
+    """The congruency x size term of a robot measure: twice the required grip's difference
+    (power - precision), which has no paper direction; shown or not within its family."""
+    test = effect["tests"][INTERACTION]
+    cells = _cell_counts(effect, measure)
+    if test["method"] != "contrasts":
+        return f"not tested (per cell, {cells}; {test['reason']})"
+    shown = "shown" if test["p_holm"] < science.ALPHA else "not shown"
+    return (
+        f"{shown}: {test['estimate']:+.3f}, 95% interval {text.fmt_ci(test)}, "
+        f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}{_holm_words(test)} "
+        f"(per cell, {cells})"
+    )
+
+
+def _object_misses(effect: dict) -> str:
+    """The objects a variant did not hold in every categorisation trial, per mapping."""
+    misses = [
+        f"{name.replace('_', ' ')} {cell['trials'] - cell['held']} of {cell['trials']}"
+        for name, cell in effect["objects"].items()
+        if cell["held"] < cell["trials"]
+    ]
+    return "; ".join(misses) if misses else "none"
 
 
 def _holm_words(test: dict) -> str:
     if "p_holm" not in test:
         return ""
-    return f", Holm-adjusted over the robot's tests {text.fmt_p(test['p_holm'])}"
+    return f", {text.fmt_family(test)}"
 
 
 def _robot_effect_values(effects: dict, run: str, key: str, page: str = "grasping") -> dict:
     """For one variant (``key``: own or best) each robot effect's sentence, a ``text.Claim``
-    resting on its difference and p, which are stored beside it."""
+    resting on its difference and p, which are stored beside it; the required-grip term and the
+    misses per object beside them."""
     out: dict[str, object] = {}
     for measure in ("success", "contact_time"):
+        effect = effects[run][measure]
         for factor in FACTOR_LEVELS:
             name = f"{key}_{measure}_{factor}"
-            effect = effects[run][measure]
             stats = science.robot_effect_statistics(effect, factor)
             out[f"{name}_estimate"], out[f"{name}_p"] = stats["estimate"], stats["p"]
             out[name] = text.Claim(
                 _robot_effect_text(effect, measure, factor),
                 (f"{page}.{name}_estimate", f"{page}.{name}_p"),
             )
+        name = f"{key}_{measure}_interaction"
+        test = effect["tests"][INTERACTION]
+        out[f"{name}_estimate"] = test.get("estimate", float("nan"))
+        out[f"{name}_p_holm"] = test.get("p_holm", float("nan"))
+        out[name] = text.Claim(
+            _robot_interaction_text(effect, measure),
+            (f"{page}.{name}_estimate", f"{page}.{name}_p_holm"),
+        )
+    out[f"{key}_misses"] = _object_misses(effects[run]["success"])
     return out
 
 
@@ -868,6 +998,16 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
                         "result": _robot_effect_text(effect[measure], measure, factor),
                     }
                 )
+            rows.append(
+                {
+                    "variant": _variant_label(row),
+                    "measure": measure.replace("_", " "),
+                    "factor": "congruency × size (2 × required grip, power − precision)",
+                    "distinct trials": effect[measure]["distinct_trials"],
+                    "method": effect[measure]["tests"][INTERACTION]["method"],
+                    "result": _robot_interaction_text(effect[measure], measure),
+                }
+            )
     for key, row in (("own", own), ("best", best)):
         out |= _robot_effect_values(effects, row["run"], key)
     out |= _wrong_grip_values(variants)
@@ -1016,10 +1156,10 @@ def notes(config: dict) -> dict:
 
 
 def _study_table(path: str) -> pd.DataFrame:
-    """A size-study table with its doses as numbers (the removal control's stay "removed")."""
+    """A size-study table with its doses as numbers (the controls' names stay)."""
     frame = pd.read_csv(path)
     if "dose" in frame:
-        frame["dose"] = [d if d == "removed" else float(d) for d in frame["dose"].astype(str)]
+        frame["dose"] = [dose_value(d) for d in frame["dose"].astype(str)]
     return frame
 
 
@@ -1060,7 +1200,12 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     }
     for cue in study["categorisation_cue"]:
         rmse = summary[(summary["cue"] == cue) & (summary["measure"] == "rmse")]
-        for key, dose in (("top", top), ("removed", "removed"), ("none", min(study["doses"]))):
+        for key, dose in (
+            ("top", top),
+            ("removed", "removed"),
+            ("none", min(study["doses"])),
+            ("equal_grips", "equal_grips"),
+        ):
             rows = rmse[rmse["dose"] == dose]
             if rows.empty:
                 continue
@@ -1071,41 +1216,123 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
                 "top": f"At the largest dose ({top:g})",
                 "removed": "Without any size in the input (the removal control)",
                 "none": "With no size on the maps (dose 0, the visual input unchanged)",
+                "equal_grips": "With no size on the maps and every object's grips moved towards "
+                "one distance (the grips' distance much reduced, the size left; the motor side "
+                "below gives the distances)",
             }[key]
             claims[f"claim_{key}_{cue}"] = text.size_dose_claim(row, cue, key, what)
             if key == "removed":
                 claims[f"claim_source_{cue}"] = text.size_removal_claim(row, cue)
-        fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")].iloc[0]
+        delivered = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")]
+        fit = delivered[delivered["axis"] == "delivered"].iloc[0]
         values[f"slope_{cue}"] = float(fit["slope"])
         values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
         claims[f"claim_slope_{cue}"] = text.size_slope_claim(fit, cue)
     geometry = pd.read_csv(inputs["size_geometry.csv"])
     values["geometry_like_size"] = text.geometry_like_size(ranked_like_size(geometry))
     if len(motor):
-        motor["dose"] = [d if d == "removed" else float(d) for d in motor["dose"].astype(str)]
+        motor["dose"] = [dose_value(d) for d in motor["dose"].astype(str)]
         for _, row in motor.iterrows():
             values[text.size_motor_key(row)] = float(row["p_holm"])
         for key, dose, where in (
+            ("claim_motor_none", min(study["doses"]), "At dose 0, no size on the maps"),
             ("claim_motor_top", top, f"At the largest dose ({top:g}), with size in the input"),
             ("claim_motor_removed", "removed", "Without size in the input"),
+            (
+                "claim_motor_equal_grips",
+                "equal_grips",
+                "At dose 0 with the grips moved towards one distance",
+            ),
         ):
-            subset = motor[motor["dose"] == dose]
+            subset = motor[motor["dose"].astype(str) == str(dose)]
             if len(subset):
                 claims[key] = text.size_motor_claim(subset, where)
     shown = summary.copy()
-    shown["dose"] = [d if d == "removed" else f"{d:g}" for d in shown["dose"]]
+    shown["dose"] = [d if isinstance(d, str) else f"{d:g}" for d in shown["dose"]]
     for column in ("diff", "ci_low", "ci_high", "relative_to_mean"):
-        shown[column] = shown[column].map(lambda v: f"{v:+.4f}")
-    shown["p"] = shown["p"].map(text.fmt_p)
-    shown["p_holm"] = shown["p_holm"].map(lambda v: "" if not np.isfinite(v) else text.fmt_p(v))
+        shown[column] = shown[column].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–")
+    # relative to the measure's mean is a proportion of an error only for the RMSE measures
+    shown.loc[~shown["measure"].isin(["rmse", "rmse_correct"]), "relative_to_mean"] = "–"
+    shown["p"] = shown["p"].map(lambda v: text.fmt_p(v) if np.isfinite(v) else "–")
+    shown["p_holm"] = shown["p_holm"].map(lambda v: "–" if not np.isfinite(v) else text.fmt_p(v))
     for column in ("large_small_ratio_object", "large_small_ratio_goal"):
         shown[column] = shown[column].map(lambda v: f"{v:.2f}")
     fits = slope.copy()
     for column in ("slope", "ci_low", "ci_high"):
-        fits[column] = fits[column].map(lambda v: f"{v:+.4f}")
+        fits[column] = fits[column].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–")
     for column in ("p", "p_holm"):
-        fits[column] = fits[column].map(lambda v: "" if not np.isfinite(v) else text.fmt_p(v))
-    tables = {"size_summary": shown.drop(columns=["df"]), "size_slope": fits}
+        fits[column] = fits[column].map(lambda v: "–" if not np.isfinite(v) else text.fmt_p(v))
+    grips = pd.read_csv(inputs["size_grips.csv"])
+    for _, row in grips.iterrows():
+        values[f"grips_diff_{row['cue']}"] = float(row["diff"])
+        values[f"grips_p_holm_{row['cue']}"] = float(row["p_holm"])
+        claims[f"claim_grips_{row['cue']}"] = text.size_grips_claim(row, row["cue"])
+    power = pd.read_csv(inputs["size_power.csv"])
+    values["power_replications"] = int(power["replications"].max()) if len(power) else 0
+    at = power[np.isclose(power["effect"], 0.02)]
+    for _, row in at.iterrows():
+        values[f"power_{row['cue']}"] = float(row["power_holm_bound"])
+    values["power_sentence"] = text.Claim(
+        " and ".join(
+            f"{row['power_holm_bound']:.2f} ({text.SIZE_CUE_WORDS[row['cue']]})"
+            for _, row in at.iterrows()
+        ),
+        tuple(f"size.power_{cue}" for cue in at["cue"]),
+    )
+    declared = pd.concat(
+        [
+            summary[summary["family"] == FAMILY_DECLARED].assign(
+                test=lambda d: [
+                    f"size effect at dose {x:g}"
+                    if not isinstance(x, str)
+                    else "size effect at dose 0, grips moved towards one distance"
+                    for x in d["dose"]
+                ],
+                estimate=lambda d: d["diff"],
+            ),
+            slope[slope["family"] == FAMILY_DECLARED].assign(
+                test=lambda d: [f"slope on the {a} dose" for a in d["axis"]],
+                estimate=lambda d: d["slope"],
+            ),
+        ]
+    )
+    tables = {
+        "size_summary": shown.drop(columns=["df"]),
+        "size_slope": fits,
+        "size_power": pd.DataFrame(
+            {
+                "cue": power["cue"].str.replace("_", " "),
+                "effect": power["effect"],
+                "replications": power["replications"],
+                "σ_rep": power["sigma_rep"],
+                "σ_net": power["sigma_net"],
+                "power (α)": power["power"],
+                "power (Holm bound)": power["power_holm_bound"],
+                "replications for 80% (α)": power["replications_for_80"],
+                "(Holm bound)": power["replications_for_80_holm_bound"],
+            }
+        ),
+        "size_declared": pd.DataFrame(
+            {
+                "cue": declared["cue"].map(text.SIZE_CUE_WORDS),
+                "test": declared["test"],
+                "estimate [95% interval]": [
+                    f"{r['estimate']:+.4f} [{r['ci_low']:+.4f}, {r['ci_high']:+.4f}]"
+                    for _, r in declared.iterrows()
+                ],
+                "df": declared["df"],
+                "p": declared["p"],
+                "family": declared["family"],
+                "Holm p": declared["p_holm"],
+                "verdict": [
+                    text.direction_word({"estimate": e, "p": p, "p_holm": h})
+                    for e, p, h in zip(
+                        declared["estimate"], declared["p"], declared["p_holm"], strict=True
+                    )
+                ],
+            }
+        ),
+    }
     shown_motor = motor.copy()
     if len(motor):
         for column in ("estimate", "ci_low", "ci_high"):
@@ -1126,9 +1353,7 @@ def page_findings(
     timing the ablation trained with, ``scale`` this build's and the other scale's counts
     (``{"now": ..., "other": ...}``, runs.RunPlan.scale).
     """
-    anova = with_readings_family(
-        _json(inputs["anova.json"]), pd.read_csv(inputs["readings_summary.csv"]), config
-    )
+    anova = _json(inputs["anova.json"])
     rmse, iterations = _curves(inputs)
     curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
     demos = load_npz(inputs["demos.npz"])
@@ -1158,6 +1383,7 @@ def page_findings(
         | {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
         | {
             "object_means": object_means(_json(inputs["measures.json"])),
+            "headline": headline(anova),
             "comparison": comparison(anova, curve, config),
             "cue_anova": cue_table,
         }

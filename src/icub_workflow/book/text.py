@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass
 
 from icub_affordance.findings import ALPHA, Verdict, interval_direction
-from icub_affordance.measures import is_null_control
+from icub_affordance.measures import is_hypothesis
 
 
 @dataclass(frozen=True)
@@ -45,17 +45,102 @@ def fmt_ci(term: dict) -> str:
     return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
 
 
-def _family(term: dict) -> str:
-    return term.get("holm_family", "over the paper's two effects")
+def fmt_family(term: dict) -> str:
+    """An adjusted p with the family it is adjusted within (``stats.adjust_families``)."""
+    return (
+        f"Holm-adjusted within the family “{term['family']}” ({term['family_size']} tests) "
+        f"{fmt_p(term['p_holm'])}"
+    )
 
 
 def fmt_term(term: dict) -> str:
-    """A tested term: estimate, 95% t-interval, t with its degrees of freedom, p."""
+    """A tested term: estimate, 95% t-interval, t with its degrees of freedom, p, and where it
+    has one, its p adjusted within its named family."""
     return (
         f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
         f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
-        + (f", Holm-adjusted {_family(term)} {fmt_p(term['p_holm'])}" if "p_holm" in term else "")
+        + (f", {fmt_family(term)}" if "family" in term else "")
     )
+
+
+#: The terms' names: what each estimate is, in the cells it compares. With four objects the
+#: congruency x size term is twice the required grip's difference (power - precision), and the
+#: three-way term four times the cubes' mean minus the balls' (stats.CODING).
+TERM_NAMES = {
+    "congruency": "congruency (incongruent − congruent)",
+    "size": "size (small − large)",
+    "mapping": "mapping (B − A)",
+    "congruency:size": "congruency × size = 2 × required grip (power − precision)",
+    "congruency:mapping": "congruency × mapping",
+    "size:mapping": "size × mapping",
+    "congruency:size:mapping": "three-way = 4 × (cubes − balls)",
+}
+
+#: The simple effects (``stats.SIMPLE``) by the object and grip cells they compare: the cell
+#: counted positive, the cell counted negative, and which congruency or size level both share.
+SIMPLE_NAMES = {
+    "size_in_congruent": ("the small object with a precision grip required",
+                          "the large object with a power grip required", "congruent cells"),
+    "size_in_incongruent": ("the small object with a power grip required",
+                            "the large object with a precision grip required", "incongruent cells"),
+    "congruency_in_large": ("the large object with a precision grip required",
+                            "the large object with a power grip required", "large objects"),
+    "congruency_in_small": ("the small object with a power grip required",
+                            "the small object with a precision grip required", "small objects"),
+}  # fmt: skip
+
+
+def simple_name(name: str) -> str:
+    """A simple effect's row name: its two cells."""
+    first, second, _ = SIMPLE_NAMES[name]
+    return f"{first.removeprefix('the ')} − {second.removeprefix('the ')}"
+
+
+def required_grip_phrase(term: dict) -> str:
+    """The congruency x size term as what it is with four objects: twice the difference between
+    the trials that require a power grip and those that require a precision grip."""
+    numbers = f"congruency × size, twice power − precision: {fmt_term(term)}"
+    if verdict_word(term) not in ("reproduced", "reversed"):
+        return f"the required grip was not shown to matter ({numbers})"
+    word = "higher" if term["estimate"] > 0 else "lower"
+    return f"trials that require a power grip gave a {word} RMSE than precision ones ({numbers})"
+
+
+def direction_word(term: dict) -> str:
+    """A test's direction against the paper without claiming a reproduction (a control's or a
+    slope's): "paper's direction", "against the paper", "not shown" or "not testable"."""
+    return {"reproduced": "paper's direction", "reversed": "against the paper"}.get(
+        verdict_word(term), verdict_word(term)
+    )
+
+
+def claim_verdict(term: dict, outcome: str, effect: str) -> str:
+    """The front page's verdict on one test: "reproduced" or "reversed" for the two effects the
+    paper claims, on its measure or the correct trials' (its reaction-time reading); the paper
+    claims nothing of errors, nor of the required grip (the congruency x size term), so those
+    are "shown", "shown, opposite" (against the paper's direction) or "not shown"."""
+    word = verdict_word(term)
+    if outcome != "errors" and effect != "congruency:size":
+        return word
+    if effect == "congruency:size":
+        return "shown" if word in ("reproduced", "reversed") else word
+    return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
+
+
+def term_name(term: str) -> str:
+    return TERM_NAMES.get(term, term.replace(":", " × "))
+
+
+def verdict_word(term: dict, alpha: float = ALPHA) -> str:
+    """A test against the paper's direction (positive estimate): "reproduced" or "reversed"
+    where its p adjusted within its family is below ``alpha``, else "not shown" (which is not
+    "no difference": only an equivalence test says that); "not testable" where it has no p."""
+    p = term.get("p_holm", term["p"])
+    if not math.isfinite(p):
+        return "not testable"
+    if p >= alpha:
+        return "not shown"
+    return "reproduced" if term["estimate"] > 0 else "reversed"
 
 
 def pct(x: float) -> str:
@@ -87,22 +172,18 @@ def significance(verdict: Verdict) -> str:
 
 
 def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> str:
-    """One effect of one test mode (results page): a difference is stated only where its test is
-    significant; otherwise the sentence says that no difference was shown. ``interacts``: the
-    congruency x size interaction is significant, so a main effect is only an average."""
+    """One effect of one test mode on the all-trials RMSE (results page), said in RMSE, not
+    speed (errors and correct trials are set apart below it): a difference is stated only where
+    its test, adjusted within its family, is significant. ``interacts``: the required grip's
+    term is significant, so a main effect is only an average over the grips."""
     if effect == "congruency":
-        faster, slower, pair = "congruent trials", "incongruent ones", "congruent and incongruent"
+        first, second, pair = "congruent trials", "incongruent ones", "congruent and incongruent"
     else:
-        faster, slower, pair = "large objects", "small ones", "large and small objects"
-    average = " on average over the other factor, which it interacts with" if interacts else ""
-    if verdict.significant and effect == "size":
-        # in RMSE, not speed: a large object's grips lie further apart
-        word = "a lower" if verdict.paper_direction else "a higher"
-        return f"{faster} gave {word} RMSE than {slower}{average}, significantly"
+        first, second, pair = "large objects", "small ones", "large and small objects"
+    average = " on average over the required grips, which differ" if interacts else ""
     if verdict.significant:
-        if verdict.paper_direction:
-            return f"{faster} were faster (lower RMSE) than {slower}{average}, significantly"
-        return f"{faster} were slower (higher RMSE) than {slower}{average}, significantly"
+        word = "a lower" if verdict.paper_direction else "a higher"
+        return f"{first} gave {word} RMSE than {second}{average}, significantly"
     return f"the difference between {pair} was not significant"
 
 
@@ -110,129 +191,175 @@ def p_word(p: float, alpha: float = 0.05) -> str:
     return "significant" if p < alpha else "not significant"
 
 
-def simple_size_phrase(term: dict, where: str, alpha: float = 0.05) -> str:
-    """Size within one congruency level (``stats.simple_effects``; its Holm-adjusted p). Said in
-    RMSE, not speed: a large object's two grips lie further apart, so its RMSE is not a plain
-    stand-in for time."""
-    numbers = f"small − large {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
-    numbers += f"Holm-adjusted {fmt_p(term['p_holm'])}"
-    if term["p_holm"] >= alpha:
-        return f"among {where} trials the size difference is not significant ({numbers})"
-    word = "lower" if term["estimate"] > 0 else "higher"
-    return f"among {where} trials large objects give a {word} RMSE ({numbers})"
+def simple_phrase(term: dict, name: str, alpha: float = ALPHA) -> str:
+    """A simple effect (``stats.SIMPLE``) named by the object and grip cells it compares, with
+    its p adjusted within its family. Said in RMSE, not speed: the cells differ in object and
+    grip at once."""
+    first, second, where = SIMPLE_NAMES[name]
+    numbers = (
+        f"{where}, {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
+        f"{fmt_family(term)}"
+    )
+    if not term["p_holm"] < alpha:
+        return f"{first} and {second} were not shown to differ in RMSE ({numbers})"
+    word = "higher" if term["estimate"] > 0 else "lower"
+    return f"{first} gives a {word} RMSE than {second} ({numbers})"
 
 
-def discussion_congruency(congruency: Verdict, wrong: dict[str, float], cue: str) -> Claim:
-    """The discussion's congruency paragraph: the verdict, and, with the cue at the first step,
-    how often a trial ends nearer the other grip (the drift, counted)."""
-    rests = ("discussion.congruency_estimate", "discussion.congruency_p_holm")
-    if not congruency.reproduced:
-        words = (
-            "the opposite of the paper's direction"
-            if congruency.reversed
-            else "no significant difference"
-        )
-        return Claim(
-            f"**The congruency effect is not reproduced in this run:** closed loop, the test "
-            f"over networks shows {words} (see the Results for the numbers). The paper reports "
-            "lower RMSE for congruent trials.",
-            rests,
-        )
+def rt_phrase(effect: str, term: dict) -> str:
+    """The correct-trial RMSE (the reaction-time analogue): "faster" and "slower" are said of
+    this measure only, and only where its test, adjusted within its family, shows a direction."""
+    faster, slower = ("congruent", "incongruent") if effect == "congruency" else ("large", "small")
+    n = term.get("cells", {})
+    counts = ", ".join(f"{k.replace('_', ' ')} {v}" for k, v in n.items())
+    numbers = f"{fmt_term(term)}; networks with a correct trial per cell: {counts}"
+    word = verdict_word(term)
+    if word == "reproduced":
+        return f"{faster} trials were faster (lower RMSE) than {slower} ones ({numbers})"
+    if word == "reversed":
+        return f"{faster} trials were slower (higher RMSE) than {slower} ones ({numbers})"
+    if word == "not testable":
+        return f"the correct trials cannot test this difference ({counts})"
+    return f"{faster} and {slower} trials were not shown to differ in speed ({numbers})"
+
+
+def error_phrase(effect: str, term: dict, rates: tuple[float, float]) -> str:
+    """The wrong-grip rate's difference: (the paper's faster condition's rate, the other's)."""
+    first, second = ("congruent", "incongruent") if effect == "congruency" else ("large", "small")
+    numbers = f"{pct(rates[1])} of {second} against {pct(rates[0])} of {first} trials"
+    word = verdict_word(term)
+    if word in ("reproduced", "reversed"):
+        more = second if term["estimate"] > 0 else first
+        return f"{more} trials ended on the wrong grip more often ({numbers}; {fmt_term(term)})"
+    return f"the wrong-grip rate was not shown to differ ({numbers}; {fmt_term(term)})"
+
+
+def measure_verdict(word: str) -> str:
+    """A verdict word as the front page's table says it."""
+    return {"reproduced": "reproduced", "reversed": "reversed", "not shown": "not shown",
+            "not testable": "not testable"}[word]  # fmt: skip
+
+
+def discussion_congruency(
+    rmse: dict, errors: dict, rt: dict, wrong: dict[str, float], cue: str
+) -> Claim:
+    """The discussion's congruency paragraph: the paper's measure's verdict in the confirmatory
+    family, then its two parts, errors and the correct-trial RMSE (the reaction-time analogue);
+    "faster" only of the latter."""
+    word = verdict_word(rmse)
+    head = {
+        "reproduced": "**On the paper's measure the congruency effect is reproduced**",
+        "reversed": "**On the paper's measure the congruency effect is reversed**",
+    }.get(word, "**On the paper's measure the congruency effect is not shown**")
     text = (
-        "**The congruency effect is reproduced.** Networks that must answer with the grip an "
-        "object does not invite are slower (higher RMSE) than when the two agree, as Tucker and "
-        "Ellis found in people and as the paper reports. "
-        f"In closed loop {pct(wrong['incongruent'])} of incongruent trials end nearer the grip "
-        f"the object invites than the one asked for, against {pct(wrong['congruent'])} of "
-        "congruent ones."
+        f"{head} (all-trials RMSE, incongruent − congruent, closed loop: {fmt_term(rmse)}). "
+        "People's reaction-time effects are measured on correct responses, with errors counted "
+        "apart, and the all-trials RMSE mixes the two. Errors: "
+        + error_phrase("congruency", errors, (wrong["congruent"], wrong["incongruent"]))
+        + ". Correct trials alone: "
+        + rt_phrase("congruency", rt)
+        + "."
     )
     if cue == "first_step":
         text += (
-            " With the cue at the first step only this is what the design leads one to expect: "
-            "from the second step on, the Task map shows the grasping pattern, exactly as in a "
-            "grasping trial of the same object."
+            " With the cue at the first step only, errors are what the design leads one to "
+            "expect: from the second step on the Task map shows the grasping pattern, exactly as "
+            "in a grasping trial of the same object."
         )
-    return Claim(text, (*rests, "discussion.wrong_incongruent", "discussion.wrong_congruent"))
+    rests = (
+        "discussion.congruency_estimate",
+        "discussion.congruency_p_holm",
+        "discussion.errors_congruency_estimate",
+        "discussion.errors_congruency_p_holm",
+        "discussion.rt_congruency_estimate",
+        "discussion.rt_congruency_p_holm",
+        "discussion.wrong_incongruent",
+        "discussion.wrong_congruent",
+    )
+    return Claim(text, rests)
 
 
 def discussion_size(
-    size: Verdict, simple: dict[str, dict], wrong: dict[str, float], term: dict
+    rmse: dict,
+    errors: dict,
+    rt: dict,
+    simple: dict[str, dict],
+    wrong: dict[str, float],
+    rt_grip: dict,
 ) -> Claim:
-    """The discussion's size paragraph (closed loop): the verdict (``term``: the size test, its
-    p Holm-adjusted over its family) and what the data say of drift toward the wrong grip: the
-    size effect among congruent trials alone (where no trial drifts if their wrong-grip rate is
-    0), a simple effect with its own family."""
-    rests = ("discussion.size_estimate", "discussion.size_p_holm")
-    numbers = (
-        f"small − large {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
-        f"Holm-adjusted {term.get('holm_family', '')} {fmt_p(term['p_holm'])}".replace("  ", " ")
+    """The discussion's size paragraph (closed loop): the paper's measure's verdict in the
+    confirmatory family, its two parts, and why a size term cannot be read apart from the grips
+    (the congruent cells compare a small object's precision grasp with a large one's power
+    grasp)."""
+    word = verdict_word(rmse)
+    head = {
+        "reproduced": "**On the paper's measure the size effect is reproduced**",
+        "reversed": "**On the paper's measure the size effect is reversed**",
+    }.get(word, "**On the paper's measure the size effect is not shown**")
+    tail = {
+        "reproduced": ", as the paper reports",
+        "reversed": ": large objects give a *higher* RMSE, where the paper reports a lower one",
+    }.get(word, ": the paper reports a lower RMSE for large objects; this test shows no "
+              "difference, which is not evidence of its absence")  # fmt: skip
+    text = (
+        f"{head} (all-trials RMSE, small − large, closed loop: {fmt_term(rmse)}){tail}. Errors: "
+        + error_phrase("size", errors, (wrong["large"], wrong["small"]))
+        + ". Correct trials alone: "
+        + rt_phrase("size", rt)
+        + "; and on them "
+        + required_grip_phrase(rt_grip)
+        + ". With four objects a size term is not object size alone: "
+        + simple_phrase(simple["size_in_congruent"], "size_in_congruent")
+        + ", and the congruency × size term is twice the difference between the trials that "
+        "require a power grip and those that require a precision grip. The chapter on what "
+        "drives the size effect asks what lies behind it."
     )
-    if size.reproduced:
-        return Claim(
-            "**The size effect is reproduced:** large objects give a lower RMSE than small ones "
-            f"in closed loop ({numbers}), as the paper reports.",
-            rests,
-        )
-    congruent = simple["size_in_congruent"]
-    rests += ("discussion.size_in_congruent_estimate", "discussion.size_in_congruent_p_holm")
-    rests += ("discussion.wrong_congruent",)
-    if size.reversed:
-        text = (
-            "**The size effect is reversed.** The paper reports a lower RMSE for large objects; "
-            f"here, in closed loop, large objects give a significantly *higher* RMSE ({numbers}). "
-        )
-    else:
-        text = (
-            "**The size effect is not shown in closed loop** "
-            f"({numbers}): the paper reports a lower RMSE for large objects, and this run's "
-            "test, corrected over its family, shows no size difference either way. "
-        )
-    if wrong["congruent"] == 0:
-        text += (
-            "No congruent trial ends nearer the other grip, and "
-            + simple_size_phrase(congruent, "congruent")
-            + " (a follow-up test, Holm-adjusted over the four simple effects)"
-            + (
-                ": whatever sets the large and small objects' RMSE apart there is not drift "
-                "toward the wrong grip. "
-                if congruent["p_holm"] < 0.05
-                else ". "
-            )
-        )
-    text += "What makes large objects' RMSE differ from small ones' is not known from this run."
+    rests = (
+        "discussion.size_estimate",
+        "discussion.size_p_holm",
+        "discussion.errors_size_estimate",
+        "discussion.errors_size_p_holm",
+        "discussion.rt_size_estimate",
+        "discussion.rt_size_p_holm",
+        "discussion.rt_grip_estimate",
+        "discussion.rt_grip_p_holm",
+        "discussion.size_in_congruent_estimate",
+        "discussion.size_in_congruent_p_holm",
+        "discussion.wrong_large",
+        "discussion.wrong_small",
+    )
     return Claim(text, rests)
 
 
 def discussion_forced(forced: dict[str, dict], simple: dict[str, dict]) -> Claim:
-    """The teacher-forced size result, stated with the interaction it comes with: where
-    congruency x size is significant, the size main effect alone does not say where large
-    objects' RMSE is lower, the simple effects do. Both terms read their p Holm-adjusted over
-    the mode's table of terms (``p_table``)."""
+    """The teacher-forced size result, stated with the required-grip term it comes with: where
+    that term is shown, the size term alone does not say which cells differ; the simple effects,
+    named by their cells, do. Every p is adjusted within its family (the mode's exploration)."""
     size, inter = forced["size"], forced["congruency:size"]
     text = (
         "In teacher-forced testing, where each step starts from the demonstrated posture and no "
         f"drift can build up, the size term is {size['estimate']:+.4f} "
-        f"(t({size['df']:.0f}) = {size['t']:.2f}, Holm-adjusted over the table's terms "
-        f"{fmt_p(size['p_table'])}, {p_word(size['p_table'])}) and the congruency × size "
-        f"interaction {inter['estimate']:+.4f} (t({inter['df']:.0f}) = {inter['t']:.2f}, "
-        f"Holm-adjusted {fmt_p(inter['p_table'])}, {p_word(inter['p_table'])})"
+        f"(t({size['df']:.0f}) = {size['t']:.2f}, {fmt_family(size)}) and the congruency × size "
+        f"term, twice the required grip's difference (power − precision), {inter['estimate']:+.4f} "
+        f"(t({inter['df']:.0f}) = {inter['t']:.2f}, {fmt_family(inter)})"
     )
-    if inter["p_table"] < 0.05:
+    if inter["p_holm"] < ALPHA:
         text += (
-            ": the size difference depends on congruency, so the main effect alone does not say "
-            "where large objects' RMSE is lower. Within each level, "
-            + simple_size_phrase(simple["size_in_congruent"], "congruent")
-            + ", and "
-            + simple_size_phrase(simple["size_in_incongruent"], "incongruent")
+            ": the required grip matters, so the size term alone does not say which cells "
+            "differ. "
+            + simple_phrase(simple["size_in_congruent"], "size_in_congruent")[0].upper()
+            + simple_phrase(simple["size_in_congruent"], "size_in_congruent")[1:]
+            + "; "
+            + simple_phrase(simple["size_in_incongruent"], "size_in_incongruent")
             + "."
         )
     else:
         text += "."
     rests = (
         "discussion.forced_size_estimate",
-        "discussion.forced_size_p_table",
+        "discussion.forced_size_p_holm",
         "discussion.forced_interaction_estimate",
-        "discussion.forced_interaction_p_table",
+        "discussion.forced_interaction_p_holm",
         "discussion.forced_size_in_congruent_p_holm",
         "discussion.forced_size_in_incongruent_p_holm",
     )
@@ -326,8 +453,9 @@ def divergence_sentence(first_step: int | None) -> Claim:
         return Claim(
             f"From step {first_step} on, incongruent trials are significantly further from "
             "grasping at every step (paired t-tests over networks, Holm-adjusted over the steps, "
-            "p < 0.05): while the output is held on the grip asked for, the hidden state stays "
-            "apart from the one the same object drives in a grasping trial.",
+            "p < 0.05): the hidden state of a categorisation trial that asks for the grip the "
+            "object does not invite stays apart from the one the same object drives in a "
+            "grasping trial, whichever grip the output ends on.",
             rests,
         )
     return Claim(
@@ -459,9 +587,10 @@ def effect_sentence(row, effect: str) -> str:
     mean, low, high = row[f"{effect}_effect"], row[f"{effect}_ci_low"], row[f"{effect}_ci_high"]
     interval = fmt_interval(mean, low, high)
     direction = {
-        "single": f"{first} {'faster' if mean > 0 else 'slower'} than {second} (one replication)",
-        "paper": f"{first} faster than {second}, the paper's direction",
-        "against": f"{first} slower than {second}, against the paper",
+        "single": f"{first} {'lower' if mean > 0 else 'higher'} in RMSE than {second} "
+        "(one replication)",
+        "paper": f"{first} lower in RMSE than {second}, the paper's direction",
+        "against": f"{first} higher in RMSE than {second}, against the paper",
         "unclear": f"no consistent difference between {first} and {second}",
     }[interval_direction(n, mean, low, high)]
     sig, rev = int(row[f"{effect}_n_significant"]), int(row[f"{effect}_n_reversed"])
@@ -566,10 +695,12 @@ def cost_findings(cost, growth: dict) -> str:
 
 MEASURE_NAMES = {
     "rmse": "the paper's RMSE",
+    "rmse_correct": "the correct-trial RMSE (the reaction-time analogue)",
     "wrong_grip": "the wrong-grip rate",
     "commitment": "commitment",
     "rmse_per_grip_distance": "RMSE per grip distance",
     "rmse_per_grip_distance_null": "the null control of RMSE per grip distance",
+    "rmse_per_grip_distance_excess": "RMSE per grip distance beyond its null control",
 }
 GOAL_RESPONSES = {
     "fixed": "a Goal bump of fixed width",
@@ -578,7 +709,7 @@ GOAL_RESPONSES = {
 DIRECTIONS = {
     "paper": "in the paper's direction",
     "reversed": "reversed",
-    "none": "not shown (Holm-adjusted p ≥ 0.05)",
+    "none": "not shown (p ≥ 0.05 after Holm within “exploration: readings”)",
     "constant": "absent, the measure the same for every network and object,",
 }
 COMPARISON_NAMES = {
@@ -614,20 +745,23 @@ def reading_label(cue: str, goal: str) -> str:
     return f"{CUES[cue]}, {GOAL_RESPONSES[goal]}"
 
 
-def fmt_holm(p: float) -> str:
-    return "Holm-adjusted p < 0.001" if p < 0.001 else f"Holm-adjusted p = {p:.3f}"
+def fmt_holm(p: float, family: str | None = None) -> str:
+    """A Holm-adjusted p, with the family it is adjusted within where given."""
+    within = f" within “{family}”" if family else ""
+    return f"Holm-adjusted{within} p < 0.001" if p < 0.001 else f"Holm-adjusted{within} p = {p:.3f}"
 
 
 def readings_method(summary) -> str:
     """How the matrix's tests were made (MyST): not a finding."""
     n = sorted(set(summary["replications"]))
-    hypotheses = summary[~summary["measure"].map(is_null_control)]
+    hypotheses = summary[summary["measure"].map(is_hypothesis)]
     tested = int(hypotheses["p"].map(math.isfinite).sum())
     untested = len(hypotheses) - tested
     family = (
-        f"Holm's adjustment runs over the whole family of the matrix's {tested} tests (every "
-        "reading, measure and effect; the null control's rows are not hypotheses and are left "
-        "out"
+        f"Holm's adjustment runs over the family “exploration: readings”, the matrix's {tested} "
+        "tests (every reading, measure and effect; the null control's rows, and those of RMSE "
+        "per grip distance, whose hypothesis is its excess over the null control, are shown "
+        "and left out"
         + (
             f", and so are {untested} cells where every network scored the same on every object, "
             "which leave nothing to test"
@@ -659,7 +793,7 @@ def readings_conclusion(summary) -> dict[str, Claim]:
     from icub_affordance.readings import direction
 
     readings = list(dict.fromkeys(summary["reading"]))
-    measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
+    measures = [m for m in dict.fromkeys(summary["measure"]) if is_hypothesis(m)]
     rows = {(r["reading"], r["measure"], r["effect"]): r for _, r in summary.iterrows()}
     info = summary.drop_duplicates("reading").set_index("reading")
 
@@ -766,7 +900,7 @@ def _cells(rows, with_ci: bool = True) -> str:
     for _, row in rows.iterrows():
         text = f"the {row['effect']} effect on {MEASURE_NAMES[row['measure']]}"
         ci = f" [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]" if with_ci else ""
-        out.append(f"{text} ({row['diff']:+.3g}{ci}, {fmt_holm(row['p_holm'])})")
+        out.append(f"{text} ({row['diff']:+.3g}{ci}, {fmt_holm(row['p_holm'], row.get('family'))})")
     return "; ".join(out)
 
 
@@ -775,7 +909,7 @@ def cue_timing_conclusion(differences) -> Claim | None:
     cue timing is said to change an effect only where that difference is significant after
     Holm's adjustment."""
     rows = differences[
-        (differences["comparison"] == "cue_timing") & ~differences["measure"].map(is_null_control)
+        (differences["comparison"] == "cue_timing") & differences["measure"].map(is_hypothesis)
     ]
     if rows.empty:
         return None
@@ -784,7 +918,7 @@ def cue_timing_conclusion(differences) -> Claim | None:
     if sig.empty:
         return Claim(
             f"No difference between the two cue timings survives Holm's adjustment over the "
-            f"{int((~differences['measure'].map(is_null_control)).sum())} tests of differences "
+            f"{int((differences['measure'].map(is_hypothesis)).sum())} tests of differences "
             "(each effect of one reading minus the same effect of the other, paired by network): "
             "this build does not show that the cue timing decides any effect on any measure.",
             keys,
@@ -813,8 +947,7 @@ def goal_response_conclusion(differences) -> Claim | None:
     within the declared margin is (Holm-adjusted over the equivalence tests), and "the Goal
     response barely matters" only if every effect on every measure is equivalent."""
     rows = differences[
-        (differences["comparison"] == "goal_response")
-        & ~differences["measure"].map(is_null_control)
+        (differences["comparison"] == "goal_response") & differences["measure"].map(is_hypothesis)
     ]
     if rows.empty:
         return None
@@ -825,7 +958,8 @@ def goal_response_conclusion(differences) -> Claim | None:
     )
     sig = rows[rows["p_holm"] < ALPHA]
     same = rows[rows["p_equivalence_holm"] < ALPHA]
-    neither = len(rows) - len(sig) - len(same)
+    identical = rows[rows["identical"].astype(str) == "True"] if "identical" in rows else rows[:0]
+    neither = len(rows) - len(sig) - len(same) - len(identical)
     sentences = []
     if sig.empty:
         sentences.append(
@@ -840,14 +974,14 @@ def goal_response_conclusion(differences) -> Claim | None:
             "The Goal response changes these effects (a widening bump minus a fixed one, paired "
             "by network, significant after Holm's adjustment): " + "; ".join(parts) + "."
         )
-    constant = (same["diff"] == 0) & (same["ci_low"] == 0) & (same["ci_high"] == 0)
-    identical, tested = same[constant], same[~constant]
+    tested = same
     if not tested.empty:
         parts = []
         for cue, group in tested.groupby("at", sort=False):
             items = [
                 f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} (within "
-                f"±{r['margin']:g}, TOST {fmt_holm(r['p_equivalence_holm'])})"
+                f"±{r['margin']:g}, TOST "
+                f"{fmt_holm(r['p_equivalence_holm'], r.get('family_equivalence'))})"
                 for _, r in group.iterrows()
             ]
             parts.append(f"with {CUES[cue]}, " + "; ".join(items))
@@ -868,7 +1002,7 @@ def goal_response_conclusion(differences) -> Claim | None:
             "These effects are identical on every network under both responses (nothing "
             "varies, so no test is needed or possible): " + "; ".join(parts) + "."
         )
-    if len(same) == len(rows):
+    if len(same) + len(identical) == len(rows):
         sentences.append(
             "So the Goal response barely matters: every effect on every measure is the same "
             "within its margin under both responses."
@@ -907,25 +1041,31 @@ def size_effect_words(row) -> str:
     reversed, or not detected (which is not a claim that there is none)."""
     if row["p_holm"] < ALPHA:
         return "in the paper's direction" if row["diff"] > 0 else "reversed (large higher)"
-    return "not detected after Holm's adjustment"
+    return "not detected within its family (which is not evidence of none)"
+
+
+def _adjusted(row) -> str:
+    """A table row's adjusted p with its family named."""
+    return f"Holm-adjusted within “{row['family']}” {fmt_p(row['p_holm'])}"
 
 
 def size_slope_claim(slope, cue: str) -> Claim:
-    """The dose-response's slope on the paper's RMSE, tested over replications (Holm's p)."""
+    """The size effect's slope on the delivered dose (the Goal map's large/small log ratio),
+    tested over replications, Holm-adjusted within its family."""
     p = slope["p_holm"]
     if p < ALPHA:
         trend = (
-            "a larger nominal dose moves the effect towards the paper's direction"
+            "more size delivered to the maps moves the effect towards the paper's direction"
             if slope["slope"] > 0
-            else "a larger nominal dose moves the effect away from the paper's direction"
+            else "more size delivered to the maps moves the effect away from the paper's direction"
         )
     else:
-        trend = "no trend with the dose survives Holm's adjustment"
+        trend = "no change with the delivered size is detected, which is not evidence of none"
     return Claim(
         f"With {SIZE_CUE_WORDS[cue]}, the size effect on the paper's RMSE changes by "
-        f"{slope['slope']:+.4f} per unit of the nominal dose (95% interval "
+        f"{slope['slope']:+.4f} per unit of the delivered dose (95% interval "
         f"[{slope['ci_low']:+.4f}, {slope['ci_high']:+.4f}], t({slope['df']:.0f}), "
-        f"{fmt_p(slope['p'])}, Holm-adjusted {fmt_p(p)}, over {int(slope['replications'])} "
+        f"{fmt_p(slope['p'])}, {_adjusted(slope)}, over {int(slope['replications'])} "
         f"replications): {trend}.",
         (f"size.slope_{cue}", f"size.slope_p_holm_{cue}"),
     )
@@ -935,9 +1075,29 @@ def size_dose_claim(row, cue: str, key: str, what: str) -> Claim:
     """The size effect at one dose (or without size), over its replications."""
     return Claim(
         f"{what}, with {SIZE_CUE_WORDS[cue]}, the size effect on the paper's RMSE is "
-        f"{_interval(row)}, {fmt_p(row['p'])}, Holm-adjusted {fmt_p(row['p_holm'])}, over "
+        f"{_interval(row)}, {fmt_p(row['p'])}, {_adjusted(row)}, over "
         f"{int(row['replications'])} replications: {size_effect_words(row)}.",
         (f"size.{key}_diff_{cue}", f"size.{key}_p_holm_{cue}"),
+    )
+
+
+def size_grips_claim(row, cue: str) -> Claim:
+    """How much of the dose-0 size effect the grips' distance carries: the effect with the grips
+    as demonstrated minus with them at one distance, paired by replication (exploration)."""
+    if row["p_holm"] < ALPHA:
+        verdict = (
+            "the grips' distance changes the size effect: reducing it moves the effect "
+            + ("towards" if row["diff"] < 0 else "away from")
+            + " the paper's direction"
+        )
+    else:
+        verdict = "whether the grips' distance changes the size effect is not shown"
+    return Claim(
+        f"With {SIZE_CUE_WORDS[cue]}, the dose-0 size effect with the grips as demonstrated minus "
+        f"with them moved towards one distance is {_interval(row)}, t({row['df']:.0f}), "
+        f"{fmt_p(row['p'])}, "
+        f"{_adjusted(row)} (a comparison made after the control's results were read): {verdict}.",
+        (f"size.grips_diff_{cue}", f"size.grips_p_holm_{cue}"),
     )
 
 
@@ -946,13 +1106,16 @@ def size_removal_claim(row, cue: str) -> Claim:
     (Holm) without any size in the input, it cannot come from vision."""
     if row["p_holm"] < ALPHA and row["diff"] < 0:
         verdict = (
-            "the reversed size effect survives the removal of size from the input, so the "
-            "motor side (the grips and their demonstrations) can produce it without vision"
+            "without size in the input the size effect is reversed (large higher), so the motor "
+            "side (the grips and their demonstrations) can produce a reversed effect without vision"
         )
     elif row["p_holm"] < ALPHA:
         verdict = "without size in the input the effect takes the paper's direction"
     else:
-        verdict = "without size in the input no size effect is detected, so this build cannot say"
+        verdict = (
+            "without size in the input no size effect is detected within its family, so this "
+            "build cannot say"
+        )
     return Claim(
         f"With {SIZE_CUE_WORDS[cue]}: {verdict}.",
         (f"size.removed_diff_{cue}", f"size.removed_p_holm_{cue}"),
@@ -961,7 +1124,7 @@ def size_removal_claim(row, cue: str) -> Claim:
 
 def size_motor_key(row) -> str:
     """The size page's value of one motor test's Holm p."""
-    dose = row["dose"] if row["dose"] == "removed" else f"{float(row['dose']):g}"
+    dose = row["dose"] if isinstance(row["dose"], str) else f"{float(row['dose']):g}"
     return f"motor_p_holm_{dose}_{row['cue']}_{row['geometry']}"
 
 
@@ -973,13 +1136,14 @@ def size_motor_claim(motor, where: str) -> Claim:
     if found.empty:
         return Claim(
             f"{where}, none of the demonstrations' measures lines up with the objects' errors "
-            "detectably (every Holm-adjusted p at least 0.05).",
+            f"detectably (every p Holm-adjusted within “{motor['family'].iloc[0]}” at least "
+            "0.05).",
             rests,
         )
     said = "; ".join(
         f"{GEOMETRY_WORDS[r['geometry']]}, with {SIZE_CUE_WORDS[r['cue']]} (an object's error "
         f"{'rises' if r['estimate'] > 0 else 'falls'} by {abs(r['estimate']):.4f} per standard "
-        f"deviation of it, Holm-adjusted {fmt_p(r['p_holm'])}, over {int(r['replications'])} "
+        f"deviation of it, {_adjusted(r)}, over {int(r['replications'])} "
         f"replications of {int(r['networks'])} networks)"
         for _, r in found.iterrows()
     )
