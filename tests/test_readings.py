@@ -523,9 +523,17 @@ def page(tmp_path, summ, diffs):
         "readings": {
             "measures": ["rmse", "rmse_per_grip_distance"],
             "equivalence_margin": {"rmse": 0.01, "rmse_per_grip_distance": 0.01},
+            "margin_declared": {
+                "rmse": {"commit": "3e997e7", "results_before": True},
+                "rmse_per_grip_distance": {"commit": "3e997e7", "results_before": False},
+            },
         }
     }
     values, tables = readings_page(inputs, config)
+    # the margins' table says when each was declared, and whether it was declared blind
+    margins = tables["readings_margins"].set_index("measure")
+    assert list(margins["results of the measure read before"]) == ["yes", "no"]
+    assert set(margins["declared in commit"]) == {"3e997e7"}
     return traced({"readings": values})
 
 
@@ -787,3 +795,29 @@ def test_paired_readings_share_each_networks_seed(built):
         for run in runs[1:]:
             pd.testing.assert_frame_equal(schedule(run, net), mine)
     assert not schedule(runs[0], 0).equals(schedule(runs[0], 1))
+
+
+def test_every_margin_names_the_commit_that_declared_it():
+    """Each equivalence margin says when it was declared and whether its measure's results had
+    been read by then; the config check refuses a margin without that record."""
+    import subprocess
+
+    from icub_workflow.config_checks import ConfigError, check_config
+
+    readings = load_config()["readings"]
+    declared = readings["margin_declared"]
+    assert set(declared) == set(readings["equivalence_margin"])
+    # the RMSE's margin came after its results were in the book; rmse_correct's before any
+    assert declared["rmse"]["results_before"] and not declared["rmse_correct"]["results_before"]
+    # every named commit exists in this history
+    for measure, entry in declared.items():
+        known = subprocess.run(
+            ["git", "cat-file", "-t", entry["commit"]], cwd=REPO, capture_output=True, text=True
+        )
+        if known.returncode and not (REPO / ".git").exists():
+            pytest.skip("no git history to check the commits against")
+        assert known.stdout.strip() == "commit", (measure, entry)
+    config = load_config()
+    undated = config["readings"] | {"margin_declared": {"rmse": declared["rmse"]}}
+    with pytest.raises(ConfigError, match=r"readings\.margin_declared.*no entry"):
+        check_config(config | {"readings": undated})

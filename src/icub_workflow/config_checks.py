@@ -262,6 +262,15 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             "robot.default. Fix: pick one of them or add it to robot.default."
         )
     yield from _confirmation_problems(config, listed, key)
+    undated = sorted(
+        set(config["readings"]["equivalence_margin"]) - set(config["readings"]["margin_declared"])
+    )
+    if undated:
+        yield (
+            f"{key('readings.margin_declared')}: no entry for {undated}. Allowed: one entry per "
+            "margin of readings.equivalence_margin, naming the commit that first wrote it and "
+            "whether results of its measure had been read then. Fix: add them."
+        )
     study = config["size_dose"]
     needed = max(study["replications"], study["robustness_replications"])
     if len(study["seeds"]) < needed:

@@ -119,6 +119,7 @@ FINDINGS_TABLES = [
     "readings_matrix",
     "readings_summary",
     "readings_differences",
+    "readings_margins",
     "robot_variants",
     "robot_effects",
     "robot_tolerance",

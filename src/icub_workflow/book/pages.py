@@ -195,7 +195,23 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     def shown(table: pd.DataFrame, columns: tuple[str, str]) -> list[str]:
         return [text.reading_label(c, g) for c, g in zip(*(table[c] for c in columns), strict=True)]
 
+    readings_config = config["readings"]
+    margins = pd.DataFrame(
+        [
+            {
+                "measure": text.MEASURE_NAMES[m],
+                "margin": f"±{margin:g}",
+                "declared in commit": readings_config["margin_declared"][m]["commit"],
+                "results of the measure read before": (
+                    "yes" if readings_config["margin_declared"][m]["results_before"] else "no"
+                ),
+            }
+            for m, margin in readings_config["equivalence_margin"].items()
+            if m in readings_config["measures"]
+        ]
+    )
     return values, {
+        "readings_margins": margins,
         "readings_matrix": readings_science.matrix(
             summary.assign(reading=shown(summary, ("cue", "goal_response")))
         ),
