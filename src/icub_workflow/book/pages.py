@@ -225,6 +225,16 @@ def _term_values(prefix: str, term: dict) -> dict:
     return {f"{prefix}_estimate": term["estimate"], f"{prefix}_p": term["p"]}
 
 
+def _measure_terms(anova: dict):
+    """The closed-loop tests of the paper's two effects on its measure and its two parts, as
+    (key prefix, effect, test): "" the all-trials RMSE, "errors_", "rt_" the correct trials."""
+    loop = anova["closed_loop"]
+    for effect in ("congruency", "size"):
+        yield "", effect, anova["contrasts"]["closed_loop"][effect]
+        yield "errors_", effect, loop["errors"][effect]
+        yield "rt_", effect, loop["correct_rt"][effect]
+
+
 def headline(anova: dict) -> pd.DataFrame:
     """The front page's table: the paper's two effects (closed loop) on the paper's measure and
     its two parts, each with its test, its family, its p adjusted within it and a verdict word
@@ -266,17 +276,12 @@ def intro(anova: dict) -> dict:
         "wrong_congruent": wrong["congruent"],
         "wrong_incongruent": wrong["incongruent"],
     }
-    for effect in ("congruency", "size"):
-        for prefix, term in (
-            ("", contrasts[effect]),
-            ("errors_", closed["errors"][effect]),
-            ("rt_", closed["correct_rt"][effect]),
-        ):
-            out |= _term_values(f"{prefix}{effect}", term)
-            out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
-            keys = (f"intro.{prefix}{effect}_estimate", f"intro.{prefix}{effect}_p_holm")
-            out[f"{prefix}{effect}_verdict"] = text.Claim(text.verdict_word(term), keys)
-            out[f"{prefix}{effect}_stats"] = text.fmt_term(term)
+    for prefix, effect, term in _measure_terms(anova):
+        out |= _term_values(f"{prefix}{effect}", term)
+        out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
+        keys = (f"intro.{prefix}{effect}_estimate", f"intro.{prefix}{effect}_p_holm")
+        out[f"{prefix}{effect}_verdict"] = text.Claim(text.verdict_word(term), keys)
+        out[f"{prefix}{effect}_stats"] = text.fmt_term(term)
     out["rt_sentence"] = text.Claim(
         text.rt_phrase("congruency", closed["correct_rt"]["congruency"]),
         ("intro.rt_congruency_estimate", "intro.rt_congruency_p_holm"),
@@ -357,14 +362,9 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
         | {"forced_interaction_p_holm": forced["congruency:size"]["p_holm"]}
         | {f"wrong_{k}": v for k, v in wrong.items()}
     )
-    for effect in ("congruency", "size"):
-        for prefix, term in (
-            ("", closed[effect]),
-            ("errors_", loop["errors"][effect]),
-            ("rt_", loop["correct_rt"][effect]),
-        ):
-            out |= _term_values(f"{prefix}{effect}", term)
-            out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
+    for prefix, effect, term in _measure_terms(anova):
+        out |= _term_values(f"{prefix}{effect}", term)
+        out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
     grip = loop["correct_rt"]["congruency:size"]
     out |= {"rt_grip_estimate": grip["estimate"], "rt_grip_p_holm": grip["p_holm"]}
     for name, term in simple.items():
