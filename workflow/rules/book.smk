@@ -114,6 +114,7 @@ FINDINGS_TABLES = [
     "contrasts_teacher_forced",
     "object_means",
     "headline",
+    "scorecard",
     "comparison",
     "cue_anova",
     "readings_matrix",

@@ -30,6 +30,7 @@ from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
 from icub_workflow.runs import OWN
 
 from . import text
+from .scorecard import scorecard
 
 #: The three readings of the paper's measure (``stats.OUTCOMES``), as the tables name them.
 OUTCOME_LABELS = {
@@ -264,7 +265,7 @@ def headline(anova: dict) -> pd.DataFrame:
 
 def intro(anova: dict) -> dict:
     closed = anova["closed_loop"]
-    means, contrasts = closed["means"], anova["contrasts"]["closed_loop"]
+    means = closed["means"]
     wrong = science.wrong_grip_by_congruency(closed["wrong_grip_rate"])
     out = {
         "n_networks": closed["n_networks"],
@@ -272,31 +273,17 @@ def intro(anova: dict) -> dict:
         "incong": means["incongruent"],
         "large": means["large"],
         "small": means["small"],
-        "family_size": contrasts["congruency"]["family_size"],
         "wrong_congruent": wrong["congruent"],
         "wrong_incongruent": wrong["incongruent"],
     }
     for prefix, effect, term in _measure_terms(anova):
-        out |= _term_values(f"{prefix}{effect}", term)
-        out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
-        keys = (f"intro.{prefix}{effect}_estimate", f"intro.{prefix}{effect}_p_holm")
-        out[f"{prefix}{effect}_verdict"] = text.Claim(text.verdict_word(term), keys)
-        out[f"{prefix}{effect}_stats"] = text.fmt_term(term)
-    out["rt_sentence"] = text.Claim(
-        text.rt_phrase("congruency", closed["correct_rt"]["congruency"]),
-        ("intro.rt_congruency_estimate", "intro.rt_congruency_p_holm"),
-    )
-    grip = closed["correct_rt"]["congruency:size"]
-    out |= {"rt_grip_estimate": grip["estimate"], "rt_grip_p_holm": grip["p_holm"]}
-    out["rt_grip_sentence"] = text.Claim(
-        text.required_grip_phrase(grip), ("intro.rt_grip_estimate", "intro.rt_grip_p_holm")
-    )
-    out["errors_sentence"] = text.Claim(
-        text.error_phrase(
-            "congruency", closed["errors"]["congruency"], (wrong["congruent"], wrong["incongruent"])
-        ),
-        ("intro.errors_congruency_estimate", "intro.errors_congruency_p_holm"),
-    )
+        outcome = {"": "contrasts", "errors_": "errors", "rt_": "correct_rt"}[prefix]
+        out |= text.test_values(
+            "intro",
+            f"{prefix}{effect}",
+            term,
+            lambda t, o=outcome, e=effect: text.claim_verdict(t, o, e),
+        )
     return out
 
 
@@ -348,52 +335,27 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
 
 
 def discussion(anova: dict, demos: dict, cue: str) -> dict:
-    """The discussion's paragraphs, each a claim on this page's numbers, in ``order``."""
+    """The discussion's tests: the paper's two effects on its measure and its two parts (closed
+    loop), the required grip, the simple effects by cell, and the teacher-forced size terms."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
-    closed, forced = anova["contrasts"]["closed_loop"], anova["contrasts"]["teacher_forced"]
-    simple, forced_simple = anova["simple"]["closed_loop"], anova["simple"]["teacher_forced"]
-    loop = anova["closed_loop"]
+    loop, forced = anova["closed_loop"], anova["contrasts"]["teacher_forced"]
     wrong = science.wrong_grip_by_congruency(loop["wrong_grip_rate"])
-    out = (
-        {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"]}
-        | {"forced_size_estimate": forced["size"]["estimate"]}
-        | {"forced_size_p_holm": forced["size"]["p_holm"]}
-        | {"forced_interaction_estimate": forced["congruency:size"]["estimate"]}
-        | {"forced_interaction_p_holm": forced["congruency:size"]["p_holm"]}
-        | {f"wrong_{k}": v for k, v in wrong.items()}
-    )
+    out = {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"], "cue": cue}
+    out |= {f"wrong_{k}": v for k, v in wrong.items()}
     for prefix, effect, term in _measure_terms(anova):
-        out |= _term_values(f"{prefix}{effect}", term)
-        out[f"{prefix}{effect}_p_holm"] = term["p_holm"]
-    grip = loop["correct_rt"]["congruency:size"]
-    out |= {"rt_grip_estimate": grip["estimate"], "rt_grip_p_holm": grip["p_holm"]}
-    for name, term in simple.items():
-        out |= {f"{name}_estimate": term["estimate"], f"{name}_p_holm": term["p_holm"]}
-    for name, term in forced_simple.items():
-        out |= {
-            f"forced_{name}_estimate": term["estimate"],
-            f"forced_{name}_p_holm": term["p_holm"],
-        }
-    paragraphs = {
-        "congruency_text": text.discussion_congruency(
-            closed["congruency"],
-            loop["errors"]["congruency"],
-            loop["correct_rt"]["congruency"],
-            wrong,
-            cue,
-        ),
-        "size_text": text.discussion_size(
-            closed["size"],
-            loop["errors"]["size"],
-            loop["correct_rt"]["size"],
-            simple,
-            wrong,
-            loop["correct_rt"]["congruency:size"],
-        ),
-        "forced_text": text.discussion_forced(forced, forced_simple),
-        "readings_text": text.discussion_readings(cue),
+        verdict = text.verdict_word if prefix != "errors_" else text.shown_word
+        out |= text.test_values("discussion", f"{prefix}{effect}", term, verdict)
+    tests = {
+        "rt_grip": loop["correct_rt"]["congruency:size"],
+        "size_in_congruent": anova["simple"]["closed_loop"]["size_in_congruent"],
+        "forced_size": forced["size"],
+        "forced_grip": forced["congruency:size"],
+        "forced_size_in_congruent": anova["simple"]["teacher_forced"]["size_in_congruent"],
+        "forced_size_in_incongruent": anova["simple"]["teacher_forced"]["size_in_incongruent"],
     }
-    return out | paragraphs | {"order": list(paragraphs)}
+    for prefix, term in tests.items():
+        out |= text.test_values("discussion", prefix, term, text.shown_word)
+    return out
 
 
 def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
@@ -1378,8 +1340,16 @@ def page_findings(
     readings_values, readings_tables = readings(inputs, config)
     grasping_values, grasping_tables = grasping(inputs, config)
     size_values, size_tables = size_study(inputs, config)
+    score_values, score_table = scorecard(
+        anova,
+        curve,
+        pd.read_csv(inputs["readings_summary.csv"]),
+        pd.read_csv(inputs["size_summary.csv"]),
+        pd.read_csv(inputs["robot_variants.csv"]),
+        pd.read_csv(inputs["robot_confirmation.csv"]),
+    )
     pages = {
-        "intro": intro(anova),
+        "intro": intro(anova) | score_values,
         "results": results(anova, curve, config["network"]["categorisation_cue"]),
         "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
         "beyond": beyond_values,
@@ -1400,6 +1370,7 @@ def page_findings(
         | {
             "object_means": object_means(_json(inputs["measures.json"])),
             "headline": headline(anova),
+            "scorecard": score_table,
             "comparison": comparison(anova, curve, config),
             "cue_anova": cue_table,
         }

@@ -3,7 +3,8 @@
 The count is declared here, before the pages were cut to it (issue: the book a scientist reads
 in twenty minutes): the text of the page's ``<article>``, outside tables (data, not prose),
 outside code cells' input (hidden from a reader) and outside folded sections (an admonition of
-class ``dropdown``: method details a reader opens only to check the work). Folded words are
+class ``dropdown``, or a cell output hidden behind a toggle: method details a reader opens only
+to check the work). Folded words are
 counted apart, so a page cannot hide its prose by folding it without the count saying so.
 
 ``python -m icub_workflow.book.reading book/_build/html`` prints the table.
@@ -58,7 +59,7 @@ class _Parser(HTMLParser):
             role = "article"
         elif tag in SKIPPED_TAGS or any(c in classes for c in SKIPPED_CLASSES):
             role = "skip"
-        elif FOLDED_CLASS in classes:
+        elif FOLDED_CLASS in classes or tag == "details":
             role = "folded"
         elif IN_BRIEF_CLASS in classes:
             role = "brief"

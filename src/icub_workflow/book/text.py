@@ -96,16 +96,6 @@ def simple_name(name: str) -> str:
     return f"{first.removeprefix('the ')} − {second.removeprefix('the ')}"
 
 
-def required_grip_phrase(term: dict) -> str:
-    """The congruency x size term as what it is with four objects: twice the difference between
-    the trials that require a power grip and those that require a precision grip."""
-    numbers = f"congruency × size, twice power − precision: {fmt_term(term)}"
-    if verdict_word(term) not in ("reproduced", "reversed"):
-        return f"the required grip was not shown to matter ({numbers})"
-    word = "higher" if term["estimate"] > 0 else "lower"
-    return f"trials that require a power grip gave a {word} RMSE than precision ones ({numbers})"
-
-
 def direction_word(term: dict) -> str:
     """A test's direction against the paper without claiming a reproduction (a control's or a
     slope's): "paper's direction", "against the paper", "not shown" or "not testable"."""
@@ -143,6 +133,24 @@ def verdict_word(term: dict, alpha: float = ALPHA) -> str:
     return "reproduced" if term["estimate"] > 0 else "reversed"
 
 
+def shown_word(term: dict, alpha: float = ALPHA) -> str:
+    """A difference the paper does not predict (a simple effect, the wrong-grip rate, the
+    required grip): "shown" where its p adjusted within its family is below ``alpha``, else "not
+    shown"; its sign is in the estimate beside it."""
+    word = verdict_word(term, alpha)
+    return "shown" if word in ("reproduced", "reversed") else word
+
+
+def test_values(page: str, prefix: str, term: dict, verdict=verdict_word) -> dict:
+    """A test as page values: its numbers as the analysis wrote them, ``_stats`` (all of them for
+    reading), and ``_verdict``, a ``Claim`` resting on its estimate and adjusted p."""
+    values = {f"{prefix}_{key}": term[key] for key in ("estimate", "ci_low", "ci_high", "p")}
+    values[f"{prefix}_p_holm"] = term.get("p_holm", term["p"])
+    values[f"{prefix}_stats"] = fmt_term(term)
+    rests = (f"{page}.{prefix}_estimate", f"{page}.{prefix}_p_holm")
+    return values | {f"{prefix}_verdict": Claim(verdict(term), rests)}
+
+
 def pct(x: float) -> str:
     return f"{100 * x:.0f}%"
 
@@ -167,10 +175,6 @@ def paper_agreement(verdict: Verdict) -> str:
     )
 
 
-def significance(verdict: Verdict) -> str:
-    return ", significantly" if verdict.significant else ", but not significantly"
-
-
 def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> str:
     """One effect of one test mode on the all-trials RMSE (results page), said in RMSE, not
     speed (errors and correct trials are set apart below it): a difference is stated only where
@@ -185,195 +189,6 @@ def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> 
         word = "a lower" if verdict.paper_direction else "a higher"
         return f"{first} gave {word} RMSE than {second}{average}, significantly"
     return f"the difference between {pair} was not significant"
-
-
-def p_word(p: float, alpha: float = 0.05) -> str:
-    return "significant" if p < alpha else "not significant"
-
-
-def simple_phrase(term: dict, name: str, alpha: float = ALPHA) -> str:
-    """A simple effect (``stats.SIMPLE``) named by the object and grip cells it compares, with
-    its p adjusted within its family. Said in RMSE, not speed: the cells differ in object and
-    grip at once."""
-    first, second, where = SIMPLE_NAMES[name]
-    numbers = (
-        f"{where}, {term['estimate']:+.4f}, t({term['df']:.0f}) = {term['t']:.2f}, "
-        f"{fmt_family(term)}"
-    )
-    if not term["p_holm"] < alpha:
-        return f"{first} and {second} were not shown to differ in RMSE ({numbers})"
-    word = "higher" if term["estimate"] > 0 else "lower"
-    return f"{first} gives a {word} RMSE than {second} ({numbers})"
-
-
-def rt_phrase(effect: str, term: dict) -> str:
-    """The correct-trial RMSE (the reaction-time analogue): "faster" and "slower" are said of
-    this measure only, and only where its test, adjusted within its family, shows a direction."""
-    faster, slower = ("congruent", "incongruent") if effect == "congruency" else ("large", "small")
-    n = term.get("cells", {})
-    counts = ", ".join(f"{k.replace('_', ' ')} {v}" for k, v in n.items())
-    numbers = f"{fmt_term(term)}; networks with a correct trial per cell: {counts}"
-    word = verdict_word(term)
-    if word == "reproduced":
-        return f"{faster} trials were faster (lower RMSE) than {slower} ones ({numbers})"
-    if word == "reversed":
-        return f"{faster} trials were slower (higher RMSE) than {slower} ones ({numbers})"
-    if word == "not testable":
-        return f"the correct trials cannot test this difference ({counts})"
-    return f"{faster} and {slower} trials were not shown to differ in speed ({numbers})"
-
-
-def error_phrase(effect: str, term: dict, rates: tuple[float, float]) -> str:
-    """The wrong-grip rate's difference: (the paper's faster condition's rate, the other's)."""
-    first, second = ("congruent", "incongruent") if effect == "congruency" else ("large", "small")
-    numbers = f"{pct(rates[1])} of {second} against {pct(rates[0])} of {first} trials"
-    word = verdict_word(term)
-    if word in ("reproduced", "reversed"):
-        more = second if term["estimate"] > 0 else first
-        return f"{more} trials ended on the wrong grip more often ({numbers}; {fmt_term(term)})"
-    return f"the wrong-grip rate was not shown to differ ({numbers}; {fmt_term(term)})"
-
-
-def measure_verdict(word: str) -> str:
-    """A verdict word as the front page's table says it."""
-    return {"reproduced": "reproduced", "reversed": "reversed", "not shown": "not shown",
-            "not testable": "not testable"}[word]  # fmt: skip
-
-
-def discussion_congruency(
-    rmse: dict, errors: dict, rt: dict, wrong: dict[str, float], cue: str
-) -> Claim:
-    """The discussion's congruency paragraph: the paper's measure's verdict in the confirmatory
-    family, then its two parts, errors and the correct-trial RMSE (the reaction-time analogue);
-    "faster" only of the latter."""
-    word = verdict_word(rmse)
-    head = {
-        "reproduced": "**On the paper's measure the congruency effect is reproduced**",
-        "reversed": "**On the paper's measure the congruency effect is reversed**",
-    }.get(word, "**On the paper's measure the congruency effect is not shown**")
-    text = (
-        f"{head} (all-trials RMSE, incongruent − congruent, closed loop: {fmt_term(rmse)}). "
-        "People's reaction-time effects are measured on correct responses, with errors counted "
-        "apart, and the all-trials RMSE mixes the two. Errors: "
-        + error_phrase("congruency", errors, (wrong["congruent"], wrong["incongruent"]))
-        + ". Correct trials alone: "
-        + rt_phrase("congruency", rt)
-        + "."
-    )
-    if cue == "first_step":
-        text += (
-            " With the cue at the first step only, errors are what the design leads one to "
-            "expect: from the second step on the Task map shows the grasping pattern, exactly as "
-            "in a grasping trial of the same object."
-        )
-    rests = (
-        "discussion.congruency_estimate",
-        "discussion.congruency_p_holm",
-        "discussion.errors_congruency_estimate",
-        "discussion.errors_congruency_p_holm",
-        "discussion.rt_congruency_estimate",
-        "discussion.rt_congruency_p_holm",
-        "discussion.wrong_incongruent",
-        "discussion.wrong_congruent",
-    )
-    return Claim(text, rests)
-
-
-def discussion_size(
-    rmse: dict,
-    errors: dict,
-    rt: dict,
-    simple: dict[str, dict],
-    wrong: dict[str, float],
-    rt_grip: dict,
-) -> Claim:
-    """The discussion's size paragraph (closed loop): the paper's measure's verdict in the
-    confirmatory family, its two parts, and why a size term cannot be read apart from the grips
-    (the congruent cells compare a small object's precision grasp with a large one's power
-    grasp)."""
-    word = verdict_word(rmse)
-    head = {
-        "reproduced": "**On the paper's measure the size effect is reproduced**",
-        "reversed": "**On the paper's measure the size effect is reversed**",
-    }.get(word, "**On the paper's measure the size effect is not shown**")
-    tail = {
-        "reproduced": ", as the paper reports",
-        "reversed": ": large objects give a *higher* RMSE, where the paper reports a lower one",
-    }.get(word, ": the paper reports a lower RMSE for large objects; this test shows no "
-              "difference, which is not evidence of its absence")  # fmt: skip
-    text = (
-        f"{head} (all-trials RMSE, small − large, closed loop: {fmt_term(rmse)}){tail}. Errors: "
-        + error_phrase("size", errors, (wrong["large"], wrong["small"]))
-        + ". Correct trials alone: "
-        + rt_phrase("size", rt)
-        + "; and on them "
-        + required_grip_phrase(rt_grip)
-        + ". With four objects a size term is not object size alone: "
-        + simple_phrase(simple["size_in_congruent"], "size_in_congruent")
-        + ", and the congruency × size term is twice the difference between the trials that "
-        "require a power grip and those that require a precision grip. The chapter on what "
-        "drives the size effect asks what lies behind it."
-    )
-    rests = (
-        "discussion.size_estimate",
-        "discussion.size_p_holm",
-        "discussion.errors_size_estimate",
-        "discussion.errors_size_p_holm",
-        "discussion.rt_size_estimate",
-        "discussion.rt_size_p_holm",
-        "discussion.rt_grip_estimate",
-        "discussion.rt_grip_p_holm",
-        "discussion.size_in_congruent_estimate",
-        "discussion.size_in_congruent_p_holm",
-        "discussion.wrong_large",
-        "discussion.wrong_small",
-    )
-    return Claim(text, rests)
-
-
-def discussion_forced(forced: dict[str, dict], simple: dict[str, dict]) -> Claim:
-    """The teacher-forced size result, stated with the required-grip term it comes with: where
-    that term is shown, the size term alone does not say which cells differ; the simple effects,
-    named by their cells, do. Every p is adjusted within its family (the mode's exploration)."""
-    size, inter = forced["size"], forced["congruency:size"]
-    text = (
-        "In teacher-forced testing, where each step starts from the demonstrated posture and no "
-        f"drift can build up, the size term is {size['estimate']:+.4f} "
-        f"(t({size['df']:.0f}) = {size['t']:.2f}, {fmt_family(size)}) and the congruency × size "
-        f"term, twice the required grip's difference (power − precision), {inter['estimate']:+.4f} "
-        f"(t({inter['df']:.0f}) = {inter['t']:.2f}, {fmt_family(inter)})"
-    )
-    if inter["p_holm"] < ALPHA:
-        text += (
-            ": the required grip matters, so the size term alone does not say which cells "
-            "differ. "
-            + simple_phrase(simple["size_in_congruent"], "size_in_congruent")[0].upper()
-            + simple_phrase(simple["size_in_congruent"], "size_in_congruent")[1:]
-            + "; "
-            + simple_phrase(simple["size_in_incongruent"], "size_in_incongruent")
-            + "."
-        )
-    else:
-        text += "."
-    rests = (
-        "discussion.forced_size_estimate",
-        "discussion.forced_size_p_holm",
-        "discussion.forced_interaction_estimate",
-        "discussion.forced_interaction_p_holm",
-        "discussion.forced_size_in_congruent_p_holm",
-        "discussion.forced_size_in_incongruent_p_holm",
-    )
-    return Claim(text, rests)
-
-
-def discussion_readings(cue: str) -> str:
-    return (
-        "The reproduction notes list the choices behind these numbers. The most consequential are "
-        f"readings of the paper's text: when the categorisation cue reaches the network (this "
-        f"run: `{cue}`) and what the Goal map sends on. The next chapters set the other readings "
-        "beside this one, with equal standing, run by the same pipeline and scored on the same "
-        "trials with several measures."
-    )
 
 
 def robot_error_sentence(verdict: Verdict) -> str:
