@@ -227,85 +227,54 @@ def test_a_verdict_word_reads_the_p_adjusted_within_its_family():
     assert "within the family “a family” (4 tests) p = 0.010" in text.fmt_term(term(0.03, 0.01))
 
 
-def test_the_congruency_paragraph_keeps_errors_apart_from_reaction_time():
+def test_a_tests_page_values_carry_its_verdict_and_what_it_rests_on():
     from icub_workflow.book import text
 
-    wrong = {"congruent": 0.0, "incongruent": 0.6}
-    rmse, errors = term(0.03, 0.001), term(0.6, 0.001)
-    rt_none = term(0.005, 0.4, cells={"congruent_large": 12, "incongruent_small": 3})
-    shown = text.discussion_congruency(rmse, errors, rt_none, wrong, "first_step")
-    assert shown.text.startswith("**On the paper's measure the congruency effect is reproduced**")
-    assert "incongruent trials ended on the wrong grip more often" in shown.text
-    assert "60% of incongruent against 0% of congruent" in shown.text
-    # no "faster" unless the correct-trial measure shows it
-    assert "faster" not in shown.text and "slower" not in shown.text
-    assert "not shown to differ in speed" in shown.text and "incongruent small 3" in shown.text
-    faster = text.discussion_congruency(rmse, errors, term(0.01, 0.001), wrong, "first_step")
-    assert "congruent trials were faster (lower RMSE) than incongruent ones" in faster.text
-    slower = text.discussion_congruency(rmse, errors, term(-0.01, 0.001), wrong, "all_steps")
-    assert "congruent trials were slower" in slower.text and "Task map shows" not in slower.text
-    assert "Task map shows" in shown.text  # the design argument: the first-step cue only
-    assert (
-        "is reversed"
-        in text.discussion_congruency(term(-0.03, 0.001), errors, rt_none, wrong, "first_step").text
+    values = text.test_values("discussion", "size", term(-0.026, 0.01))
+    assert values["size_verdict"] == text.Claim(
+        "reversed", ("discussion.size_estimate", "discussion.size_p_holm")
     )
-    assert (
-        "is not shown"
-        in text.discussion_congruency(term(0.03, 0.2), errors, rt_none, wrong, "first_step").text
+    assert values["size_estimate"] == -0.026 and values["size_p_holm"] == 0.01
+    assert "within the family “a family” (4 tests) p = 0.010" in values["size_stats"]
+    # the verdict follows the adjusted p, not the raw one, and the estimate's sign
+    assert text.test_values("d", "s", term(-0.026, 0.01, p_holm=0.17))["s_verdict"].text == (
+        "not shown"
     )
-    assert set(shown.rests_on) >= {
-        "discussion.congruency_p_holm", "discussion.errors_congruency_p_holm",
-        "discussion.rt_congruency_p_holm",
+    assert text.test_values("d", "s", term(0.026, 0.01))["s_verdict"].text == "reproduced"
+
+
+def test_a_difference_the_paper_does_not_predict_is_shown_or_not_without_a_direction():
+    from icub_workflow.book import text
+
+    assert text.shown_word(term(-0.03, 0.001)) == text.shown_word(term(0.03, 0.001)) == "shown"
+    assert text.shown_word(term(0.03, 0.001, p_holm=0.2)) == "not shown"
+    assert text.shown_word(term(0.03, float("nan"))) == "not testable"
+    values = text.test_values("d", "grip", term(0.06, 0.3), text.shown_word)
+    assert values["grip_verdict"].text == "not shown"
+
+
+def test_the_front_pages_verdicts_keep_errors_apart():
+    from icub_workflow.book import pages
+
+    anova = {
+        "closed_loop": {
+            "n_networks": 12,
+            "means": {"congruent": 0.07, "incongruent": 0.11, "large": 0.1, "small": 0.08},
+            "wrong_grip_rate": {"congruent_large": 0.0, "congruent_small": 0.0,
+                                "incongruent_large": 0.5, "incongruent_small": 0.7},
+            "errors": {"congruency": term(0.6, 0.001), "size": term(-0.1, 0.5)},
+            "correct_rt": {"congruency": term(-0.01, 0.001), "size": term(0.0, 1.0)},
+        },
+        "contrasts": {"closed_loop": {"congruency": term(0.04, 0.001),
+                                      "size": term(-0.026, 0.01)}},
     }  # fmt: skip
-
-
-def test_the_size_paragraph_names_its_cells_and_calls_a_reversal_reversed():
-    from icub_workflow.book import text
-
-    simple = {"size_in_congruent": term(-0.03, 0.001)}
-    wrong = {"congruent": 0.0, "incongruent": 0.6, "large": 0.3, "small": 0.3}
-    errors, rt = term(0.0, 1.0), term(0.002, 0.6)
-    grip = term(0.064, 0.001)
-    reversed_ = text.discussion_size(term(-0.026, 0.01), errors, rt, simple, wrong, grip)
-    assert "trials that require a power grip gave a higher RMSE than precision ones" in (
-        reversed_.text
-    )
-    assert "**On the paper's measure the size effect is reversed**" in reversed_.text
-    assert (
-        "the small object with a precision grip required gives a lower RMSE than the large "
-        "object with a power grip required" in reversed_.text
-    )
-    assert "twice the difference between the trials that require a power grip" in reversed_.text
-    not_shown = text.discussion_size(term(-0.026, 0.17), errors, rt, simple, wrong, grip)
-    assert "is not shown" in not_shown.text and "reversed" not in not_shown.text
-    # "no difference" is never said from a test that only fails to show one
-    assert "either way" not in not_shown.text and "not evidence of its absence" in not_shown.text
-    unsettled = text.discussion_size(
-        term(-0.026, 0.01), errors, rt, {"size_in_congruent": term(-0.03, 0.2)}, wrong, grip
-    )
-    assert "were not shown to differ in RMSE" in unsettled.text
-    quiet = text.discussion_size(term(0.02, 0.01), errors, rt, simple, wrong, term(0.06, 0.3))
-    assert "is reproduced" in quiet.text and "required grip was not shown to matter" in quiet.text
-    assert {"discussion.size_p_holm", "discussion.size_in_congruent_p_holm"} <= set(
-        reversed_.rests_on
-    )
-
-
-def test_the_teacher_forced_size_is_stated_with_the_required_grip():
-    from icub_workflow.book import text
-
-    simple = {"size_in_congruent": term(-0.01, 0.01), "size_in_incongruent": term(0.05, 0.001)}
-    forced = {"size": term(0.014, 0.03), "congruency:size": term(0.038, 0.001)}
-    words = text.discussion_forced(forced, simple).text
-    assert "the size term is +0.0140" in words and "power − precision), +0.0380" in words
-    assert "the required grip matters" in words
-    assert "The small object with a precision grip required gives a lower RMSE" in words
-    assert "the small object with a power grip required gives a higher RMSE" in words
-    # without the required-grip term (adjusted within its family), no simple effects
-    calm = forced | {"congruency:size": term(0.038, 0.01, p_holm=0.08)}
-    assert "required grip matters" not in text.discussion_forced(calm, simple).text
-    simple_ns = simple | {"size_in_congruent": term(-0.01, 0.3)}
-    assert "were not shown to differ in RMSE" in text.discussion_forced(forced, simple_ns).text
+    values = pages.intro(anova)
+    assert values["congruency_verdict"].text == "reproduced"
+    assert values["size_verdict"].text == "reversed"
+    # the paper claims nothing of errors: a difference there is "shown", not "reproduced"
+    assert values["errors_congruency_verdict"].text == "shown"
+    assert values["rt_congruency_verdict"].text == "reversed"
+    assert values["errors_size_verdict"].text == values["rt_size_verdict"].text == "not shown"
 
 
 def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
