@@ -87,6 +87,12 @@ def execute_pages(
             allow_errors=False,
             kernel_name="python3",
             record_timing=False,  # timings in cell metadata would change the cache key
+            # a cell's outputs can reach the client after its reply; nbclient waits 4 s for them
+            # by default and then drops the rest silently, which lost the last glued values of
+            # a page with hundreds of them on a loaded machine: wait longer, and fail if still
+            # missing rather than build a page without them
+            iopub_timeout=120,
+            raise_on_iopub_timeout=True,
         )
         with client.setup_kernel(cwd=str(book)):
             while True:

@@ -295,42 +295,20 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
         "rmse_phase1_end": curve["phase1_end"],
         "rmse_end": curve["end"],
         "n_networks": curve["n_networks"],
+        "n_trials": anova["closed_loop"]["n_trials"],
+        "df": anova["contrasts"]["closed_loop"]["congruency"]["df"],
+        "cue": text.CUES[cue],
     }
     for mode in MODES:
         m = anova[mode]
-        for key, value in m["means"].items():
-            out[f"{mode}_{key}"] = value
-        for analysis, _ in ANALYSES:
-            for effect, r in m[analysis].items():
-                out[f"{mode}_{analysis}_{effect}"] = text.fmt_f(r)
-        for key, value in m["wrong_grip_rate"].items():
-            out[f"{mode}_wrong_{key}"] = 100 * value
-        contrasts = anova["contrasts"][mode]
-        for term, r in contrasts.items():
-            out[f"{mode}_contrast_{term.replace(':', '_x_')}"] = text.fmt_term(r)
-        interaction = contrasts["congruency:size"]
-        out[f"{mode}_interaction_p"] = interaction["p_holm"]
-        for key, value in m["means_correct"].items():
-            out[f"{mode}_correct_{key}"] = value
-        for effect, short in (("congruency", "cong"), ("size", "size")):
-            out |= _term_values(f"{mode}_{effect}", contrasts[effect])
-            out[f"{mode}_{effect}_p_holm"] = contrasts[effect]["p_holm"]
-            out[f"{mode}_{short}_sentence"] = text.Claim(
-                text.results_sentence(
-                    effect,
-                    science.contrast_verdict(contrasts, effect),
-                    interaction["p_holm"] < science.ALPHA,
-                ),
-                (
-                    f"results.{mode}_{effect}_estimate",
-                    f"results.{mode}_{effect}_p_holm",
-                    f"results.{mode}_interaction_p",
-                ),
-            )
-    out["n_trials"] = anova["closed_loop"]["n_trials"]
-    out["n_networks_tested"] = anova["contrasts"]["closed_loop"]["congruency"]["networks"]
-    out["df"] = anova["contrasts"]["closed_loop"]["congruency"]["df"]
-    out["cue"] = text.CUES[cue]
+        out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
+        out |= {f"{mode}_wrong_{key}": 100 * v for key, v in m["wrong_grip_rate"].items()}
+        out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
+        for effect in ("congruency", "size", "congruency:size"):
+            verdict = text.shown_word if effect == "congruency:size" else text.verdict_word
+            term = anova["contrasts"][mode][effect]
+            name = f"{mode}_{effect.replace('congruency:size', 'grip')}"
+            out |= text.test_values("results", name, term, verdict)
     return out
 
 

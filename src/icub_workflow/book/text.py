@@ -141,6 +141,15 @@ def shown_word(term: dict, alpha: float = ALPHA) -> str:
     return "shown" if word in ("reproduced", "reversed") else word
 
 
+def paper_agreement(verdict: Verdict) -> str:
+    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
+    if not verdict.significant:
+        return "unlike the paper, which reports a significant difference"
+    return (
+        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
+    )
+
+
 def test_values(page: str, prefix: str, term: dict, verdict=verdict_word) -> dict:
     """A test as page values: its numbers as the analysis wrote them, ``_stats`` (all of them for
     reading), and ``_verdict``, a ``Claim`` resting on its estimate and adjusted p."""
@@ -156,39 +165,6 @@ def pct(x: float) -> str:
 
 
 # The main effects: the front page, the results, the discussion and the chapter beyond the paper.
-
-
-def lower_or_higher(verdict: Verdict) -> str:
-    """The RMSE of the condition the paper reports as faster, against the other's: a direction
-    only where the test shows one."""
-    if not verdict.significant:
-        return "not significantly different"
-    return "lower" if verdict.paper_direction else "higher"
-
-
-def paper_agreement(verdict: Verdict) -> str:
-    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
-    if not verdict.significant:
-        return "unlike the paper, which reports a significant difference"
-    return (
-        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
-    )
-
-
-def results_sentence(effect: str, verdict: Verdict, interacts: bool = False) -> str:
-    """One effect of one test mode on the all-trials RMSE (results page), said in RMSE, not
-    speed (errors and correct trials are set apart below it): a difference is stated only where
-    its test, adjusted within its family, is significant. ``interacts``: the required grip's
-    term is significant, so a main effect is only an average over the grips."""
-    if effect == "congruency":
-        first, second, pair = "congruent trials", "incongruent ones", "congruent and incongruent"
-    else:
-        first, second, pair = "large objects", "small ones", "large and small objects"
-    average = " on average over the required grips, which differ" if interacts else ""
-    if verdict.significant:
-        word = "a lower" if verdict.paper_direction else "a higher"
-        return f"{first} gave {word} RMSE than {second}{average}, significantly"
-    return f"the difference between {pair} was not significant"
 
 
 def robot_error_sentence(verdict: Verdict) -> str:
