@@ -1341,7 +1341,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     motor["condition"] = motor["dose"].map(_condition)
     declared_slopes = slope[slope["family"] == FAMILY_DECLARED]
     tables = {
-        "size_declared": pd.concat(
+        "size_declared": pd.concat(  # the declared family first, then the exploration
             [
                 _size_rows(
                     rows := rmse[rmse["family"] == FAMILY_DECLARED],
@@ -1351,12 +1351,12 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
                 _size_rows(
                     declared_slopes, True, test="slope, " + declared_slopes["axis"] + " dose"
                 ),
+                _size_rows(
+                    rows := rmse[rmse["family"] != FAMILY_DECLARED],
+                    verdict=True,
+                    test=[f"effect, {_condition(d)}" for d in rows["dose"]],
+                ),
             ]
-        ).drop(columns="family"),
-        "size_explored": _size_rows(
-            rows := rmse[rmse["family"] != FAMILY_DECLARED],
-            verdict=True,
-            test=[f"effect, {_condition(d)}" for d in rows["dose"]],
         ),
         "size_summary": _size_rows(
             summary,

@@ -488,7 +488,7 @@ def growth_phrase(growth: dict) -> str:
     """How the sweep's wall time grows with its replications (growth.cost_growth's ``change``:
     the last added replication's cost over the first's, less one), within 10% "linearly"."""
     if len(growth["marginal"]) < 2:
-        return "cannot be told: two timings always lie on a line"
+        return "in a way two timings cannot show: it takes three to tell"
     change = growth["change"]
     if abs(change) <= 0.1:
         return "linearly"
