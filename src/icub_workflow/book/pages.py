@@ -1241,11 +1241,10 @@ def _size_rows(rows: pd.DataFrame, verdict: bool = False, **columns) -> pd.DataF
         {"cue": rows["cue"].map(SIZE_CUES)}
         | columns
         | {
-            "estimate [95% CI]": [
-                f"{r['estimate']:+.4f} [{r['ci_low']:+.4f}, {r['ci_high']:+.4f}]"
-                if np.isfinite(r["estimate"])
-                else "–"
-                for _, r in rows.iterrows()
+            "estimate": rows["estimate"].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–"),
+            "95% CI": [
+                f"[{lo:+.4f}, {hi:+.4f}]" if np.isfinite(lo) else "–"
+                for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
             ],
             "p": rows["p"].map(_p),
             "Holm p": rows["p_holm"].map(_p),
