@@ -1348,7 +1348,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
                     test=[f"effect, {_condition(d)}" for d in rows["dose"]],
                 ),
                 _size_rows(
-                    declared_slopes, True, test="slope, " + declared_slopes["axis"] + " dose"
+                    declared_slopes, True, test="slope, " + declared_slopes["axis"]
                 ),
                 _size_rows(
                     rows := rmse[rmse["family"] != FAMILY_DECLARED],
