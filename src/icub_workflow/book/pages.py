@@ -22,7 +22,7 @@ from icub_affordance.embodied_stats import FACTOR_LEVELS, INTERACTION
 from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
 from icub_affordance.robot_statistics import record_table
-from icub_affordance.size_dose import FAMILY_DECLARED, dose_value, ranked_like_size
+from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS, WITHIN
@@ -1082,58 +1082,34 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 
 
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
-    """The sweep's values, its table with each effect's direction over the replications, and
-    its cost's growth; without the sweep, only what it would train."""
+    """The sweep's values, table (each effect's direction) and cost, or what it would train."""
     sweep = config["sweep"]
-    points = int(
-        np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden", "categorisation_cue")])
-    )
-    values: dict = {
-        "ran": bool(config["robustness"]),
-        "command": text.ROBUSTNESS_COMMAND,
-        "points": points,
-        "networks": points * config["network"]["networks"],
-    }
+    points = int(np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))
+    points *= len(sweep["categorisation_cue"])
+    values: dict = {"ran": bool(config["robustness"]), "command": text.ROBUSTNESS_COMMAND}
+    values |= {"points": points, "networks": points * config["network"]["networks"]}
     if not config["robustness"]:
         return values, None
     from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
 
     summary = pd.read_csv(inputs["sweep_summary.csv"])
-    cost = read_cost_table(inputs["sweep_cost.csv"]).sort_values("replications")
+    cost = read_cost_table(inputs["sweep_cost.csv"])
     growth = cost_growth(cost["replications"], cost["seconds"])
-    n, s = growth["sizes"], growth["seconds"]
-    values |= {
-        "seeds": ", ".join(map(str, sweep["seeds"])),
-        "settings": len(summary),
-        "cores": int(cost["cores"].iloc[0]),
-        "machine_cores": int(cost["machine_cores"].iloc[0]),
-        "fewest": int(n[0]),
-        "most": int(n[-1]),
-        "fold": float(s[-1] / s[0]),
-        "cost_change": float(growth["change"]),
-    }
+    values |= {"seeds": ", ".join(map(str, sweep["seeds"])), "settings": len(summary)}
+    values["cost_change"] = float(growth["change"])
     values["cost_shape"] = text.Claim(text.growth_phrase(growth), ("robustness.cost_change",))
     rows = []
-    for _, r in summary.iterrows():
-        for effect in ("congruency", "size"):
-            mean, low, high = (r[f"{effect}_{k}"] for k in ("effect", "ci_low", "ci_high"))
-            n_reps = int(r["replications"])
-            rows.append(
-                {
-                    "cue": text.CUES[r["categorisation_cue"]].removeprefix("the cue "),
-                    "rate": f"{r['learning_rate']:g}",
-                    "hidden": f"{r['hidden']:.0f}",
-                    "effect": effect,
-                    "mean [95% CI]": f"{mean:+.4f}"
-                    + (f" [{low:+.4f}, {high:+.4f}]" if np.isfinite(low) else ""),
-                    "direction": text.SWEEP_DIRECTIONS[
-                        science.interval_direction(n_reps, mean, low, high)
-                    ],
-                    "η²": f"{r[f'{effect}_eta_p2']:.2f}",
-                    "significant": f"{r[f'{effect}_n_significant']:.0f} of {n_reps}",
-                    "reversed": f"{r[f'{effect}_n_reversed']:.0f} of {n_reps}",
-                }
-            )
+    for (_, r), effect in ((row, e) for row in summary.iterrows() for e in ("congruency", "size")):
+        n = r["replications"]
+        mean, low, high = (r[f"{effect}_{k}"] for k in ("effect", "ci_low", "ci_high"))
+        rows.append(
+            {"cue": r["categorisation_cue"], "rate": r["learning_rate"], "hidden": r["hidden"],
+             "effect": effect, "mean": f"{mean:+.4f}",
+             "95% CI": f"[{low:+.4f}, {high:+.4f}]" if np.isfinite(low) else "–",
+             "direction": text.SWEEP_DIRECTIONS[science.interval_direction(n, mean, low, high)],
+             "η²": round(r[f"{effect}_eta_p2"], 2)}
+            | {k: f"{r[f'{effect}_n_{k}']:.0f} of {n:.0f}" for k in ("significant", "reversed")}
+        )  # fmt: skip
     return values, pd.DataFrame(rows)
 
 
@@ -1202,15 +1178,6 @@ def notes(config: dict) -> dict:
     }
 
 
-def _study_table(path: str) -> pd.DataFrame:
-    """A size-study table with its doses as numbers (the controls' names stay), its estimate
-    (``diff`` or ``slope``) as ``estimate``."""
-    frame = pd.read_csv(path).rename(columns={"diff": "estimate", "slope": "estimate"})
-    if "dose" in frame:
-        frame["dose"] = [dose_value(d) for d in frame["dose"].astype(str)]
-    return frame
-
-
 def _t_from_interval(row: Mapping) -> float:
     """t = estimate / se as ``stats.t_term`` computed it, read back from the 95% interval the
     analysis wrote (half-width = t(0.975, df) · se): the slope and grip tables keep no t."""
@@ -1226,7 +1193,7 @@ SIZE_CONTROLS = {"removed": "no size in input", "equal_grips": "dose 0, equal gr
 
 
 def _condition(dose) -> str:
-    return SIZE_CONTROLS[dose] if isinstance(dose, str) else f"dose {dose:g}"
+    return SIZE_CONTROLS.get(str(dose)) or f"dose {float(dose):g}"
 
 
 def _p(value: float) -> str:
@@ -1234,67 +1201,50 @@ def _p(value: float) -> str:
 
 
 def _size_rows(rows: pd.DataFrame, verdict: bool = False, **columns) -> pd.DataFrame:
-    """Size-study tests as the chapter shows them: cue, the ``columns`` naming each test, the
-    estimate with its 95% interval, p, Holm p, its family and (``verdict``, tests of the RMSE)
-    the verdict word (a dash where a test could not be made, or is no hypothesis)."""
-    out = pd.DataFrame(
-        {"cue": rows["cue"].map(SIZE_CUES)}
-        | columns
-        | {
-            "estimate": rows["estimate"].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–"),
-            "95% CI": [
-                f"[{lo:+.4f}, {hi:+.4f}]" if np.isfinite(lo) else "–"
-                for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
-            ],
-            "p": rows["p"].map(_p),
-            "Holm p": rows["p_holm"].map(_p),
-            "family": rows["family"],
-        }
-    )
+    """Size-study tests as shown: cue, ``columns``, estimate, interval, p, Holm p, family and
+    (``verdict``: tests of the RMSE) the verdict word; a dash: no test could be made."""
+    number = "{:+.4f}".format
+    out = pd.DataFrame({"cue": rows["cue"].map(SIZE_CUES)} | columns)
+    out["estimate"] = [number(v) if np.isfinite(v) else "–" for v in rows["estimate"]]
+    out["95% CI"] = [
+        f"[{number(lo)}, {number(hi)}]" if np.isfinite(lo) else "–"
+        for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
+    ]
+    out["p"], out["Holm p"] = rows["p"].map(_p), rows["p_holm"].map(_p)
+    out["family"] = rows["family"]
     if verdict:
         out["verdict"] = [text.size_verdict(r) for _, r in rows.iterrows()]
     return out
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The chapter "What drives the size effect": its values, the verdict words of the declared
-    family and of the exploration (each a Claim on the numbers it rests on), and its tables."""
-    summary = _study_table(inputs["size_summary.csv"])
-    slope = _study_table(inputs["size_slope.csv"])
-    grips = _study_table(inputs["size_grips.csv"])
-    checks = _study_table(inputs["size_manipulation.csv"])
-    power = pd.read_csv(inputs["size_power.csv"])
+    """The chapter "What drives the size effect": values, verdict words (Claims), tables."""
+    read = {"diff": "estimate", "slope": "estimate"}
+    summary, slope, grips, checks, power = (
+        pd.read_csv(inputs[f"size_{name}.csv"], dtype={"dose": str}).rename(columns=read)
+        for name in ("summary", "slope", "grips", "manipulation", "power")
+    )
     try:
-        motor = _study_table(inputs["size_motor.csv"])
+        motor = pd.read_csv(inputs["size_motor.csv"], dtype={"dose": str})
     except pd.errors.EmptyDataError:  # no removal control in this build
         motor = pd.DataFrame(columns=["dose", "cue", "geometry", "estimate", "p_holm"])
-    study = config["size_dose"]
-    top, cues = max(study["doses"]), study["categorisation_cue"]
+    study, cues = config["size_dose"], config["size_dose"]["categorisation_cue"]
+    top = str(float(max(study["doses"])))
     rmse = summary[summary["measure"] == "rmse"]
     at_top = checks[checks["dose"] == top]
     values: dict = {
         "doses": ", ".join(f"{d:g}" for d in study["doses"]),
-        "top_dose": f"{top:g}",
+        "top_dose": f"{float(top):g}",
         "replications": int(summary["replications"].max()),
         "delivered_top": float(rmse.loc[rmse["dose"] == top, "delivered_dose"].mean()),
-        "power_replications": int(power["replications"].max()) if len(power) else 0,
-    } | {
-        f"ratio_{name}_{shape}": float(
-            at_top.loc[(at_top["shape"] == shape) & (at_top["map"] == name), "ratio"].min()
-        )
-        for shape in ("ball", "cube")
-        for name in ("object", "goal")
     }
+    for (shape, name), ratios in at_top.groupby(["shape", "map"])["ratio"]:
+        values[f"ratio_{name}_{shape}"] = float(ratios.min())
     for _, row in power[np.isclose(power["effect"], 0.02)].iterrows():
         values[f"power_{row['cue']}"] = float(row["power_holm_bound"])
-    claims: dict = {
-        "check": text.Claim(
-            "arrived"
-            if min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
-            else "did not fully arrive",
-            ("size.ratio_goal_ball", "size.ratio_goal_cube"),
-        )
-    }
+    arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
+    rests = ("size.ratio_goal_ball", "size.ratio_goal_cube")
+    claims: dict = {"check": text.Claim("arrived" if arrived else "did not fully arrive", rests)}
 
     def tested(key: str, cue: str, row: Mapping) -> tuple[str, ...]:
         values[f"{key}_{cue}"] = float(row["estimate"])
@@ -1302,13 +1252,14 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
         return (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
 
-    slopes, doses = [], {"none": min(study["doses"]), "top": top}
+    slopes = []
+    doses = {"none": str(float(min(study["doses"]))), "top": top}
     for cue in cues:
         for key, dose in (doses | {"removed": "removed", "equal": "equal_grips"}).items():
-            rows = rmse[(rmse["cue"] == cue) & (rmse["dose"].astype(str) == str(dose))]
-            if len(rows):
-                rests = tested(key, cue, rows.iloc[0])
-                claims[f"{key}_verdict_{cue}"] = text.Claim(text.size_verdict(rows.iloc[0]), rests)
+            for _, row in rmse[(rmse["cue"] == cue) & (rmse["dose"] == dose)].iterrows():
+                claims[f"{key}_verdict_{cue}"] = text.Claim(
+                    text.size_verdict(row), tested(key, cue, row)
+                )
         fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")]
         slopes.append(fit := fit[fit["axis"] == "delivered"].iloc[0])
         claims[f"slope_trend_{cue}"] = text.Claim(text.trend_phrase(fit), tested("slope", cue, fit))
@@ -1320,76 +1271,38 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     claims["account"] = text.Claim(
         text.account_phrase(slopes), tuple(f"size.slope_p_holm_{cue}" for cue in cues)
     )
-    if len(removed := rmse[rmse["dose"].astype(str) == "removed"]):
+    if len(removed := rmse[rmse["dose"] == "removed"]):
         claims["removal_source"] = text.Claim(
             text.removal_phrase(removed), tuple(f"size.removed_p_holm_{c}" for c in removed["cue"])
         )
-    motor_keys = [
-        f"motor_p_holm_{d if isinstance(d, str) else f'{d:g}'}_{c}_{g}"
-        for d, c, g in zip(motor["dose"], motor["cue"], motor["geometry"], strict=True)
-    ]
-    values |= dict(zip(motor_keys, motor["p_holm"].astype(float), strict=True))
+    keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
+    values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
     if len(motor):
         found = motor.loc[motor["p_holm"] < science.ALPHA, "geometry"].unique()
-        claims["motor_found"] = text.Claim(
-            text.named_measures(found), tuple(f"size.{k}" for k in motor_keys)
-        )
+        claims["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
     like_size = ranked_like_size(pd.read_csv(inputs["size_geometry.csv"]))
     values["like_size"] = text.named_measures(like_size)
     motor["cell"] = [f"{r['estimate']:+.4f} ({_p(r['p_holm'])})" for _, r in motor.iterrows()]
-    motor["condition"] = motor["dose"].map(_condition)
-    declared_slopes = slope[slope["family"] == FAMILY_DECLARED]
+    motor["condition"], motor["cue"] = motor["dose"].map(_condition), motor["cue"].map(SIZE_CUES)
+    tests = pd.concat(
+        [
+            rmse.assign(test="effect, " + rmse["dose"].map(_condition)),
+            slope.assign(test="slope, delivered"),
+        ]
+    )
+    tests = tests[(tests["measure"] == "rmse") & (tests.get("axis", "delivered") != "nominal")]
+    tests = tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
+    conditions = {"condition": summary["dose"].map(_condition), "measure": summary["measure"]}
+    conditions["Goal ratio"] = summary["large_small_ratio_goal"].map("{:.2f}".format)
+    relative = summary["relative_to_mean"].where(summary["measure"].isin(["rmse", "rmse_correct"]))
     tables = {
-        "size_declared": pd.concat(  # the declared family first, then the exploration
-            [
-                _size_rows(
-                    rows := rmse[rmse["family"] == FAMILY_DECLARED],
-                    verdict=True,
-                    test=[f"effect, {_condition(d)}" for d in rows["dose"]],
-                ),
-                _size_rows(
-                    declared_slopes, True, test="slope, " + declared_slopes["axis"]
-                ),
-                _size_rows(
-                    rows := rmse[rmse["family"] != FAMILY_DECLARED],
-                    verdict=True,
-                    test=[f"effect, {_condition(d)}" for d in rows["dose"]],
-                ),
-            ]
-        ),
-        "size_summary": _size_rows(
-            summary,
-            condition=summary["dose"].map(_condition),
-            measure=summary["measure"],
-            **{
-                "Goal ratio": summary["large_small_ratio_goal"].map(lambda v: f"{v:.2f}"),
-                "rel. to mean": [  # a proportion of an error only for the RMSE measures
-                    f"{v:+.3f}" if m in ("rmse", "rmse_correct") and np.isfinite(v) else "–"
-                    for m, v in zip(summary["measure"], summary["relative_to_mean"], strict=True)
-                ],
-            },
+        "size_declared": _size_rows(tests, True, test=tests["test"]),  # declared first
+        "size_summary": _size_rows(summary, **conditions).assign(  # of an error: the RMSEs
+            **{"rel. to mean": relative.map(lambda v: f"{v:+.3f}" if np.isfinite(v) else "–")}
         ),
         "size_slope": _size_rows(slope, dose=slope["axis"], measure=slope["measure"]),
-        "size_power": pd.DataFrame(
-            {
-                "cue": power["cue"].map(SIZE_CUES),
-                "effect": power["effect"].map(lambda v: f"{v:g}"),
-                "σ_rep": power["sigma_rep"].map(lambda v: f"{v:.4f}"),
-                "σ_net": power["sigma_net"].map(lambda v: f"{v:.4f}"),
-                "power": power["power"].map(lambda v: f"{v:.2f}"),
-                "power, Holm": power["power_holm_bound"].map(lambda v: f"{v:.2f}"),
-                "n for 80%": power["replications_for_80"],
-                "n, Holm": power["replications_for_80_holm_bound"],
-            }
-        ),
-        "size_motor": motor.assign(cue=motor["cue"].map(SIZE_CUES))
-        .pivot_table(
-            index=["condition", "cue"],
-            columns="geometry",
-            values="cell",
-            aggfunc="first",
-            sort=False,
-        )
+        "size_power": power,  # formatted by the page
+        "size_motor": motor.pivot(index=["condition", "cue"], columns="geometry", values="cell")
         .rename(columns=text.GEOMETRY_SHORT)
         .reset_index(),
     }

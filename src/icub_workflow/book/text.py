@@ -476,23 +476,18 @@ def floor_sentence(at_floor: bool) -> str:
 ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
 #: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
-SWEEP_DIRECTIONS = {
-    "paper": "paper's direction",
-    "against": "reversed",
-    "unclear": "not shown",
-    "single": "one replication",
-}
+SWEEP_DIRECTIONS = {"paper": "paper's direction", "against": "reversed", "unclear": "not shown"}
+SWEEP_DIRECTIONS["single"] = "one replication"
 
 
 def growth_phrase(growth: dict) -> str:
-    """How the sweep's wall time grows with its replications (growth.cost_growth's ``change``:
-    the last added replication's cost over the first's, less one), within 10% "linearly"."""
+    """How the sweep's wall time grows (growth.cost_growth's ``change``, the last added
+    replication's cost over the first's less one): within 10%, "linearly"."""
     if len(growth["marginal"]) < 2:
         return "in a way two timings cannot show: it takes three to tell"
-    change = growth["change"]
-    if abs(change) <= 0.1:
+    if abs(growth["change"]) <= 0.1:
         return "linearly"
-    return "faster than linearly" if change > 0 else "no faster than linearly"
+    return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
 
 
 def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
@@ -858,55 +853,46 @@ def goal_response_conclusion(differences) -> Claim | None:
 # ---- What drives the size effect -----------------------------------------------------------
 
 #: The demonstrations' measures (icub_affordance.size_dose.GEOMETRY), in short.
-GEOMETRY_SHORT = {
-    "demo_path_length": "path length",
-    "demo_spread": "spread",
-    "demo_grip_distance": "grips' distance",
-}
+GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread"}
+GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
 
 
 def size_verdict(term) -> str:
-    """A size-study test (positive: the paper's direction, large objects lower) by its Holm p:
-    "in the paper's direction", "reversed", "not shown" (not "none": only an equivalence test
-    says that) or "not testable"."""
+    """A size-study test (positive: large objects lower) by its Holm p: "in the paper's
+    direction", "reversed", "not shown" (not "none": that needs an equivalence test)."""
     word = verdict_word({"estimate": term["estimate"], "p": term["p"], "p_holm": term["p_holm"]})
     return {"reproduced": "in the paper's direction"}.get(word, word)
 
 
 def trend_phrase(term) -> str:
     """Where a tested change moves the size effect (positive: towards the paper's direction)."""
-    return {
-        "in the paper's direction": "towards the paper's direction",
-        "reversed": "away from the paper's direction",
-    }.get(size_verdict(term), "by no amount its test shows")
+    word = size_verdict(term)
+    if word in ("not shown", "not testable"):
+        return "by no amount its test shows"
+    return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
 def account_phrase(slopes) -> str:
-    """What more size delivered to the maps, the paper's mechanism, does to the size effect,
-    from the declared slopes of every cue timing."""
-    words = {size_verdict(s) for s in slopes}
+    """What more size delivered to the maps (the paper's mechanism) does, from every cue
+    timing's declared slope."""
+    words = {trend_phrase(s) for s in slopes}
     if len(words) > 1:
         return "moves the size effect differently under the two cue timings"
-    return {
-        "reversed": "pushes the size effect against the paper",
-        "in the paper's direction": "pushes the size effect the paper's way",
-    }.get(words.pop(), "is not shown to move the size effect")
+    return {"away from the paper's direction": "pushes the size effect against the paper",
+            "towards the paper's direction": "pushes the size effect the paper's way"}.get(
+        words.pop(), "is not shown to move the size effect")  # fmt: skip
 
 
 def removal_phrase(removed) -> str:
     """What the removal control (no size in the input) says of the motor side, from its rows."""
     words = {size_verdict(r) for _, r in removed.iterrows()}
-    learned = "the movements the networks learn can {} without any size in what they see"
-    if "reversed" in words:
-        return learned.format("reverse the size effect")
-    if "in the paper's direction" in words:
-        return learned.format("give the paper's size effect")
+    can = "reverse the" if "reversed" in words else "give the paper's"
+    if words & {"reversed", "in the paper's direction"}:
+        return f"the movements the networks learn can {can} size effect without size in the input"
     return "this build cannot say whether the movements alone produce a size effect"
 
 
-def named_measures(measures, none: str = "none of the measures") -> str:
-    """The demonstrations' measures named in short, joined by "and"; ``none`` if there are none."""
-    words = [f"the {GEOMETRY_SHORT[m]}" for m in measures]
-    if not words:
-        return none
+def named_measures(measures) -> str:
+    """The demonstrations' measures named in short, joined by "and"."""
+    words = [f"the {GEOMETRY_SHORT[m]}" for m in measures] or ["none of the measures"]
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
