@@ -449,19 +449,18 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     pd.DataFrame([row]).to_csv(inputs["sweep_summary.csv"], index=False)
     write_cost_table(cost_table([1, 2], [20.0, 30.0], cores=2), inputs["sweep_cost.csv"])
     values, table = pages.robustness(inputs, config)
-    assert values["ran"] and values["sweep_run"].startswith(
-        "This build ran the sweep: 3 replications (seeds 1, 2, 3) of one setting, 3 points of"
-    )
-    assert (
-        "congruent lower in RMSE than incongruent, the paper's direction"
-        in values["sweep_findings"]
-    )
-    assert (
-        "large objects higher in RMSE than small objects, against the paper"
-        in values["sweep_findings"]
-    )
-    assert "it takes three to tell" in values["cost_findings"]
+    assert values["ran"] and values["seeds"] == "1, 2, 3" and values["settings"] == 1
+    assert table["direction"].tolist() == ["paper's direction", "reversed"]
     assert table["significant"].tolist() == ["3 of 3", "0 of 3"]
+    assert table["reversed"].tolist() == ["0 of 3", "2 of 3"]
+    # a flipped interval flips the word: the size interval made to include 0
+    summary = pd.read_csv(inputs["sweep_summary.csv"]).assign(size_ci_high=0.01)
+    summary.to_csv(tmp_path / "flipped.csv", index=False)
+    _, flipped = pages.robustness(inputs | {"sweep_summary.csv": tmp_path / "flipped.csv"}, config)
+    assert flipped["direction"].tolist() == ["paper's direction", "not shown"]
+    assert "it takes three to tell" in values["cost_shape"].text
+    assert values["cost_shape"].rests_on == ("robustness.cost_change",)
+    values = pages.traced({"robustness": values})["robustness"]
 
     book = tmp_path / "book"
     (book / "_data" / "tables").mkdir(parents=True)
@@ -484,7 +483,8 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
         "\"Reproduce and vary it\" gives each rule's share); the book's own job ran on the "
         "Slurm cluster `hpc` (partition `short`)"
     )
-    for words in (values["sweep_run"], "the paper's direction", "0 of 3", "wall time (s)", whole):
+    ran = "This build ran the sweep: seeds 1, 2, 3, 1 setting, 3 points"
+    for words in (ran, "paper's direction", "0 of 3", "wall time (s)", whole, "it takes three"):
         assert json.dumps(words)[1:-1] in shown, words
     assert "did not run the sweep" not in shown
 

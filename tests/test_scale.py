@@ -154,11 +154,12 @@ def dry_run(workdir, *args, rule="book"):
 
 @pytest.mark.slow
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
-    from icub_workflow.book.text import sweep_size
+    from icub_workflow.book.pages import robustness
 
     workdir = scratch_workflow(tmp_path)
     config = load_test_config()
-    points, networks = sweep_size(config)
+    values, _ = robustness({}, config | {"robustness": False})
+    points, networks = values["points"], values["networks"]
     counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
     n = config["network"]["networks"]
     assert networks == points * n
@@ -288,70 +289,27 @@ def test_the_cost_config_times_replications_of_the_main_runs_networks():
 
 def test_the_cost_words_follow_the_numbers():
     from icub_affordance.growth import cost_growth
-    from icub_workflow.book import text
-    from icub_workflow.sweep_timing import cost_table
+    from icub_workflow.book.text import growth_phrase
 
-    def cost_findings(cost):
-        return text.cost_findings(cost, cost_growth(cost["replications"], cost["seconds"]))
+    def words(replications, seconds):
+        return growth_phrase(cost_growth(replications, seconds))
 
-    linear = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], cores=2))
-    assert "10.0 s per replication and an intercept of 10.0 s" in linear
-    assert "10.0 s between 1 and 4, 10.0 s between 4 and 10 replications" in linear
-    assert "So the cost grew linearly" in linear
-    faster = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 400.0], cores=2))
-    assert "grew faster than linearly" in faster
-    slower = cost_findings(cost_table([1, 4, 10], [20.0, 80.0, 140.0], cores=2))
-    assert "grew no faster than linearly" in slower and "50% less" in slower
-    quiet = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 0.0]))
-    assert "Nothing else loaded the machine" in quiet and "shared" not in quiet
-    shared = cost_findings(cost_table([1, 4, 10], [20.0, 50.0, 110.0], 2, [0.01, 0.02, 1.2]))
-    assert "while 10 replications were timed, other work kept 1.2 of its cores busy" in shared
-    two = cost_findings(cost_table([1, 2], [20.0, 30.0], cores=2))
-    assert "it takes three to tell" in two and "So the cost" not in two
-
-
-def test_the_sweep_words_follow_the_numbers():
-    import pandas as pd
-
-    from icub_workflow.book.text import sweep_findings, sweep_summary_display
-
-    row = {
-        "learning_rate": 0.075,
-        "hidden": 10,
-        "categorisation_cue": "first_step",
-        "replications": 10,
-        "congruency_effect": 0.03,
-        "congruency_ci_low": 0.02,
-        "congruency_ci_high": 0.04,
-        "congruency_eta_p2": 0.7,
-        "congruency_n_significant": 9,
-        "congruency_n_reversed": 0,
-        "size_effect": -0.02,
-        "size_ci_low": -0.03,
-        "size_ci_high": -0.01,
-        "size_eta_p2": 0.4,
-        "size_n_significant": 0,
-        "size_n_reversed": 6,
-    }
-    summary = pd.DataFrame([row, row | {"categorisation_cue": "all_steps", "size_ci_high": 0.01}])
-    text = sweep_findings(summary)
-    assert (
-        "congruent lower in RMSE than incongruent, the paper's direction (mean difference 0.0300"
-        in text
-    )
-    assert "in 9 of 10 replications, significantly reversed in 0" in text
-    assert "large objects higher in RMSE than small objects, against the paper" in text
-    assert "no consistent difference between large objects and small objects" in text
-    table = sweep_summary_display(summary)
-    assert len(table) == 4  # two settings x two effects
-    assert table.loc[0, "mean difference [95% CI]"] == "0.0300 [0.0200, 0.0400]"
-    assert table.loc[1, "reversed"] == "6 of 10"
+    assert words([1, 4, 10], [20.0, 50.0, 110.0]) == "linearly"
+    assert words([1, 4, 10], [20.0, 50.0, 400.0]) == "faster than linearly"
+    assert words([1, 4, 10], [20.0, 80.0, 140.0]) == "no faster than linearly"
+    assert "it takes three to tell" in words([1, 2], [20.0, 30.0])
 
 
 def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers():
-    from icub_workflow.book.text import ROBUSTNESS_COMMAND, robustness_not_run
+    from icub_workflow.book.pages import robustness
+    from icub_workflow.book.text import ROBUSTNESS_COMMAND
 
     config = load_config()
-    text = robustness_not_run(config)
-    assert "did not run the sweep" in text and ROBUSTNESS_COMMAND in text
-    assert ROBUSTNESS_COMMAND == "snakemake -c2 --config robustness=True"
+    values, table = robustness({}, config)
+    assert values["ran"] is False and table is None
+    assert values["command"] == ROBUSTNESS_COMMAND == "snakemake -c2 --config robustness=True"
+    sweep = config["sweep"]
+    points = len(sweep["seeds"]) * len(sweep["learning_rate"]) * len(sweep["hidden"])
+    points *= len(sweep["categorisation_cue"])
+    assert values["points"] == points
+    assert values["networks"] == points * config["network"]["networks"]

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import load_config, load_test_config, som_config
+from conftest import REPO, load_config, load_test_config, som_config
 from scipy import stats as sps
 
 from icub_affordance.readings import BY_EXCESS, NULL_CONTROL
@@ -31,7 +31,6 @@ from icub_affordance.size_dose import (
     motor_tests,
     power,
     power_table,
-    ranked_like_size,
     replications_for,
     size_free_maps,
     slopes,
@@ -39,6 +38,7 @@ from icub_affordance.size_dose import (
     variance_components,
 )
 from icub_affordance.som import active_units, bump, kept_whole, train_soms
+from icub_affordance.stats import t_term
 from icub_workflow.runs import plan_runs
 
 OBJECTS = ["big_ball", "small_ball", "big_cube", "small_cube"]
@@ -577,70 +577,88 @@ def test_the_study_writes_its_contract_and_the_dose_arrives(built):
 # ---- the chapter's sentences follow their tests ---------------------------------------------
 
 
-def test_the_size_sentences_follow_their_holm_verdicts():
+def test_the_size_verdict_words_follow_their_holm_tests():
     from icub_workflow.book import text
 
-    row = {"diff": -0.03, "ci_low": -0.05, "ci_high": -0.01, "p": 0.001, "p_holm": 0.01,
-           "replications": 3, "family": "a family"}  # fmt: skip
-    assert "reversed" in text.size_dose_claim(row, "first_step", "top", "At 0.6").text
-    assert (
-        "paper's direction"
-        in text.size_dose_claim(
-            row | {"diff": 0.03, "ci_low": 0.01, "ci_high": 0.05}, "first_step", "top", "At 0.6"
-        ).text
+    row = {"estimate": -0.03, "p": 0.001, "p_holm": 0.01}
+    assert text.size_verdict(row) == "reversed"
+    assert text.size_verdict(row | {"estimate": 0.03}) == "in the paper's direction"
+    # a raw p under 0.05 that Holm lifts above it: not shown, whatever the raw interval
+    assert text.size_verdict(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
+    assert text.size_verdict(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
+    assert text.trend_phrase(row) == "away from the paper's direction"
+    assert text.trend_phrase(row | {"estimate": 0.03}) == "towards the paper's direction"
+    assert text.trend_phrase(row | {"p_holm": 0.3}) == "by no amount its test shows"
+    against = text.account_phrase([row, row])
+    assert against == "pushes the size effect against the paper"
+    assert "differently" in text.account_phrase([row, row | {"p_holm": 0.3}])
+    assert "not shown" in text.account_phrase([row | {"p_holm": 0.3}] * 2)
+    removed = pd.DataFrame([row, row | {"p_holm": 0.3}])
+    assert "can reverse the size effect" in text.removal_phrase(removed)
+    assert "cannot say" in text.removal_phrase(removed.assign(p_holm=0.3))
+    assert text.named_measures(["demo_path_length", "demo_grip_distance"]) == (
+        "the path length and the grips' distance"
     )
-    # a raw p under 0.05 that Holm lifts above it: not detected, whatever the raw interval
-    said = text.size_dose_claim(row | {"p": 0.01, "p_holm": 0.2}, "all_steps", "top", "At 0.6")
-    assert "not detected within its family" in said.text and "reversed" not in said.text
-    assert "Holm-adjusted within “a family” p = 0.200" in said.text
-    assert said.rests_on == ("size.top_diff_all_steps", "size.top_p_holm_all_steps")
-    source = text.size_removal_claim(row, "first_step").text
-    assert "motor side" in source
-    assert "cannot say" in text.size_removal_claim(row | {"p_holm": 0.3}, "first_step").text
-    slope = {"slope": -0.05, "ci_low": -0.09, "ci_high": -0.01, "df": 2, "p": 0.03,
-             "p_holm": 0.01, "replications": 3, "family": "a family"}  # fmt: skip
-    assert "away from the paper's" in text.size_slope_claim(slope, "all_steps").text
-    assert "towards the paper's" in text.size_slope_claim(slope | {"slope": 0.05}, "all_steps").text
-    assert (
-        "no change with the delivered size is detected"
-        in text.size_slope_claim(slope | {"p_holm": 0.3}, "all_steps").text
+    assert text.named_measures([]) == "none of the measures"
+
+
+def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
+    """The chapter's values from this build's study tables; a flipped slope, effect or p flips
+    the words, and every verdict names the numbers it rests on."""
+    from icub_workflow.book import pages
+
+    folder = REPO / "data" / "size_dose"
+    if not (folder / "summary.csv").exists():
+        pytest.skip("needs the size study's outputs (data/size_dose)")
+    names = {"size_summary.csv": "summary.csv", "size_slope.csv": "slope.csv",
+             "size_power.csv": "power.csv", "size_grips.csv": "grip_distance.csv",
+             "size_manipulation.csv": "manipulation.csv", "size_motor.csv": "motor.csv",
+             "size_geometry.csv": "geometry.csv"}  # fmt: skip
+    inputs = {name: folder / file for name, file in names.items()}
+    config = load_config()
+
+    def chapter(**changed):
+        for name, change in changed.items():
+            frame = change(pd.read_csv(inputs[f"size_{name}.csv"]))
+            frame.to_csv(tmp_path / f"{name}.csv", index=False)
+        paths = inputs | {f"size_{n}.csv": tmp_path / f"{n}.csv" for n in changed}
+        values, tables = pages.size_study(paths, config)
+        return pages.traced({"size": values}), tables
+
+    found, tables = chapter()
+    size = found["size"]
+    assert found["claims"]["size"]["slope_trend_all_steps"] == [
+        "size.slope_all_steps", "size.slope_p_holm_all_steps"]  # fmt: skip
+    declared = tables["size_declared"]
+    assert set(declared["verdict"]) <= {"in the paper's direction", "reversed", "not shown"}
+    # t read back from the written interval is the t the analysis computed (stats.t_term)
+    term = t_term(-0.0377, 0.0025, 5.0)
+    assert pages._t_from_interval(term) == pytest.approx(term["t"], rel=1e-9)
+    assert np.isfinite(size["slope_t_all_steps"]) and size["slope_t_all_steps"] < 0
+
+    def negate(frame, measure="rmse"):
+        rows = frame["measure"] == measure
+        frame.loc[rows, ["diff" if "diff" in frame else "slope", "ci_low", "ci_high"]] = -frame.loc[
+            rows, ["diff" if "diff" in frame else "slope", "ci_high", "ci_low"]
+        ].values
+        return frame
+
+    flipped, _ = chapter(slope=negate, summary=negate, grips=negate)
+    turned = {"away from the paper's direction": "towards the paper's direction",
+              "towards the paper's direction": "away from the paper's direction"}  # fmt: skip
+    turned |= {"reversed": "in the paper's direction", "in the paper's direction": "reversed"}
+    for key, word in size.items():
+        if key in found["claims"]["size"] and word in turned:
+            assert flipped["size"][key] == turned[word], key
+    lifted, _ = chapter(
+        slope=lambda f: f.assign(p_holm=0.5), summary=lambda f: f.assign(p_holm=0.5)
     )
-
-
-def test_the_motor_sentence_names_only_what_survives_holm():
-    from icub_workflow.book import text
-
-    motor = pd.DataFrame(
-        [
-            {"dose": "removed", "cue": "all_steps", "geometry": "demo_path_length",
-             "estimate": 0.01, "replications": 3, "networks": 36, "p_holm": 0.001,
-             "family": "motor"},
-            {"dose": "removed", "cue": "all_steps", "geometry": "demo_spread", "estimate": 0.02,
-             "replications": 3, "networks": 36, "p_holm": 0.4, "family": "motor"},
-        ]
-    )  # fmt: skip
-    said = text.size_motor_claim(motor, "Without size")
-    assert "path" in said.text and "spread" not in said.text
-    assert said.rests_on[0] == "size.motor_p_holm_removed_all_steps_demo_path_length"
-    none = text.size_motor_claim(motor.assign(p_holm=0.5), "Without size").text
-    assert "none of the demonstrations' measures" in none
-
-
-def test_the_caveat_names_the_measures_that_rank_as_size_does():
-    from icub_workflow.book import text
-
-    rows = []
-    for seed in (1, 2):
-        for obj, length, spread in (("big_ball", 2.0, 0.1), ("small_ball", 1.0, 0.3),
-                                    ("big_cube", 3.0, 0.2), ("small_cube", 1.5, 0.1)):  # fmt: skip
-            for grip in (0, 1):
-                rows.append({"seed": seed, "object": obj, "grip": grip,
-                             "demo_path_length": length, "demo_spread": spread,
-                             "demo_grip_distance": 1.0})  # fmt: skip
-    assert ranked_like_size(pd.DataFrame(rows)) == ["demo_path_length"]
-    said = text.geometry_like_size(["demo_path_length", "demo_grip_distance"])
-    assert " and " in said and " are larger" in said
-    assert "None" in text.geometry_like_size([])
+    assert lifted["size"]["slope_trend_first_step"] == "by no amount its test shows"
+    assert lifted["size"]["account"] == "is not shown to move the size effect"
+    assert lifted["size"]["none_verdict_first_step"] == "not shown"
+    assert "cannot say" in lifted["size"]["removal_source"]
+    unmoved, _ = chapter(motor=lambda f: f.assign(p_holm=0.5))
+    assert unmoved["size"]["motor_found"] == "none of the measures"
 
 
 # ---- size apart from the grips' distance ----------------------------------------------------

@@ -22,7 +22,7 @@ from icub_affordance.embodied_stats import FACTOR_LEVELS, INTERACTION
 from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
 from icub_affordance.robot_statistics import record_table
-from icub_affordance.size_dose import FAMILY_DECLARED, dose_value, ranked_like_size
+from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS, WITHIN
@@ -1022,28 +1022,35 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 
 
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
-    """The sweep's sentences and table, or what the page says when this build did not run it."""
+    """The sweep's values, table (each effect's direction) and cost, or what it would train."""
+    sweep = config["sweep"]
+    points = int(np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))
+    points *= len(sweep["categorisation_cue"])
+    values: dict = {"ran": bool(config["robustness"]), "command": text.ROBUSTNESS_COMMAND}
+    values |= {"points": points, "networks": points * config["network"]["networks"]}
     if not config["robustness"]:
-        return {"ran": False, "not_run": text.robustness_not_run(config)}, None
+        return values, None
     from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
 
     summary = pd.read_csv(inputs["sweep_summary.csv"])
     cost = read_cost_table(inputs["sweep_cost.csv"])
-    n_points, n_networks = text.sweep_size(config)
-    seeds = config["sweep"]["seeds"]
-    settings = f"each of {len(summary)} settings" if len(summary) > 1 else "one setting"
-    return {
-        "ran": True,
-        "sweep_run": (
-            f"This build ran the sweep: {len(seeds)} replications (seeds "
-            f"{', '.join(map(str, seeds))}) of {settings}, {n_points} points of "
-            f"{config['network']['networks']} networks, {n_networks} networks in all."
-        ),
-        "sweep_findings": text.sweep_findings(summary),
-        "cost_findings": text.cost_findings(
-            cost, cost_growth(cost["replications"], cost["seconds"])
-        ),
-    }, text.sweep_summary_display(summary)
+    growth = cost_growth(cost["replications"], cost["seconds"])
+    values |= {"seeds": ", ".join(map(str, sweep["seeds"])), "settings": len(summary)}
+    values["cost_change"] = float(growth["change"])
+    values["cost_shape"] = text.Claim(text.growth_phrase(growth), ("robustness.cost_change",))
+    rows = []
+    for (_, r), effect in ((row, e) for row in summary.iterrows() for e in ("congruency", "size")):
+        n = r["replications"]
+        mean, low, high = (r[f"{effect}_{k}"] for k in ("effect", "ci_low", "ci_high"))
+        rows.append(
+            {"cue": r["categorisation_cue"], "rate": r["learning_rate"], "hidden": r["hidden"],
+             "effect": effect, "mean": f"{mean:+.4f}",
+             "95% CI": f"[{low:+.4f}, {high:+.4f}]" if np.isfinite(low) else "–",
+             "direction": text.SWEEP_DIRECTIONS[science.interval_direction(n, mean, low, high)],
+             "η²": round(r[f"{effect}_eta_p2"], 2)}
+            | {k: f"{r[f'{effect}_n_{k}']:.0f} of {n:.0f}" for k in ("significant", "reversed")}
+        )  # fmt: skip
+    return values, pd.DataFrame(rows)
 
 
 def training(inputs: Mapping[str, str], config: dict) -> dict:
@@ -1111,191 +1118,134 @@ def notes(config: dict) -> dict:
     }
 
 
-def _study_table(path: str) -> pd.DataFrame:
-    """A size-study table with its doses as numbers (the controls' names stay)."""
-    frame = pd.read_csv(path)
-    if "dose" in frame:
-        frame["dose"] = [dose_value(d) for d in frame["dose"].astype(str)]
-    return frame
+def _t_from_interval(row: Mapping) -> float:
+    """t = estimate / se as ``stats.t_term`` computed it, read back from the 95% interval the
+    analysis wrote (half-width = t(0.975, df) · se): the slope and grip tables keep no t."""
+    from scipy import stats as sps
+
+    se = (row["ci_high"] - row["ci_low"]) / (2 * sps.t.ppf(0.975, row["df"]))
+    return float(row["estimate"] / se) if se > 0 else float("nan")
+
+
+#: The size study's cue timings and controls, in short.
+SIZE_CUES = {"first_step": "first step", "all_steps": "every step"}
+SIZE_CONTROLS = {"removed": "no size in input", "equal_grips": "dose 0, equal grips"}
+
+
+def _condition(dose) -> str:
+    return SIZE_CONTROLS.get(str(dose)) or f"dose {float(dose):g}"
+
+
+def _p(value: float) -> str:
+    return f"{value:.2g}" if np.isfinite(value) else "–"
+
+
+def _size_rows(rows: pd.DataFrame, verdict: bool = False, **columns) -> pd.DataFrame:
+    """Size-study tests as shown: cue, ``columns``, estimate, interval, p, Holm p, family and
+    (``verdict``: tests of the RMSE) the verdict word; a dash: no test could be made."""
+    number = "{:+.4f}".format
+    out = pd.DataFrame({"cue": rows["cue"].map(SIZE_CUES)} | columns)
+    out["estimate"] = [number(v) if np.isfinite(v) else "–" for v in rows["estimate"]]
+    out["95% CI"] = [
+        f"[{number(lo)}, {number(hi)}]" if np.isfinite(lo) else "–"
+        for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
+    ]
+    out["p"], out["Holm p"] = rows["p"].map(_p), rows["p_holm"].map(_p)
+    out["family"] = rows["family"]
+    if verdict:
+        out["verdict"] = [text.size_verdict(r) for _, r in rows.iterrows()]
+    return out
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The chapter "What drives the size effect": the doses, the manipulation check at the
-    largest dose, per cue timing the effect at the largest dose, without size, and the slope on
-    the dose (the paper's RMSE), the demonstrations' account of the errors, and the tables."""
-    summary = _study_table(inputs["size_summary.csv"])
-    slope = pd.read_csv(inputs["size_slope.csv"])
-    checks = _study_table(inputs["size_manipulation.csv"])
+    """The chapter "What drives the size effect": values, verdict words (Claims), tables."""
+    read = {"diff": "estimate", "slope": "estimate"}
+    summary, slope, grips, checks, power = (
+        pd.read_csv(inputs[f"size_{name}.csv"], dtype={"dose": str}).rename(columns=read)
+        for name in ("summary", "slope", "grips", "manipulation", "power")
+    )
     try:
-        motor = pd.read_csv(inputs["size_motor.csv"])
+        motor = pd.read_csv(inputs["size_motor.csv"], dtype={"dose": str})
     except pd.errors.EmptyDataError:  # no removal control in this build
-        motor = pd.DataFrame()
-    study = config["size_dose"]
-    top = max(study["doses"])
+        motor = pd.DataFrame(columns=["dose", "cue", "geometry", "estimate", "p_holm"])
+    study, cues = config["size_dose"], config["size_dose"]["categorisation_cue"]
+    top = str(float(max(study["doses"])))
+    rmse = summary[summary["measure"] == "rmse"]
     at_top = checks[checks["dose"] == top]
     values: dict = {
         "doses": ", ".join(f"{d:g}" for d in study["doses"]),
-        "top_dose": f"{top:g}",
+        "top_dose": f"{float(top):g}",
         "replications": int(summary["replications"].max()),
-        "n_runs": int(len(checks) // 4),
+        "delivered_top": float(rmse.loc[rmse["dose"] == top, "delivered_dose"].mean()),
     }
-    for shape in ("ball", "cube"):
-        for name in ("object", "goal"):
-            rows = at_top[(at_top["shape"] == shape) & (at_top["map"] == name)]
-            values[f"ratio_{name}_{shape}"] = float(rows["ratio"].min())
-    ratios = [values[f"ratio_goal_{shape}"] for shape in ("ball", "cube")]
-    claims: dict = {
-        "claim_check": text.Claim(
-            "The dose arrived: at the largest dose the Goal map's large cluster has at least "
-            "twice the small one's units for both shapes."
-            if min(ratios) >= 2
-            else "The dose did not fully arrive: at the largest dose the Goal map's large "
-            "cluster has less than twice the small one's units for at least one shape.",
-            ("size.ratio_goal_ball", "size.ratio_goal_cube"),
-        )
-    }
-    for cue in study["categorisation_cue"]:
-        rmse = summary[(summary["cue"] == cue) & (summary["measure"] == "rmse")]
-        for key, dose in (
-            ("top", top),
-            ("removed", "removed"),
-            ("none", min(study["doses"])),
-            ("equal_grips", "equal_grips"),
-        ):
-            rows = rmse[rmse["dose"] == dose]
-            if rows.empty:
-                continue
-            row = rows.iloc[0]
-            values[f"{key}_diff_{cue}"] = float(row["diff"])
-            values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
-            what = {
-                "top": f"At the largest dose ({top:g})",
-                "removed": "Without any size in the input (the removal control)",
-                "none": "With no size on the maps (dose 0, the visual input unchanged)",
-                "equal_grips": "With no size on the maps and every object's grips moved towards "
-                "one distance (the grips' distance much reduced, the size left; the motor side "
-                "below gives the distances)",
-            }[key]
-            claims[f"claim_{key}_{cue}"] = text.size_dose_claim(row, cue, key, what)
-            if key == "removed":
-                claims[f"claim_source_{cue}"] = text.size_removal_claim(row, cue)
-        delivered = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")]
-        fit = delivered[delivered["axis"] == "delivered"].iloc[0]
-        values[f"slope_{cue}"] = float(fit["slope"])
-        values[f"slope_p_holm_{cue}"] = float(fit["p_holm"])
-        claims[f"claim_slope_{cue}"] = text.size_slope_claim(fit, cue)
-    geometry = pd.read_csv(inputs["size_geometry.csv"])
-    values["geometry_like_size"] = text.geometry_like_size(ranked_like_size(geometry))
-    if len(motor):
-        motor["dose"] = [dose_value(d) for d in motor["dose"].astype(str)]
-        for _, row in motor.iterrows():
-            values[text.size_motor_key(row)] = float(row["p_holm"])
-        for key, dose, where in (
-            ("claim_motor_none", min(study["doses"]), "At dose 0, no size on the maps"),
-            ("claim_motor_top", top, f"At the largest dose ({top:g}), with size in the input"),
-            ("claim_motor_removed", "removed", "Without size in the input"),
-            (
-                "claim_motor_equal_grips",
-                "equal_grips",
-                "At dose 0 with the grips moved towards one distance",
-            ),
-        ):
-            subset = motor[motor["dose"].astype(str) == str(dose)]
-            if len(subset):
-                claims[key] = text.size_motor_claim(subset, where)
-    shown = summary.copy()
-    shown["dose"] = [d if isinstance(d, str) else f"{d:g}" for d in shown["dose"]]
-    for column in ("diff", "ci_low", "ci_high", "relative_to_mean"):
-        shown[column] = shown[column].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–")
-    # relative to the measure's mean is a proportion of an error only for the RMSE measures
-    shown.loc[~shown["measure"].isin(["rmse", "rmse_correct"]), "relative_to_mean"] = "–"
-    shown["p"] = shown["p"].map(lambda v: text.fmt_p(v) if np.isfinite(v) else "–")
-    shown["p_holm"] = shown["p_holm"].map(lambda v: "–" if not np.isfinite(v) else text.fmt_p(v))
-    for column in ("large_small_ratio_object", "large_small_ratio_goal"):
-        shown[column] = shown[column].map(lambda v: f"{v:.2f}")
-    fits = slope.copy()
-    for column in ("slope", "ci_low", "ci_high"):
-        fits[column] = fits[column].map(lambda v: f"{v:+.4f}" if np.isfinite(v) else "–")
-    for column in ("p", "p_holm"):
-        fits[column] = fits[column].map(lambda v: "–" if not np.isfinite(v) else text.fmt_p(v))
-    grips = pd.read_csv(inputs["size_grips.csv"])
-    for _, row in grips.iterrows():
-        values[f"grips_diff_{row['cue']}"] = float(row["diff"])
-        values[f"grips_p_holm_{row['cue']}"] = float(row["p_holm"])
-        claims[f"claim_grips_{row['cue']}"] = text.size_grips_claim(row, row["cue"])
-    power = pd.read_csv(inputs["size_power.csv"])
-    values["power_replications"] = int(power["replications"].max()) if len(power) else 0
-    at = power[np.isclose(power["effect"], 0.02)]
-    for _, row in at.iterrows():
+    for (shape, name), ratios in at_top.groupby(["shape", "map"])["ratio"]:
+        values[f"ratio_{name}_{shape}"] = float(ratios.min())
+    for _, row in power[np.isclose(power["effect"], 0.02)].iterrows():
         values[f"power_{row['cue']}"] = float(row["power_holm_bound"])
-    values["power_sentence"] = text.Claim(
-        " and ".join(
-            f"{row['power_holm_bound']:.2f} ({text.SIZE_CUE_WORDS[row['cue']]})"
-            for _, row in at.iterrows()
-        ),
-        tuple(f"size.power_{cue}" for cue in at["cue"]),
+    arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
+    rests = ("size.ratio_goal_ball", "size.ratio_goal_cube")
+    claims: dict = {"check": text.Claim("arrived" if arrived else "did not fully arrive", rests)}
+
+    def tested(key: str, cue: str, row: Mapping) -> tuple[str, ...]:
+        values[f"{key}_{cue}"] = float(row["estimate"])
+        values[f"{key}_t_{cue}"] = _t_from_interval(row)
+        values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
+        return (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
+
+    slopes = []
+    doses = {"none": str(float(min(study["doses"]))), "top": top}
+    for cue in cues:
+        for key, dose in (doses | {"removed": "removed", "equal": "equal_grips"}).items():
+            for _, row in rmse[(rmse["cue"] == cue) & (rmse["dose"] == dose)].iterrows():
+                claims[f"{key}_verdict_{cue}"] = text.Claim(
+                    text.size_verdict(row), tested(key, cue, row)
+                )
+        fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")]
+        slopes.append(fit := fit[fit["axis"] == "delivered"].iloc[0])
+        claims[f"slope_trend_{cue}"] = text.Claim(text.trend_phrase(fit), tested("slope", cue, fit))
+        for _, row in grips[grips["cue"] == cue].iterrows():  # demonstrated minus equal grips:
+            rests = tested("grips", cue, row)  # less distance is the opposite change
+            less = text.trend_phrase(dict(row) | {"estimate": -row["estimate"]})
+            claims[f"grips_trend_{cue}"] = text.Claim(less, rests)
+    values["slope_df"] = float(slopes[0]["df"])
+    claims["account"] = text.Claim(
+        text.account_phrase(slopes), tuple(f"size.slope_p_holm_{cue}" for cue in cues)
     )
-    declared = pd.concat(
+    if len(removed := rmse[rmse["dose"] == "removed"]):
+        claims["removal_source"] = text.Claim(
+            text.removal_phrase(removed), tuple(f"size.removed_p_holm_{c}" for c in removed["cue"])
+        )
+    keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
+    values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
+    if len(motor):
+        found = motor.loc[motor["p_holm"] < science.ALPHA, "geometry"].unique()
+        claims["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
+    like_size = ranked_like_size(pd.read_csv(inputs["size_geometry.csv"]))
+    values["like_size"] = text.named_measures(like_size)
+    motor["cell"] = [f"{r['estimate']:+.4f} ({_p(r['p_holm'])})" for _, r in motor.iterrows()]
+    motor["condition"], motor["cue"] = motor["dose"].map(_condition), motor["cue"].map(SIZE_CUES)
+    tests = pd.concat(
         [
-            summary[summary["family"] == FAMILY_DECLARED].assign(
-                test=lambda d: [
-                    f"size effect at dose {x:g}"
-                    if not isinstance(x, str)
-                    else "size effect at dose 0, grips moved towards one distance"
-                    for x in d["dose"]
-                ],
-                estimate=lambda d: d["diff"],
-            ),
-            slope[slope["family"] == FAMILY_DECLARED].assign(
-                test=lambda d: [f"slope on the {a} dose" for a in d["axis"]],
-                estimate=lambda d: d["slope"],
-            ),
+            rmse.assign(test="effect, " + rmse["dose"].map(_condition)),
+            slope.assign(test="slope, delivered"),
         ]
     )
+    tests = tests[(tests["measure"] == "rmse") & (tests.get("axis", "delivered") != "nominal")]
+    tests = tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
+    conditions = {"condition": summary["dose"].map(_condition), "measure": summary["measure"]}
+    conditions["Goal ratio"] = summary["large_small_ratio_goal"].map("{:.2f}".format)
+    relative = summary["relative_to_mean"].where(summary["measure"].isin(["rmse", "rmse_correct"]))
     tables = {
-        "size_summary": shown.drop(columns=["df"]),
-        "size_slope": fits,
-        "size_power": pd.DataFrame(
-            {
-                "cue": power["cue"].str.replace("_", " "),
-                "effect": power["effect"],
-                "replications": power["replications"],
-                "σ_rep": power["sigma_rep"],
-                "σ_net": power["sigma_net"],
-                "power (α)": power["power"],
-                "power (Holm bound)": power["power_holm_bound"],
-                "replications for 80% (α)": power["replications_for_80"],
-                "(Holm bound)": power["replications_for_80_holm_bound"],
-            }
+        "size_declared": _size_rows(tests, True, test=tests["test"]),  # declared first
+        "size_summary": _size_rows(summary, **conditions).assign(  # of an error: the RMSEs
+            **{"rel. to mean": relative.map(lambda v: f"{v:+.3f}" if np.isfinite(v) else "–")}
         ),
-        "size_declared": pd.DataFrame(
-            {
-                "cue": declared["cue"].map(text.SIZE_CUE_WORDS),
-                "test": declared["test"],
-                "estimate [95% interval]": [
-                    f"{r['estimate']:+.4f} [{r['ci_low']:+.4f}, {r['ci_high']:+.4f}]"
-                    for _, r in declared.iterrows()
-                ],
-                "df": declared["df"],
-                "p": declared["p"],
-                "family": declared["family"],
-                "Holm p": declared["p_holm"],
-                "verdict": [
-                    text.direction_word({"estimate": e, "p": p, "p_holm": h})
-                    for e, p, h in zip(
-                        declared["estimate"], declared["p"], declared["p_holm"], strict=True
-                    )
-                ],
-            }
-        ),
+        "size_slope": _size_rows(slope, dose=slope["axis"], measure=slope["measure"]),
+        "size_power": power,  # formatted by the page
+        "size_motor": motor.pivot(index=["condition", "cue"], columns="geometry", values="cell")
+        .rename(columns=text.GEOMETRY_SHORT)
+        .reset_index(),
     }
-    shown_motor = motor.copy()
-    if len(motor):
-        for column in ("estimate", "ci_low", "ci_high"):
-            shown_motor[column] = shown_motor[column].map(lambda v: f"{v:+.4f}")
-        for column in ("p", "p_holm"):
-            shown_motor[column] = shown_motor[column].map(text.fmt_p)
-    tables["size_motor"] = shown_motor
     return values | claims, tables
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from icub_affordance.findings import ALPHA, Verdict, interval_direction
+from icub_affordance.findings import ALPHA, Verdict
 from icub_affordance.measures import is_hypothesis
 
 
@@ -266,19 +266,19 @@ def floor_sentence(at_floor: bool) -> str:
 
 ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
-EFFECTS = {
-    "congruency": ("congruent", "incongruent"),
-    "size": ("large objects", "small objects"),
-}
+#: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
+SWEEP_DIRECTIONS = {"paper": "paper's direction", "against": "reversed", "unclear": "not shown"}
+SWEEP_DIRECTIONS["single"] = "one replication"
 
 
-def sweep_size(config: dict) -> tuple[int, int]:
-    """Points of the config's sweep and networks trained in all."""
-    sweep = config["sweep"]
-    points = 1
-    for key in ("seeds", "learning_rate", "hidden", "categorisation_cue"):
-        points *= len(sweep[key])
-    return points, points * config["network"]["networks"]
+def growth_phrase(growth: dict) -> str:
+    """How the sweep's wall time grows (growth.cost_growth's ``change``, the last added
+    replication's cost over the first's less one): within 10%, "linearly"."""
+    if len(growth["marginal"]) < 2:
+        return "in a way two timings cannot show: it takes three to tell"
+    if abs(growth["change"]) <= 0.1:
+        return "linearly"
+    return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
 
 
 def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
@@ -312,172 +312,6 @@ def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
 
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" + ("" if n == 1 else "s")
-
-
-def robustness_not_run(config: dict) -> str:
-    """What the page says when this build did not run the sweep (MyST)."""
-    points, networks = sweep_size(config)
-    return (
-        "```{important}\n"
-        "**This build did not run the sweep.** It was made with `robustness: false` (the "
-        "default), which keeps the run to the paper's single replication, so this page has no "
-        "results and no cost table. To add them, run the pipeline with\n\n"
-        f"    {ROBUSTNESS_COMMAND}\n\n"
-        f"which trains the {points} points of the config's `sweep` section ({networks} networks "
-        "in all), times the sweep for the numbers of replications in `sweep_cost`, and rebuilds "
-        "this book with both.\n"
-        "```"
-    )
-
-
-def fmt_interval(mean: float, low: float, high: float, digits: int = 4) -> str:
-    """A mean with its interval, or the mean alone when there is none (one replication)."""
-    if math.isnan(low) or math.isnan(high):
-        return f"{mean:.{digits}f}"
-    return f"{mean:.{digits}f} [{low:.{digits}f}, {high:.{digits}f}]"
-
-
-def setting_label(row) -> str:
-    return (
-        f"{CUES.get(row['categorisation_cue'], row['categorisation_cue'])}, learning rate "
-        f"{row['learning_rate']:g}, {row['hidden']:.0f} hidden units"
-    )
-
-
-def sweep_summary_display(summary):
-    """The per-setting summary as the book shows it: one row per setting and effect, with the
-    mean difference and its 95% interval over replications, the mean partial eta squared, and
-    how many replications were significant in the paper's direction and how many reversed."""
-    import pandas as pd
-
-    rows = []
-    for _, r in summary.iterrows():
-        n = int(r["replications"])
-        for effect in EFFECTS:
-            rows.append(
-                {
-                    "cue": r["categorisation_cue"],
-                    "learning rate": f"{r['learning_rate']:g}",
-                    "hidden": f"{r['hidden']:.0f}",
-                    "effect": effect,
-                    "mean difference [95% CI]": fmt_interval(
-                        r[f"{effect}_effect"], r[f"{effect}_ci_low"], r[f"{effect}_ci_high"]
-                    ),
-                    "partial η² (mean)": f"{r[f'{effect}_eta_p2']:.2f}",
-                    "significant": f"{r[f'{effect}_n_significant']:.0f} of {n}",
-                    "reversed": f"{r[f'{effect}_n_reversed']:.0f} of {n}",
-                }
-            )
-    return pd.DataFrame(rows)
-
-
-def effect_sentence(row, effect: str) -> str:
-    """One effect of one setting over its replications, in words, from the summary row."""
-    first, second = EFFECTS[effect]
-    n = int(row["replications"])
-    mean, low, high = row[f"{effect}_effect"], row[f"{effect}_ci_low"], row[f"{effect}_ci_high"]
-    interval = fmt_interval(mean, low, high)
-    direction = {
-        "single": f"{first} {'lower' if mean > 0 else 'higher'} in RMSE than {second} "
-        "(one replication)",
-        "paper": f"{first} lower in RMSE than {second}, the paper's direction",
-        "against": f"{first} higher in RMSE than {second}, against the paper",
-        "unclear": f"no consistent difference between {first} and {second}",
-    }[interval_direction(n, mean, low, high)]
-    sig, rev = int(row[f"{effect}_n_significant"]), int(row[f"{effect}_n_reversed"])
-    return (
-        f"**{effect.capitalize()}:** {direction} (mean difference {interval}); significant "
-        f"(p < .05) in the paper's direction in {sig} of {n} replication{'s' if n != 1 else ''}, "
-        f"significantly reversed in {rev}; mean partial η² {row[f'{effect}_eta_p2']:.2f}."
-    )
-
-
-def sweep_findings(summary) -> str:
-    """What the sweep shows, per setting, in words generated from the summary (MyST)."""
-    paragraphs = []
-    for _, row in summary.iterrows():
-        paragraphs.append(
-            f"*With {setting_label(row)}* ({row['replications']:.0f} replications):\n\n"
-            + "\n".join(f"- {effect_sentence(row, effect)}" for effect in EFFECTS)
-        )
-    return "\n\n".join(paragraphs)
-
-
-def cost_findings(cost, growth: dict) -> str:
-    """How the sweep's wall time grows with the number of replications, in words (MyST):
-    ``cost`` is the cost table, ``growth`` its wall time against its replications
-    (``icub_affordance.growth.cost_growth``)."""
-    import numpy as np
-
-    cost = cost.sort_values("replications")
-    n, s = growth["sizes"], growth["seconds"]
-    cores = int(cost["cores"].iloc[0])
-    machine = int(cost["machine_cores"].iloc[0])
-    text = (
-        f"Each run is `snakemake -c{cores} sweep` in a scratch copy of the workflow on this "
-        f"run's machine ({machine} cores), timed from start to end with nothing else of the "
-        "pipeline running, for replications of the main run's network settings (seeds 1 to n)."
-    )
-    other = cost["other_load"].to_numpy(dtype=float)
-    if not np.isnan(other).all():
-        worst = int(np.nanargmax(other))
-        if other[worst] > 0.25:
-            text += (
-                f" The machine was shared: while {n[worst]:.0f} replications were timed, other "
-                f"work kept {other[worst]:.1f} of its cores busy on average (column *other "
-                "load*), which lengthens that time; the growth below must be read with that in "
-                "mind."
-            )
-        else:
-            text += (
-                f" Nothing else loaded the machine meanwhile (other load at most "
-                f"{np.nanmax(other):.2f} cores)."
-            )
-    if len(n) < 2:
-        return text + " With a single measurement there is no growth to describe."
-    marginal = growth["marginal"]
-    steps = ", ".join(
-        f"{m:.1f} s between {a:.0f} and {b:.0f}"
-        for m, a, b in zip(marginal, n[:-1], n[1:], strict=True)
-    )
-    text += (
-        f" From {n[0]:.0f} to {n[-1]:.0f} replications the wall time grew "
-        f"{s[-1] / s[0]:.1f}-fold for {n[-1] / n[0]:g} times the work; the time per replication "
-        f"went from {s[0] / n[0]:.1f} s to {s[-1] / n[-1]:.1f} s, and each added replication "
-        f"cost {steps} replications."
-    )
-    if (line := growth["line"]) is not None:
-        far = line["furthest_size"]
-        text += (
-            f" A straight line through the {len(n)} measurements has {line['slope']:.1f} s per "
-            f"replication and an intercept of {line['intercept']:.1f} s; the measurement "
-            f"furthest from it is {100 * line['furthest_offset']:.0f}% off (at {far:.0f} "
-            f"replication{'s' if far != 1 else ''})."
-        )
-    change = growth["change"]
-    if len(marginal) < 2:
-        text += (
-            " Two measurements always lie on a line: it takes three to tell whether the cost "
-            "grows linearly."
-        )
-    elif abs(change) <= 0.1:
-        text += " So the cost grew linearly: every added replication cost about the same."
-    elif change < 0:
-        text += (
-            f" So the cost grew no faster than linearly: an added replication cost "
-            f"{100 * -change:.0f}% less in the larger sweeps."
-        )
-    else:
-        text += (
-            f" So the cost grew faster than linearly: an added replication cost "
-            f"{100 * change:.0f}% more in the larger sweeps."
-        )
-    if len(marginal) >= 2:
-        text += (
-            " Each number is a single timing, and timings of the same sweep vary from run to "
-            "run, so modest differences between the marginal costs mean little."
-        )
-    return text
 
 
 # The readings chapter (book/readings.md): the readings x measures matrix in words, and the tests
@@ -807,150 +641,49 @@ def goal_response_conclusion(differences) -> Claim | None:
     return Claim(" ".join(sentences), keys)
 
 
-# ---- What drives the size effect ----------------------------------------------------------------
+# ---- What drives the size effect -----------------------------------------------------------
 
-#: A cue timing in words, for the size study's sentences.
-SIZE_CUE_WORDS = {
-    "first_step": "the cue at the first step only",
-    "all_steps": "the cue at every step",
-}
-
-#: The demonstrations' geometry in words (icub_affordance.size_dose.GEOMETRY).
-GEOMETRY_WORDS = {
-    "demo_path_length": "the length of the path the demonstrations travel",
-    "demo_spread": "the spread of the demonstrations around their mean",
-    "demo_grip_distance": "the distance between the two grips' final postures",
-}
+#: The demonstrations' measures (icub_affordance.size_dose.GEOMETRY), in short.
+GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread"}
+GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
 
 
-def _interval(row) -> str:
-    return f"{row['diff']:+.4f} (95% interval [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}])"
+def size_verdict(term) -> str:
+    """A size-study test (positive: large objects lower) by its Holm p: "in the paper's
+    direction", "reversed", "not shown" (not "none": that needs an equivalence test)."""
+    word = verdict_word({"estimate": term["estimate"], "p": term["p"], "p_holm": term["p_holm"]})
+    return {"reproduced": "in the paper's direction"}.get(word, word)
 
 
-def size_effect_words(row) -> str:
-    """A size effect's verdict from its Holm-adjusted test: the paper's direction (large lower),
-    reversed, or not detected (which is not a claim that there is none)."""
-    if row["p_holm"] < ALPHA:
-        return "in the paper's direction" if row["diff"] > 0 else "reversed (large higher)"
-    return "not detected within its family (which is not evidence of none)"
+def trend_phrase(term) -> str:
+    """Where a tested change moves the size effect (positive: towards the paper's direction)."""
+    word = size_verdict(term)
+    if word in ("not shown", "not testable"):
+        return "by no amount its test shows"
+    return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
-def _adjusted(row) -> str:
-    """A table row's adjusted p with its family named."""
-    return f"Holm-adjusted within “{row['family']}” {fmt_p(row['p_holm'])}"
+def account_phrase(slopes) -> str:
+    """What more size delivered to the maps (the paper's mechanism) does, from every cue
+    timing's declared slope."""
+    words = {trend_phrase(s) for s in slopes}
+    if len(words) > 1:
+        return "moves the size effect differently under the two cue timings"
+    return {"away from the paper's direction": "pushes the size effect against the paper",
+            "towards the paper's direction": "pushes the size effect the paper's way"}.get(
+        words.pop(), "is not shown to move the size effect")  # fmt: skip
 
 
-def size_slope_claim(slope, cue: str) -> Claim:
-    """The size effect's slope on the delivered dose (the Goal map's large/small log ratio),
-    tested over replications, Holm-adjusted within its family."""
-    p = slope["p_holm"]
-    if p < ALPHA:
-        trend = (
-            "more size delivered to the maps moves the effect towards the paper's direction"
-            if slope["slope"] > 0
-            else "more size delivered to the maps moves the effect away from the paper's direction"
-        )
-    else:
-        trend = "no change with the delivered size is detected, which is not evidence of none"
-    return Claim(
-        f"With {SIZE_CUE_WORDS[cue]}, the size effect on the paper's RMSE changes by "
-        f"{slope['slope']:+.4f} per unit of the delivered dose (95% interval "
-        f"[{slope['ci_low']:+.4f}, {slope['ci_high']:+.4f}], t({slope['df']:.0f}), "
-        f"{fmt_p(slope['p'])}, {_adjusted(slope)}, over {int(slope['replications'])} "
-        f"replications): {trend}.",
-        (f"size.slope_{cue}", f"size.slope_p_holm_{cue}"),
-    )
+def removal_phrase(removed) -> str:
+    """What the removal control (no size in the input) says of the motor side, from its rows."""
+    words = {size_verdict(r) for _, r in removed.iterrows()}
+    can = "reverse the" if "reversed" in words else "give the paper's"
+    if words & {"reversed", "in the paper's direction"}:
+        return f"the movements the networks learn can {can} size effect without size in the input"
+    return "this build cannot say whether the movements alone produce a size effect"
 
 
-def size_dose_claim(row, cue: str, key: str, what: str) -> Claim:
-    """The size effect at one dose (or without size), over its replications."""
-    return Claim(
-        f"{what}, with {SIZE_CUE_WORDS[cue]}, the size effect on the paper's RMSE is "
-        f"{_interval(row)}, {fmt_p(row['p'])}, {_adjusted(row)}, over "
-        f"{int(row['replications'])} replications: {size_effect_words(row)}.",
-        (f"size.{key}_diff_{cue}", f"size.{key}_p_holm_{cue}"),
-    )
-
-
-def size_grips_claim(row, cue: str) -> Claim:
-    """How much of the dose-0 size effect the grips' distance carries: the effect with the grips
-    as demonstrated minus with them at one distance, paired by replication (exploration)."""
-    if row["p_holm"] < ALPHA:
-        verdict = (
-            "the grips' distance changes the size effect: reducing it moves the effect "
-            + ("towards" if row["diff"] < 0 else "away from")
-            + " the paper's direction"
-        )
-    else:
-        verdict = "whether the grips' distance changes the size effect is not shown"
-    return Claim(
-        f"With {SIZE_CUE_WORDS[cue]}, the dose-0 size effect with the grips as demonstrated minus "
-        f"with them moved towards one distance is {_interval(row)}, t({row['df']:.0f}), "
-        f"{fmt_p(row['p'])}, "
-        f"{_adjusted(row)} (a comparison made after the control's results were read): {verdict}.",
-        (f"size.grips_diff_{cue}", f"size.grips_p_holm_{cue}"),
-    )
-
-
-def size_removal_claim(row, cue: str) -> Claim:
-    """Where the reversed size effect comes from, by the removal control: if it is still there
-    (Holm) without any size in the input, it cannot come from vision."""
-    if row["p_holm"] < ALPHA and row["diff"] < 0:
-        verdict = (
-            "without size in the input the size effect is reversed (large higher), so the motor "
-            "side (the grips and their demonstrations) can produce a reversed effect without vision"
-        )
-    elif row["p_holm"] < ALPHA:
-        verdict = "without size in the input the effect takes the paper's direction"
-    else:
-        verdict = (
-            "without size in the input no size effect is detected within its family, so this "
-            "build cannot say"
-        )
-    return Claim(
-        f"With {SIZE_CUE_WORDS[cue]}: {verdict}.",
-        (f"size.removed_diff_{cue}", f"size.removed_p_holm_{cue}"),
-    )
-
-
-def size_motor_key(row) -> str:
-    """The size page's value of one motor test's Holm p."""
-    dose = row["dose"] if isinstance(row["dose"], str) else f"{float(row['dose']):g}"
-    return f"motor_p_holm_{dose}_{row['cue']}_{row['geometry']}"
-
-
-def size_motor_claim(motor, where: str) -> Claim:
-    """Do the demonstrations' differences account for each object's error (``motor``: the
-    tests of one dose, or of the removal runs; ``where`` says which)?"""
-    found = motor[motor["p_holm"] < ALPHA]
-    rests = tuple(f"size.{size_motor_key(r)}" for _, r in motor.iterrows())
-    if found.empty:
-        return Claim(
-            f"{where}, none of the demonstrations' measures lines up with the objects' errors "
-            f"detectably (every p Holm-adjusted within “{motor['family'].iloc[0]}” at least "
-            "0.05).",
-            rests,
-        )
-    said = "; ".join(
-        f"{GEOMETRY_WORDS[r['geometry']]}, with {SIZE_CUE_WORDS[r['cue']]} (an object's error "
-        f"{'rises' if r['estimate'] > 0 else 'falls'} by {abs(r['estimate']):.4f} per standard "
-        f"deviation of it, {_adjusted(r)}, over {int(r['replications'])} "
-        f"replications of {int(r['networks'])} networks)"
-        for _, r in found.iterrows()
-    )
-    return Claim(f"{where}, an object's error lines up with " + said + ".", rests)
-
-
-def geometry_like_size(measures: list[str]) -> str:
-    """Which of the demonstrations' measures rank the objects as size does (a description of the
-    demonstrations, the caveat on the motor tests)."""
-    if not measures:
-        return "None of the demonstrations' measures ranks the objects as their size does."
-    words = [GEOMETRY_WORDS[m] for m in measures]
-    named = words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
-    verb = "is" if len(words) == 1 else "are"
-    return (
-        f"In every replication's demonstrations, {named} {verb} larger for both large objects "
-        "than for the small one of the same shape: with four objects per network, a slope on "
-        "such a measure cannot be told apart from the size effect itself."
-    )
+def named_measures(measures) -> str:
+    """The demonstrations' measures named in short, joined by "and"."""
+    words = [f"the {GEOMETRY_SHORT[m]}" for m in measures] or ["none of the measures"]
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
