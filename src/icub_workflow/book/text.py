@@ -158,15 +158,6 @@ def lower_or_higher(verdict: Verdict) -> str:
     return "lower" if verdict.paper_direction else "higher"
 
 
-def paper_agreement(verdict: Verdict) -> str:
-    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
-    if not verdict.significant:
-        return "unlike the paper, which reports a significant difference"
-    return (
-        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
-    )
-
-
 def significance(verdict: Verdict) -> str:
     return ", significantly" if verdict.significant else ", but not significantly"
 
@@ -376,98 +367,10 @@ def discussion_readings(cue: str) -> str:
     )
 
 
-def robot_error_sentence(verdict: Verdict) -> str:
-    """The congruency effect on the robot's final posture error; no direction without its test."""
-    if not verdict.significant:
-        return (
-            "the final error did not differ significantly between congruent and incongruent trials"
-        )
-    return (
-        "the arm ended further from the demonstrated grasp in incongruent trials, significantly"
-        if verdict.paper_direction
-        else "the arm ended nearer the demonstrated grasp in incongruent trials, significantly"
-    )
-
-
 def anova_or_undefined(anova: dict | None, effect: str) -> str:
     return (
         fmt_f(anova[effect]) if anova else "undefined: every network scored the same in every cell"
     )
-
-
-def points_difference(difference: dict) -> str:
-    """A difference of rates in percentage points, with its 95% interval when there is one."""
-    if math.isnan(difference["ci_low"]):
-        return f"{100 * difference['mean']:+.0f} points"
-    return (
-        f"{100 * difference['mean']:+.0f} points (95% interval {100 * difference['ci_low']:+.0f} "
-        f"to {100 * difference['ci_high']:+.0f})"
-    )
-
-
-def cue_verdict(verdict: Verdict) -> str:
-    if verdict.reproduced:
-        return "shows the congruency effect"
-    if verdict.reversed:
-        return "shows the congruency effect reversed"
-    return "shows no significant congruency effect"
-
-
-def cue_difference(difference: dict, alpha: float = 0.05) -> Claim:
-    """The test of the difference between the cue timings: the congruency effect with the cue at
-    the first step only minus with the cue at every step, paired by network (the same networks,
-    seeds and trials, retrained under the other timing; ``stats.difference_tests``)."""
-    numbers = (
-        f"first step only − every step {difference['estimate']:+.4f}, 95% interval "
-        f"{fmt_ci(difference)}, t({difference['df']:.0f}) = {difference['t']:.2f}, "
-        f"{fmt_p(difference['p'])}, paired over networks"
-        + (
-            f"; Holm-adjusted over the readings' differences {fmt_p(difference['p_holm'])}"
-            if "p_holm" in difference
-            else ""
-        )
-    )
-    p = difference.get("p_holm", difference["p"])
-    rests = ("beyond.cue_difference_estimate", "beyond.cue_difference_p_holm")
-    if p >= alpha:
-        return Claim(
-            "The two timings' congruency effects do not differ significantly "
-            f"({numbers}), so this run does not show that the cue's timing decides the effect.",
-            rests,
-        )
-    larger = "at the first step only" if difference["estimate"] > 0 else "at every step"
-    text = f"The congruency effect is significantly larger with the cue {larger} ({numbers})."
-    if difference["estimate"] > 0:
-        text += (
-            " One reading of this: a cue that stays on tells the network at every step which "
-            "grip is wanted, while a cue that is gone leaves the network to hold its choice in "
-            "its own posture feedback, where the grasp the object affords can win."
-        )
-    return Claim(text, rests)
-
-
-def divergence_sentence(first_step: int | None) -> Claim:
-    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps)."""
-    rests = ("beyond.div_first_step",)
-    if first_step is not None:
-        return Claim(
-            f"From step {first_step} on, incongruent trials are significantly further from "
-            "grasping at every step (paired t-tests over networks, Holm-adjusted over the steps, "
-            "p < 0.05): the hidden state of a categorisation trial that asks for the grip the "
-            "object does not invite stays apart from the one the same object drives in a "
-            "grasping trial, whichever grip the output ends on.",
-            rests,
-        )
-    return Claim(
-        "Incongruent trials are not significantly further from grasping at every step to the end "
-        "(paired t-tests over networks, Holm-adjusted over the steps): this run shows no lasting "
-        "conflict in the hidden layer.",
-        rests,
-    )
-
-
-def floor_sentence(at_floor: bool) -> str:
-    return "Success is near the floor, so it can say little about congruency." if at_floor else ""
 
 
 # The robustness page (book/robustness.md): the sweep and its cost, or a plain note that this
