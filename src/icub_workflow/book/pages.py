@@ -450,7 +450,7 @@ SHORT = {
 #: The cue timings in the tables' short words.
 CUE_SHORT = {"first_step": "first step", "all_steps": "every step"}
 #: A robot effect's short name in the tables.
-EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "grip (cong. × size)"}
+EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "cong. × size"}
 
 
 def short_label(row: Mapping, leave_out: tuple[str, ...] = ()) -> str:
@@ -488,7 +488,7 @@ def _effect_rows(effects: dict, label: str | None = None) -> tuple[list[dict], l
     """One variant's robot effects (``effects.json``) as table rows, one per measure and term,
     and its counts per congruency x size cell, one row per measure."""
     rows, cells = [], []
-    for measure, name in (("success", "held (share)"), ("contact_time", "contact (s)")):
+    for measure, name in (("success", "held"), ("contact_time", "contact, s")):
         effect = effects[measure]
         counted = "held" if measure == "success" else "touched"
         first = {"variant": label} if label else {}
@@ -515,8 +515,9 @@ def _effect_rows(effects: dict, label: str | None = None) -> tuple[list[dict], l
                 | {
                     "measure": name,
                     "effect": EFFECT_NAMES[factor],
-                    "test": {"contrasts": "t", "exact": "Fisher"}.get(test["method"], "none"),
-                    "nets": test["networks"] if contrast else "",
+                    "test": f"t ({test['networks']})"
+                    if contrast
+                    else {"exact": "Fisher"}.get(test["method"], "none"),
                     "estimate": f"{estimate:+.3f}" if np.isfinite(estimate) else "",
                     "95% interval": f"{test['ci_low']:+.3f}, {test['ci_high']:+.3f}"
                     if contrast
@@ -705,7 +706,7 @@ def _pairs(variants: pd.DataFrame, schedule_pairs: list[dict]) -> pd.DataFrame:
                     "same": short_label(mine.iloc[0], ("categorisation_cue",)),
                 }
                 | {"held": " / ".join(text.pct(v) for v in mine["grasping_success"])}
-                | {"only one held": "", "McNemar p": "", "verdict": "not tested"}
+                | {"by one only": "", "McNemar p": "", "verdict": "not tested"}
             )
     for p in schedule_pairs:
         rows.append(
@@ -719,11 +720,11 @@ def _pairs(variants: pd.DataFrame, schedule_pairs: list[dict]) -> pd.DataFrame:
                 )
             }
             | {"held": f"{p['held_a']} / {p['held_b']} of {p['trials']}"}
-            | {"only one held": f"{p['only_a']} / {p['only_b']}", "McNemar p": f"{p['p']:.2g}"}
-            | {"verdict": "differ" if p["p"] < science.ALPHA else "not shown to differ"}
+            | {"by one only": f"{p['only_a']} / {p['only_b']}", "McNemar p": f"{p['p']:.2g}"}
+            | {"verdict": "differ" if p["p"] < science.ALPHA else "not shown"}
         )
     return pd.DataFrame(
-        rows, columns=["differs", "same", "held", "only one held", "McNemar p", "verdict"]
+        rows, columns=["differs", "same", "held", "by one only", "McNemar p", "verdict"]
     )
 
 
@@ -743,20 +744,18 @@ def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     out: dict[str, object] = {"bar_share": float(science.GRASPS)}
     rows = []
     for _, row in confirmation.iterrows():
+        fresh = row["seed_set"] == "confirmation"
+        verdict = confirmation_science.bar_verdict(row["ci_low"], row["ci_high"], science.GRASPS)
         rows.append(
-            {"variant": short_label(row), "networks": row["seed_set"]}
-            | {"nets": f"{int(row['first_network'])}-{int(row['last_network'])}"}
-            | {"held": f"{int(row['held'])} of {int(row['trials'])}"}
-            | {"share": text.pct(row["share"])}
-            | {"95% interval": f"{text.pct(row['ci_low'])}-{text.pct(row['ci_high'])}"}
-            | {"design effect (raw)": f"{row['design_effect_raw']:.3f}"}
+            {"variant": short_label(row)}
             | {
-                "vs bar": confirmation_science.bar_verdict(
-                    row["ci_low"], row["ci_high"], science.GRASPS
-                )
-                if row["seed_set"] == "confirmation"
-                else "not set against it"
+                "networks": f"{int(row['first_network'])}-{int(row['last_network'])}, "
+                + ("fresh" if fresh else "chosen on")
             }
+            | {"held": f"{int(row['held'])}/{int(row['trials'])}, {text.pct(row['share'])}"}
+            | {"95% interval": f"{text.pct(row['ci_low'])}-{text.pct(row['ci_high'])}"}
+            | {"deff (raw)": f"{row['design_effect_raw']:.3f}"}
+            | {"vs bar": verdict if fresh else ""}
         )
     table = pd.DataFrame(rows)
     if confirmation.empty:
