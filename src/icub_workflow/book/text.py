@@ -158,6 +158,15 @@ def lower_or_higher(verdict: Verdict) -> str:
     return "lower" if verdict.paper_direction else "higher"
 
 
+def paper_agreement(verdict: Verdict) -> str:
+    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
+    if not verdict.significant:
+        return "unlike the paper, which reports a significant difference"
+    return (
+        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
+    )
+
+
 def significance(verdict: Verdict) -> str:
     return ", significantly" if verdict.significant else ", but not significantly"
 
@@ -364,6 +373,19 @@ def discussion_readings(cue: str) -> str:
         f"run: `{cue}`) and what the Goal map sends on. The next chapters set the other readings "
         "beside this one, with equal standing, run by the same pipeline and scored on the same "
         "trials with several measures."
+    )
+
+
+def robot_error_sentence(verdict: Verdict) -> str:
+    """The congruency effect on the robot's final posture error; no direction without its test."""
+    if not verdict.significant:
+        return (
+            "the final error did not differ significantly between congruent and incongruent trials"
+        )
+    return (
+        "the arm ended further from the demonstrated grasp in incongruent trials, significantly"
+        if verdict.paper_direction
+        else "the arm ended nearer the demonstrated grasp in incongruent trials, significantly"
     )
 
 
