@@ -484,6 +484,17 @@ def difference_verdict(term: dict, larger: str, smaller: str, none: str = "not s
     return {"reproduced": larger, "reversed": smaller, "not shown": none}.get(word, word)
 
 
+def divergence_verdict(first_step: int | None) -> text.Claim:
+    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps): the
+    first step from which incongruent trials are further from grasping at every step, if any."""
+    return text.Claim(
+        f"at every step from step {first_step} to the last"
+        if first_step is not None
+        else "not at every step to the last (no lasting conflict shown)",
+        ("beyond.div_first_step",),
+    )
+
+
 def _effect_rows(effects: dict, label: str | None = None) -> tuple[list[dict], list[dict]]:
     """One variant's robot effects (``effects.json``) as table rows, one per measure and term,
     and its counts per congruency x size cell, one row per measure."""
@@ -578,9 +589,9 @@ def _robot_values(emb: dict, own: dict) -> dict:
         ),
     }
     # the final posture error: per-network contrasts, Holm within their family
-    for effect, larger, level in (
-        ("congruency", "incongruent", "congruent"),
-        ("size", "small", "large"),
+    for effect, larger, level, where in (
+        ("congruency", "incongruent", "congruent", "when incongruent"),
+        ("size", "small", "large", "for small objects"),
     ):
         out[f"err_{larger}"] = err["means"][larger]
         out[f"err_{level}"] = err["means"][level]
@@ -590,7 +601,7 @@ def _robot_values(emb: dict, own: dict) -> dict:
             out[f"{key}_{stat}"] = term.get(stat, float("nan"))
         out[f"{key}_family"] = term.get("family", "")
         out[f"{key}_verdict"] = text.Claim(
-            difference_verdict(term, f"larger when {larger}", f"smaller when {larger}"),
+            difference_verdict(term, f"larger {where}", f"smaller {where}"),
             (f"beyond.{key}_estimate", f"beyond.{key}_p_holm"),
         )
     return out
@@ -680,12 +691,7 @@ def beyond(
         "div_last_cong": float(divergence["congruent"].iloc[-1]),
         "div_last_incong": float(divergence["incongruent"].iloc[-1]),
         "div_first_step": float("nan") if first_step is None else first_step,
-        "div_verdict": text.Claim(
-            f"at every step from step {first_step} to the last"
-            if first_step is not None
-            else "not at every step to the last (no lasting conflict shown)",
-            ("beyond.div_first_step",),
-        ),
+        "div_verdict": divergence_verdict(first_step),
         "pca_explained": text.pct(science.explained_by_two_axes(explained)),
     }
     return out, {"cue_anova": pd.DataFrame(rows), "cue_effects": pd.DataFrame(effects)}
