@@ -201,7 +201,7 @@ def test_the_bar_verdict(low, high, verdict):
     assert bar_verdict(low, high, 0.9) == verdict
 
 
-# -- the book's sentences: each a claim resting on the page's values, and moving with them -----
+# -- the book's values: the rows' numbers, and the bar phrase resting on them and moving with them
 
 
 #: The per-object cells of a row (``DETAIL_COLUMNS`` after the raw design effect).
@@ -257,89 +257,76 @@ def test_the_fixtures_counts_add_up_to_each_rows():
         assert sum(row[f"{c}_trials"] for c in CELLS) == row["trials"]
 
 
-def sentences(table: pd.DataFrame) -> dict:
+def page(table: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     from icub_workflow.book import pages
 
-    return pages.traced({"grasping": pages._confirmation(table, 2009)})
+    values, shown = pages._confirmation(table)
+    return pages.traced({"grasping": values}), shown
 
 
-def test_the_sentences_are_claims_resting_on_the_pages_values():
-    out = sentences(confirmation_csv())
-    page, claims = out["grasping"], out["claims"]["grasping"]
-    assert set(claims) == {"exploration_sentence", "confirmation_sentence"}
-    for entries in claims.values():
-        assert entries and all(e.split(".", 1)[1] in page for e in entries)
-        assert all(isinstance(page[e.split(".", 1)[1]], int | float) for e in entries)
-    assert "grasping.confirmation_ci_low" in claims["confirmation_sentence"]
-    assert "grasping.confirmation_design_effect_raw" in claims["confirmation_sentence"]
-    assert page["confirmation_design_effect_raw"] == pytest.approx(0.85)
-    assert "grasping.exploration_share" in claims["exploration_sentence"]
-    explored = page["exploration_sentence"]
-    assert "45 of its 48" in explored and "networks 0-11" in explored and "chosen on" in explored
-    assert "83% to 98%" in explored and "not set against it" in explored
-    confirmed = page["confirmation_sentence"]
-    assert (
-        "44 of its 48" in confirmed and "networks 12-23" in confirmed and "80% to 97%" in confirmed
+def test_the_values_are_the_rows_and_the_bar_phrase_rests_on_them():
+    out, shown = page(confirmation_csv())
+    values, claims = out["grasping"], out["claims"]["grasping"]
+    assert set(claims) == {"confirmation_bar"}
+    assert claims["confirmation_bar"] == [
+        "grasping.bar_share", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"
+    ]  # fmt: skip
+    for entry in claims["confirmation_bar"]:
+        assert isinstance(values[entry.split(".", 1)[1]], int | float)
+    assert (values["exploration_held"], values["exploration_trials"]) == (45, 48)
+    assert (values["exploration_first_network"], values["exploration_last_network"]) == (0, 11)
+    assert values["confirmation_held"] == 44 and values["confirmation_first_network"] == 12
+    assert values["confirmed_label"] == "all · cmd · h40 · 768k · anneal"
+    # the fresh networks' misses, one each on mapping A's objects as the fixture deals them
+    assert values["confirmation_misses"] == (
+        "big ball (A) 1 of 6; small ball (A) 1 of 6; big cube (A) 1 of 6; small cube (A) 1 of 6"
     )
-    # the design effect before its floor, and the four misses where they are (one each on
-    # mapping A's objects, as the fixture deals them)
-    assert "before the interval floors it at 1, 0.850" in confirmed
-    assert (
-        "per object and mapping: big ball (A) 1 of 6; small ball (A) 1 of 6; big cube (A) 1 of 6; "
-        "small cube (A) 1 of 6)" in confirmed
-    )
-    assert "(B)" not in confirmed
-    # the numbers move with the row's
-    moved = sentences(confirmation_csv(confirm=(41, 0.70, 0.92), raw=(0.85, 0.6)))["grasping"]
-    assert "0.600" in moved["confirmation_sentence"]
-    assert "big ball (B) 1 of 6" in moved["confirmation_sentence"]
-    assert "big ball (A) 2 of 6" not in moved["confirmation_sentence"]
-    held = sentences(confirmation_csv(confirm=(48, 0.93, 1.0), raw=(0.85, float("nan"))))
-    assert "per object and mapping: none)" in held["grasping"]["confirmation_sentence"]
+    assert shown["networks"].tolist() == ["0-11, chosen on", "12-23, fresh"]
+    assert shown["held"].tolist() == ["45/48, 94%", "44/48, 92%"]
+    assert shown["deff (raw)"].tolist()[1] == "0.850"
+    moved, _ = page(confirmation_csv(confirm=(41, 0.70, 0.92), raw=(0.85, 0.6)))
+    assert "big ball (B) 1 of 6" in moved["grasping"]["confirmation_misses"]
+    held, _ = page(confirmation_csv(confirm=(48, 0.93, 1.0), raw=(0.85, float("nan"))))
+    assert held["grasping"]["confirmation_misses"] == "none"
 
 
 @pytest.mark.parametrize(
-    ("low", "high", "words", "not_words"),
+    ("low", "high", "words"),
     [
-        (0.92, 0.99, ["lies above 90%", "above 90% (at 95% confidence)"], ["includes", "below"]),
-        (0.80, 0.97, ["includes 90%", "cannot tell"], ["lies above", "lies below"]),
-        (0.70, 0.88, ["lies below 90%", "below 90% (at 95% confidence)"], ["includes", "above"]),
+        (0.92, 0.99, "lies above it"),
+        (0.80, 0.97, "includes it"),
+        (0.70, 0.88, "lies below it"),
     ],
 )
-def test_the_bar_is_set_against_the_confirmations_interval(low, high, words, not_words):
-    out = sentences(confirmation_csv(confirm=(44, low, high)))["grasping"]
-    assert out["confirmation_verdict"] == bar_verdict(low, high, 0.9)
-    for word in words:
-        assert word in out["confirmation_sentence"], (word, out["confirmation_sentence"])
-    for word in not_words:
-        assert word not in out["confirmation_sentence"]
+def test_the_bar_is_set_against_the_confirmations_interval(low, high, words):
+    out, shown = page(confirmation_csv(confirm=(44, low, high)))
+    assert out["grasping"]["confirmation_verdict"] == bar_verdict(low, high, 0.9)
+    assert out["grasping"]["confirmation_bar"].startswith(words)
+    assert shown["vs bar"].tolist() == ["", bar_verdict(low, high, 0.9)]
 
 
 def test_the_exploration_alone_never_meets_the_bar():
     """An exploration interval far above the bar changes its numbers, not the verdict, which is
     the confirmation's."""
-    high = sentences(confirmation_csv(explore=(48, 0.95, 1.0)))["grasping"]
-    low = sentences(confirmation_csv(explore=(30, 0.45, 0.78)))["grasping"]
-    assert "48 of its 48" in high["exploration_sentence"]
-    assert "30 of its 48" in low["exploration_sentence"]
-    assert high["confirmation_sentence"] == low["confirmation_sentence"]
-    for verdict in ("lies above", "includes", "lies below", "clears", "cannot tell"):
-        assert verdict not in high["exploration_sentence"] + low["exploration_sentence"]
+    high, _ = page(confirmation_csv(explore=(48, 0.95, 1.0)))
+    low, _ = page(confirmation_csv(explore=(30, 0.45, 0.78)))
+    assert high["grasping"]["exploration_held"] == 48 and low["grasping"]["exploration_held"] == 30
+    assert high["grasping"]["confirmation_bar"] == low["grasping"]["confirmation_bar"]
 
 
-def test_two_confirmed_variants_each_rest_on_their_own_numbers():
+def test_every_confirmed_variant_is_in_the_table():
     one = confirmation_csv(confirm=(44, 0.92, 0.99))
     two = confirmation_csv(explore=(40, 0.7, 0.9), confirm=(30, 0.5, 0.8)).assign(hidden=20)
-    table = pd.concat(
-        [one[one["seed_set"] == "exploration"], two[two["seed_set"] == "exploration"]]
+    table = pd.concat([one, two], ignore_index=True)
+    out, shown = page(table)
+    assert out["grasping"]["confirmation_verdict"] == "above"  # the first's
+    assert (
+        shown["variant"].tolist()
+        == ["all · cmd · h40 · 768k · anneal"] * 2 + ["all · cmd · h20 · 768k · anneal"] * 2
     )
-    table = pd.concat([table, one[one["seed_set"] == "confirmation"]])
-    table = pd.concat([table, two[two["seed_set"] == "confirmation"]], ignore_index=True)
-    out = sentences(table)
-    page, claims = out["grasping"], out["claims"]["grasping"]
-    assert page["confirmation_verdict"] == "above" and page["confirmation_verdict_2"] == "below"
-    assert "grasping.confirmation_held_2" in claims["confirmation_sentence"]
-    assert "grasping.exploration_held_2" in claims["exploration_sentence"]
-    sentence = page["confirmation_sentence"]
-    assert "40 hidden" in sentence and "20 hidden" in sentence
-    assert sentence.index("lies above 90%") < sentence.index("lies below 90%")
+    assert shown["vs bar"].tolist() == ["", "above", "", "below"]
+
+
+def test_no_confirmed_variant_says_so():
+    out, shown = page(confirmation_csv().iloc[0:0])
+    assert shown.empty and out["grasping"]["confirmation_bar"].startswith("is not tested")

@@ -457,38 +457,36 @@ def test_every_robot_test_is_holm_adjusted_within_its_named_family():
     assert len(families[ROBOT_FAMILY]) == 3 + 3 + 2  # a: 3 + 3 contrasts; b: 2 exact
 
 
-def test_the_books_robot_sentences_read_the_effects_as_written():
-    """The book's effect sentences from ``variant_effects``' own output (with its interaction,
-    cells and objects): one per factor, each with the p adjusted over the robot's family."""
+def test_the_books_robot_verdicts_read_the_effects_as_written():
+    """The book's effect verdicts and table rows from ``variant_effects``' own output (with its
+    interaction, cells and objects): one per factor, each reading the p adjusted over the
+    robot's family."""
     from icub_workflow.book import pages
 
     df = made_up_trials(lambda n, o: o.startswith("big"), lambda n, o: np.nan, networks=6)
-    values = pages._robot_effect_values(variant_effects(df), "v", "best")
+    effects = variant_effects(df)["v"]
+    values = pages._best_effects(effects)
     assert set(values) == {
-        f"best_{m}_{f}{end}" for m in ("success", "contact_time") for f in ("congruency", "size")
-        for end in ("", "_estimate", "_p")
-    } | {
-        f"best_{m}_interaction{end}" for m in ("success", "contact_time")
-        for end in ("", "_estimate", "_p_holm")
-    } | {"best_misses"}  # fmt: skip
-    assert "Holm-adjusted" in values["best_success_size"].text
-    assert ROBOT_FAMILY in values["best_success_size"].text and "(2 tests)" in values[
-        "best_success_size"].text  # fmt: skip
-    assert values["best_contact_time_size"].text.startswith("not estimable (")
-    # every factor's sentence shows the cells: the large objects held, the small ones never
-    cells = "congruent large 6/6, congruent small 0/6, incongruent large 6/6, incongruent small 0/6"
-    for factor in ("congruency", "size"):
-        assert f"per cell, {cells}" in values[f"best_success_{factor}"].text
+        f"best_{m}_{f}{end}" for m in ("success", "contact_time")
+        for f in ("congruency", "size", "interaction") for end in ("", "_estimate", "_p")
+    } | {"best_misses", "robot_family", "robot_family_size"}  # fmt: skip
+    assert values["robot_family"] == ROBOT_FAMILY and values["robot_family_size"] == 2
+    assert values["best_contact_time_size"].text == "not estimable"
+    rows, cells = pages._effect_rows(effects)
+    # every cell shown: the large objects held, the small ones never
+    assert cells[0] == {"measure": "held", "cong. large": "6/6", "cong. small": "0/6",
+                        "incong. large": "6/6", "incong. small": "0/6"}  # fmt: skip
+    held = {r["effect"]: r for r in rows if r["measure"] == "held"}
+    assert held["size"]["p Holm"] != ""  # adjusted over the robot's family
     # the interaction: 0 in every network, no test and no exact fallback
     interaction = values["best_success_interaction"]
-    assert interaction.text.startswith(f"not tested (per cell, {cells}; ")
-    assert "no exact test" in interaction.text
-    assert np.isnan(values["best_success_interaction_p_holm"])
+    assert interaction.text == "not tested" and held["cong. × size"]["test"] == "none"
+    assert np.isnan(values["best_success_interaction_p"])
     assert interaction.rests_on == (
         "grasping.best_success_interaction_estimate",
-        "grasping.best_success_interaction_p_holm",
+        "grasping.best_success_interaction_p",
     )
-    assert values["best_contact_time_interaction"].text.startswith("not tested (")
+    assert values["best_contact_time_interaction"].text == "not tested"
     # the misses: every small object, three networks per mapping
     assert values["best_misses"] == (
         "A small ball 3 of 3; A small cube 3 of 3; B small ball 3 of 3; B small cube 3 of 3"

@@ -229,57 +229,59 @@ def test_the_made_up_counts_are_consistent():
     )
 
 
-def sentence(effs: dict, name: str) -> str:
-    values = pages._robot_effect_values(effs, "v", "best")
+def verdict(effs: dict, name: str) -> str:
+    """The best variant's verdict ``name`` (``pages._best_effects``), a claim resting on the
+    values stored beside it."""
+    values = pages._best_effects(effs["v"])
     claim = values[name]
     assert isinstance(claim, text.Claim)
-    for entry in claim.rests_on:  # every entry names a value stored beside the sentence
+    for entry in claim.rests_on:  # every entry names a value stored beside the verdict
         page, key = entry.split(".", 1)
         assert page == "grasping" and key in values, entry
     return claim.text
 
 
+def rows(effs: dict) -> dict[tuple[str, str], dict]:
+    """The effects table's rows of the made-up variant, by (measure, effect)."""
+    shown, _cells = pages._effect_rows(effs["v"])
+    return {(r["measure"], r["effect"]): r for r in shown}
+
+
 def test_the_issues_size_effect_counted_once_is_not_significant():
     # the constant-rate all_steps variant's size effect, counted once per network and object
     assert fisher_exact([[19, 5], [15, 9]])[1] == pytest.approx(0.34, abs=0.005)
-    words = sentence(effects(), "best_success_size")
-    assert words.startswith("not shown (")
-    assert "held in 19 of 24 distinct large trials and 15 of 24 small" in words
-    assert (
-        "per cell, congruent large 12/12, congruent small 8/12, incongruent large 7/12, "
-        "incongruent small 7/12" in words
-    )
-    assert "Fisher's exact test, p = 0.341" in words
-    assert "Holm-adjusted within the family" in words and "exploration: robot" in words
-    assert "(4 tests) p = 0.341" in words
+    assert verdict(effects(), "best_success_size") == "not shown"
+    row = rows(effects())["held", "size"]
+    assert row["test"] == "Fisher" and row["p"] == "0.34" and row["p Holm"] == "0.34"
+    assert row["estimate"] == "-0.167"  # 15/24 - 19/24, the shares' difference
     # the same shares counted five times over: what the old summary tested
     assert fisher_exact([[95, 25], [75, 45]])[1] < 0.01
 
 
-def test_a_contrast_claim_follows_its_sign_and_its_p():
-    base = sentence(effects(), "best_success_congruency")
-    assert base.startswith("as in the paper (") and "p = 0.020" in base  # congruent held more
-    assert "held in 20 of 24 distinct congruent trials and 14 of 24 incongruent" in base
-    assert "(4 tests) p = 0.040" in base  # significant after Holm over the robot's family
+def test_a_contrast_verdict_follows_its_sign_and_its_adjusted_p():
+    assert verdict(effects(), "best_success_congruency") == "as in the paper"  # congruent held more
+    row = rows(effects())["held", "congruency"]
+    assert (row["test"], row["p"], row["p Holm"]) == ("t (12)", "0.02", "0.04")
     flipped = effects()
     flipped["v"]["success"]["tests"]["congruency"] = contrast(+0.25, 0.02)
-    assert sentence(in_family(flipped), "best_success_congruency").startswith(
-        "the opposite of what the paper reports ("
-    )
+    assert verdict(in_family(flipped), "best_success_congruency") == "reversed"
     weak = effects()
     weak["v"]["success"]["tests"]["congruency"] = contrast(-0.25, 0.07)
     # a direction is not claimed from a test that does not show it
-    assert sentence(in_family(weak), "best_success_congruency").startswith("not shown (")
+    assert verdict(in_family(weak), "best_success_congruency") == "not shown"
     # nor from a raw p below 0.05 that Holm over the family lifts above it
     lifted = effects()
     lifted["v"]["success"]["tests"]["congruency"] = contrast(-0.25, 0.03)
-    words = sentence(in_family(lifted), "best_success_congruency")
-    assert words.startswith("not shown (") and "p = 0.030" in words and "p = 0.060" in words
+    assert verdict(in_family(lifted), "best_success_congruency") == "not shown"
+    assert rows(in_family(lifted))["held", "congruency"]["p Holm"] == "0.06"
     # contact time: longer when incongruent is the paper's direction
-    assert sentence(effects(), "best_contact_time_congruency").startswith("as in the paper (")
+    assert verdict(effects(), "best_contact_time_congruency") == "as in the paper"
     faster = effects()
     faster["v"]["contact_time"]["tests"]["congruency"] = contrast(-0.08, 0.01, networks=8)
-    assert sentence(in_family(faster), "best_contact_time_congruency").startswith("the opposite")
+    assert verdict(in_family(faster), "best_contact_time_congruency") == "reversed"
+    values = pages._best_effects(effects()["v"])
+    assert values["best_success_congruency_estimate"] == pytest.approx(14 / 24 - 20 / 24)
+    assert values["best_success_congruency_p"] == pytest.approx(0.04)  # the p the verdict reads
 
 
 #: The same congruency counts (20 and 14 of 24 held), the sizes' swapped (15 large, 19 small)
@@ -290,102 +292,72 @@ SAME = {"congruent_large": 10, "congruent_small": 10, "incongruent_large": 9,
         "incongruent_small": 9}  # fmt: skip
 
 
-def test_an_exact_claim_follows_its_counts_and_its_p():
+def test_an_exact_verdict_follows_its_counts_and_its_p():
     swapped = effects(SWAPPED)
     assert swapped["v"]["success"]["tests"]["size"]["table"] == [[15, 9], [19, 5]]
     swapped["v"]["success"]["tests"]["size"] = exact([[15, 9], [19, 5]], p=0.01)
-    words = sentence(in_family(swapped), "best_success_size")
-    assert words.startswith("the opposite of what the paper")
-    assert "held in 15 of 24 distinct large trials and 19 of 24 small" in words
+    assert verdict(in_family(swapped), "best_success_size") == "reversed"
     swapped["v"]["success"]["tests"]["size"] = exact([[15, 9], [19, 5]])  # p = 0.341
-    assert sentence(in_family(swapped), "best_success_size").startswith("not shown (")
+    assert verdict(in_family(swapped), "best_success_size") == "not shown"
     strong = effects()
     strong["v"]["success"]["tests"]["size"] = exact([[19, 5], [15, 9]], p=0.01)
-    assert sentence(in_family(strong), "best_success_size").startswith("as in the paper (")
+    assert verdict(in_family(strong), "best_success_size") == "as in the paper"
+    # equal shares are not shown to differ: only an equivalence test says "no difference"
     same = effects(SAME)
     assert same["v"]["success"]["tests"]["size"]["table"] == [[19, 5], [19, 5]]
-    words = sentence(same, "best_success_size")
-    assert words.startswith("no difference") and "19 of 24 distinct large trials" in words
-    values = pages._robot_effect_values(effects(), "v", "best")
+    assert verdict(same, "best_success_size") == "not shown"
+    values = pages._best_effects(effects()["v"])
     assert values["best_success_size_estimate"] == pytest.approx(15 / 24 - 19 / 24)
 
 
 def test_an_effect_that_cannot_be_estimated_says_so():
-    words = sentence(effects(), "best_contact_time_size")
-    assert words.startswith("not estimable (")
-    assert "every network that touched in all four cells shows the same contrast" in words
-    assert "touched in 22 of 24 distinct large trials and 18 of 24 small" in words
-    few = effects()
-    few["v"]["contact_time"]["tests"]["size"] = {
-        "method": "none",
-        "reason": "2 network(s) touched in all four congruency x size cells, fewer than the "
-        "three a test over networks needs",
-    }
-    assert "2 network(s)" in sentence(few, "best_contact_time_size")
-    values = pages._robot_effect_values(effects(), "v", "best")
-    assert values["best_contact_time_size_p"] != values["best_contact_time_size_p"]  # NaN
-    assert values["best_contact_time_size_estimate"] != values["best_contact_time_size_estimate"]
+    assert verdict(effects(), "best_contact_time_size") == "not estimable"
+    row = rows(effects())["contact, s", "size"]
+    assert (row["test"], row["estimate"], row["p"], row["p Holm"]) == ("none", "", "", "")
+    values = pages._best_effects(effects()["v"])
+    assert np.isnan(values["best_contact_time_size_p"])
+    assert np.isnan(values["best_contact_time_size_estimate"])
 
 
 def test_the_required_grip_term_and_the_misses_rest_on_the_cells_and_objects():
-    """The congruency x size term (twice the required grip's difference) is stated within its
-    family beside every cell's count, or not tested with its reason; the misses are named per
-    object and mapping."""
-    found = pages.traced({"grasping": pages._robot_effect_values(effects(), "v", "best")})
+    """The congruency x size term (twice the required grip's difference) is shown or not within
+    its family, or not tested; the counts per cell and the misses per object stand beside it."""
+    found = pages.traced({"grasping": pages._best_effects(effects()["v"])})
     page, claims = found["grasping"], found["claims"]["grasping"]
     assert claims["best_success_interaction"] == [
         "grasping.best_success_interaction_estimate",
-        "grasping.best_success_interaction_p_holm",
+        "grasping.best_success_interaction_p",
     ]
     assert page["best_success_interaction_estimate"] == pytest.approx(1 / 3)
-    assert page["best_success_interaction_p_holm"] == pytest.approx(0.004)
-    words = page["best_success_interaction"]
-    assert words.startswith("shown: +0.333") and "p = 0.001" in words and "p = 0.004" in words
-    assert words.endswith(
-        "(per cell, congruent large 12/12, congruent small 8/12, incongruent large 7/12, "
-        "incongruent small 7/12)"
-    )
-    untested = page["best_contact_time_interaction"]
-    assert untested.startswith(
-        "not tested (per cell, congruent large 11/12, congruent small 9/12, "
-        "incongruent large 11/12, incongruent small 9/12; every network"
-    )
-    assert np.isnan(page["best_contact_time_interaction_p_holm"])
-    # within its family: a raw p that Holm lifts above 0.05 is not shown
+    assert page["best_success_interaction_p"] == pytest.approx(0.004)
+    assert page["best_success_interaction"] == "shown"
+    assert page["best_contact_time_interaction"] == "not tested"
+    assert np.isnan(page["best_contact_time_interaction_p"])
     weak = effects()
     weak["v"]["success"]["tests"]["congruency:size"] = contrast(1 / 3, 0.045)
-    words = pages._robot_effect_values(in_family(weak), "v", "best")["best_success_interaction"]
-    assert words.text.startswith("not shown: +0.333")
+    assert verdict(in_family(weak), "best_success_interaction") == "not shown"
+    _rows, cells = pages._effect_rows(effects()["v"])
+    assert cells[0] == {"measure": "held", "cong. large": "12/12", "cong. small": "8/12",
+                        "incong. large": "7/12", "incong. small": "7/12"}  # fmt: skip
+    assert cells[1]["measure"] == "touched" and cells[1]["incong. small"] == "9/12"
     # the misses: held 12, 8, 7, 7 of 12 per cell, mapping A's the larger half of each cell
     assert page["best_misses"] == (
         "A big cube 2 of 6; A small ball 2 of 6; A small cube 2 of 6; B big ball 3 of 6; "
         "B small ball 2 of 6; B small cube 3 of 6"
     )
     every = effects({cell: 12 for cell in CELLS})
-    assert pages._robot_effect_values(every, "v", "best")["best_misses"] == "none"
+    assert pages._best_effects(every["v"])["best_misses"] == "none"
+    assert page["robot_family"] == "exploration: robot" and page["robot_family_size"] == 4
 
 
-def test_traced_keeps_what_each_robot_claim_rests_on():
-    found = pages.traced({"grasping": pages._robot_effect_values(effects(), "v", "best")})
-    claims = found["claims"]["grasping"]
-    assert claims["best_success_size"] == ["grasping.best_success_size_estimate",
-                                           "grasping.best_success_size_p"]  # fmt: skip
-    assert isinstance(found["grasping"]["best_success_size"], str)
-
-
-def test_the_wrong_grip_sentence_counts_the_failures_it_names():
-    import pandas as pd
-
-    variants = pd.DataFrame({"trials": [96, 96], "grasping_wrong_grip_hold": [0, 1],
-                             "categorisation_wrong_grip_hold": [2, 0]})  # fmt: skip
-    values = pages._wrong_grip_values(variants)
-    assert values["wrong_grip_sentence"].text.startswith(
-        "Of the 192 distinct trials of all variants, 3 held the object with a grip other"
-    )
-    assert "(1 grasping, 2 categorisation)" in values["wrong_grip_sentence"].text
-    none = pages._wrong_grip_values(variants.assign(grasping_wrong_grip_hold=0,
-                                                    categorisation_wrong_grip_hold=0))  # fmt: skip
-    assert none["wrong_grip_sentence"].text.startswith("No distinct trial of any variant")
+def test_a_variant_is_named_in_short_words():
+    row = {"categorisation_cue": "all_steps", "target": "commands", "hidden": 40,
+           "iterations": 768000, "learning_rate_schedule": "anneal"}  # fmt: skip
+    assert pages.short_label(row) == "all · cmd · h40 · 768k · anneal"
+    own = row | {"categorisation_cue": "first_step", "target": "sensed", "hidden": 10,
+                 "iterations": 12000, "learning_rate_schedule": "constant"}  # fmt: skip
+    assert pages.short_label(own) == "first · sens · h10 · 12k · const"
+    assert pages.short_label(row, ("categorisation_cue",)) == "cmd · h40 · 768k · anneal"
 
 
 def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> dict:
@@ -418,45 +390,37 @@ def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> 
 
 def test_the_chapter_beyond_states_the_robots_effects_from_their_tests():
     own = effects()["v"]
-    values = pages._robot_values(analysis(+0.01, 0.02), own)
-    found = pages.traced({"beyond": values})
+    found = pages.traced({"beyond": pages._robot_values(analysis(+0.01, 0.02), own)})
     words = found["beyond"]
     assert words["emb_n_trials"] == 96
-    assert words["emb_err_sentence"] == (
-        "the arm ended further from the demonstrated grasp in incongruent trials, significantly"
-    )
-    assert found["claims"]["beyond"]["emb_err_sentence"] == [
+    assert words["emb_final_error_congruency_verdict"] == "larger when incongruent"
+    assert found["claims"]["beyond"]["emb_final_error_congruency_verdict"] == [
         "beyond.emb_final_error_congruency_estimate",
         "beyond.emb_final_error_congruency_p_holm",
     ]
     # the verdict reads the p adjusted within the family, which is named
-    assert "the config's own networks on the robot" in words["emb_final_error_congruency"]
+    assert (
+        words["emb_final_error_congruency_family"]
+        == "exploration: the config's own networks on the robot"
+    )
     lifted = pages.traced({"beyond": pages._robot_values(analysis(+0.01, 0.04), own)})
-    assert "did not differ significantly" in lifted["beyond"]["emb_err_sentence"]
+    assert lifted["beyond"]["emb_final_error_congruency_verdict"] == "not shown to differ"
     flipped = pages.traced({"beyond": pages._robot_values(analysis(-0.01, 0.02), own)})
-    assert flipped["beyond"]["emb_err_sentence"].startswith("the arm ended nearer")
-    weak = pages.traced({"beyond": pages._robot_values(analysis(+0.01, 0.2), own)})
-    assert weak["beyond"]["emb_err_sentence"].endswith(
-        "did not differ significantly between congruent and incongruent trials"
-    )  # noqa: E501
-    assert words["emb_success_congruency"] == sentence(effects(), "best_success_congruency")
+    assert flipped["beyond"]["emb_final_error_congruency_verdict"] == "smaller when incongruent"
+    assert flipped["beyond"]["emb_final_error_size_verdict"] == "smaller for small objects"
+    assert words["emb_success_verdict"] == verdict(effects(), "best_success_congruency")
     other = copy.deepcopy(own)
     other["success"]["tests"]["congruency"] = contrast(+0.25, 0.02)
     other = in_family({"v": other})["v"]
     changed = pages.traced({"beyond": pages._robot_values(analysis(+0.01, 0.02), other)})
-    assert changed["beyond"]["emb_success_congruency"].startswith("the opposite")
-    assert changed["beyond"]["emb_success_congruency"] != words["emb_success_congruency"]
+    assert changed["beyond"]["emb_success_verdict"] == "reversed"
+    assert found["claims"]["beyond"]["emb_success_verdict"] == [
+        "beyond.emb_success_congruency_estimate",
+        "beyond.emb_success_congruency_p",
+    ]
     # the floor and the ceiling follow their rates
-    assert words["floor_sentence"] == "" and words["emb_ceiling_sentence"] == "at or above"
+    assert words["emb_floor"] == "clear of the floor" and words["emb_ceiling"] == "at or above"
     low = pages.traced({"beyond": pages._robot_values(analysis(0.01, 0.02, 0.05), own)})
-    assert low["beyond"]["floor_sentence"].startswith("Success is near the floor")
-
-
-def test_the_replays_held_with_the_other_grip_are_counted():
-    own = effects()["v"]
-    words = pages.traced({"beyond": pages._robot_values(analysis(0.01, 0.02), own)})["beyond"]
-    assert words["replay_wrong_sentence"].startswith("1 of these 40 replays held the object")
-    clean = analysis(0.01, 0.02)
-    clean["replay_wrong_grip_holds"]["commands"] = 0
-    words = pages.traced({"beyond": pages._robot_values(clean, own)})["beyond"]
-    assert words["replay_wrong_sentence"] == ""
+    assert low["beyond"]["emb_floor"].startswith("near the floor")
+    assert words["suc_diff_points"] == pytest.approx(-10)
+    assert words["replay_commands_wrong_grip"] == 1 and words["replay_commands_trials"] == 40

@@ -26,7 +26,7 @@ from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import TERMS, WITHIN
-from icub_affordance.variants import SCHEDULE_WORDS, NetworkVariant
+from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import OWN
 
 from . import text
@@ -379,13 +379,117 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
     )
 
 
-def _robot_values(emb: dict, own_effects: dict) -> dict:
-    """The chapter beyond the paper's robot numbers and sentences: ``emb`` is
-    ``embodied/analysis.json``, ``own_effects`` the config's own networks' entry of
-    ``embodied/effects.json``; every count over distinct trials, and every sentence that states
-    an effect a ``text.Claim`` resting on the statistics stored beside it."""
+# -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------
+
+#: A variant's settings in the robot tables' short words (the grasping chapter's legend).
+SHORT = {
+    "categorisation_cue": {"first_step": "first", "all_steps": "all"},
+    "target": {"sensed": "sens", "commands": "cmd"},
+    "learning_rate_schedule": {"constant": "const", "anneal": "anneal"},
+}
+#: The cue timings in the tables' short words.
+CUE_SHORT = {"first_step": "first step", "all_steps": "every step"}
+#: A robot effect's short name in the tables.
+EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "cong. × size"}
+
+
+def short_label(row: Mapping, leave_out: tuple[str, ...] = ()) -> str:
+    """A variant in short words, e.g. ``all · cmd · h40 · 768k · anneal``."""
+    v = NetworkVariant.from_row(row).row()
+    words = {k: SHORT[k].get(v[k], v[k]) for k in SHORT}
+    words |= {"hidden": f"h{int(v['hidden'])}", "iterations": f"{int(v['iterations']) / 1000:g}k"}
+    return " · ".join(words[k] for k in NetworkVariant.keys() if k not in leave_out)
+
+
+def robot_verdict(effect: dict, measure: str, factor: str) -> str:
+    """One robot effect against the paper (``findings.robot_effect_verdict``: its direction and
+    its p adjusted within the robot's family); the congruency x size term has no paper
+    direction, so it is "shown" or not."""
+    if factor == INTERACTION:
+        test = effect["tests"][INTERACTION]
+        if test["method"] != "contrasts":
+            return "not tested"
+        return "shown" if test["p_holm"] < science.ALPHA else "not shown"
+    verdict = science.robot_effect_verdict(effect, measure, factor)
+    if verdict is None:
+        return "not estimable"
+    if not verdict.significant:
+        return "not shown"
+    return "as in the paper" if verdict.paper_direction else "reversed"
+
+
+def difference_verdict(term: dict, larger: str, smaller: str, none: str = "not shown to differ"):
+    """A tested difference (positive: ``larger``), from its direction and adjusted p."""
+    word = text.verdict_word(term)
+    return {"reproduced": larger, "reversed": smaller, "not shown": none}.get(word, word)
+
+
+def divergence_verdict(first_step: int | None) -> text.Claim:
+    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps): the
+    first step from which incongruent trials are further from grasping at every step, if any."""
+    return text.Claim(
+        f"at every step from step {first_step} to the last"
+        if first_step is not None
+        else "not at every step to the last (no lasting conflict shown)",
+        ("beyond.div_first_step",),
+    )
+
+
+def _effect_rows(effects: dict, label: str | None = None) -> tuple[list[dict], list[dict]]:
+    """One variant's robot effects (``effects.json``) as table rows, one per measure and term,
+    and its counts per congruency x size cell, one row per measure."""
+    rows, cells = [], []
+    for measure, name in (("success", "held"), ("contact_time", "contact, s")):
+        effect = effects[measure]
+        counted = "held" if measure == "success" else "touched"
+        first = {"variant": label} if label else {}
+        cells.append(
+            first
+            | {"measure": counted}
+            | {
+                k.replace("incongruent_", "incong. ").replace("congruent_", "cong. "): (
+                    f"{c[counted]}/{c['trials']}"
+                )
+                for k, c in effect["cells"].items()
+            }
+        )
+        for factor in (*FACTOR_LEVELS, INTERACTION):
+            test = effect["tests"][factor]
+            estimate = (
+                science.robot_effect_statistics(effect, factor)["estimate"]
+                if factor != INTERACTION
+                else test.get("estimate", float("nan"))
+            )
+            contrast = test["method"] == "contrasts"
+            rows.append(
+                first
+                | {
+                    "measure": name,
+                    "effect": EFFECT_NAMES[factor],
+                    "test": f"t ({test['networks']})"
+                    if contrast
+                    else {"exact": "Fisher"}.get(test["method"], "none"),
+                    "estimate": f"{estimate:+.3f}" if np.isfinite(estimate) else "",
+                    "95% interval": f"{test['ci_low']:+.3f}, {test['ci_high']:+.3f}"
+                    if contrast
+                    else "",
+                    "p": f"{test['p']:.2g}" if "p" in test else "",
+                    "p Holm": f"{test['p_holm']:.2g}" if "p_holm" in test else "",
+                    "verdict": robot_verdict(effect, measure, factor),
+                }
+            )
+    return rows, cells
+
+
+def _robot_values(emb: dict, own: dict) -> dict:
+    """The chapter beyond's robot numbers (``embodied/analysis.json``; ``own`` the config's own
+    networks' ``effects.json`` entry), every count over distinct trials, and its verdicts, each
+    a ``text.Claim`` resting on the statistics stored beside it."""
     robot = science.robot_verdicts(emb)
     err, suc = emb["measures"]["final_error"], emb["measures"]["success"]
+    diff = suc["incongruent_minus_congruent"]
+    stats = science.robot_effect_statistics(own["success"], "congruency")
+    family = own["success"]["tests"]["congruency"].get("family", "")
     out = {
         "emb_n_trials": emb["n_trials"],
         "emb_n_networks": emb["n_networks"],
@@ -401,623 +505,391 @@ def _robot_values(emb: dict, own_effects: dict) -> dict:
         "replay_sensed_rate": float(emb["replay_success"]["sensed_postures"]),
         "replay_commands_wrong_grip": int(emb["replay_wrong_grip_holds"]["commands"]),
         "replay_commands_trials": int(emb["replay_trials"]["commands"]),
-        "err_congruent": err["means"]["congruent"],
-        "err_incongruent": err["means"]["incongruent"],
-        "err_large": err["means"]["large"],
-        "err_small": err["means"]["small"],
-    }
-    # the final posture error: per-network contrasts (t over networks) are the test
-    for effect in ("congruency", "size"):
-        term = (err["contrasts"] or {}).get(effect)
-        out[f"emb_final_error_{effect}_estimate"] = term["estimate"] if term else float("nan")
-        out[f"emb_final_error_{effect}_p"] = term["p"] if term else float("nan")
-        out[f"emb_final_error_{effect}_p_holm"] = term["p_holm"] if term else float("nan")
-        out[f"emb_final_error_{effect}"] = text.Claim(
-            text.fmt_term(term) if term else "not estimable",
-            (
-                f"beyond.emb_final_error_{effect}_estimate",
-                f"beyond.emb_final_error_{effect}_p_holm",
-            ),
-        )
-    # success: the per-network contrast, or the exact test over distinct trials without variance
-    stats = science.robot_effect_statistics(own_effects["success"], "congruency")
-    out["emb_success_congruency_estimate"] = stats["estimate"]
-    out["emb_success_congruency_p"] = stats["p"]
-    out["emb_success_congruency"] = text.Claim(
-        _robot_effect_text(own_effects["success"], "success", "congruency"),
-        ("beyond.emb_success_congruency_estimate", "beyond.emb_success_congruency_p"),
-    )
-    err_verdict = (
-        science.contrast_verdict(err["contrasts"], "congruency")
-        if err["contrasts"]
-        else science.Verdict(paper_direction=False, significant=False)
-    )
-    out |= {
         "suc_congruent": text.pct(suc["means"]["congruent"]),
         "suc_incongruent": text.pct(suc["means"]["incongruent"]),
-        "suc_diff": text.points_difference(suc["incongruent_minus_congruent"]),
-        "emb_err_sentence": text.Claim(
-            text.robot_error_sentence(err_verdict),
-            (
-                "beyond.emb_final_error_congruency_estimate",
-                "beyond.emb_final_error_congruency_p_holm",
-            ),
+        "suc_diff_points": 100 * diff["mean"],
+        "suc_diff_low": 100 * diff["ci_low"],
+        "suc_diff_high": 100 * diff["ci_high"],
+        "emb_success_congruency_estimate": stats["estimate"],
+        "emb_success_congruency_p": stats["p"],
+        "emb_success_family": family,
+        "emb_success_verdict": text.Claim(
+            robot_verdict(own["success"], "success", "congruency"),
+            ("beyond.emb_success_congruency_estimate", "beyond.emb_success_congruency_p"),
         ),
-        "emb_ceiling_sentence": text.Claim(
+        "emb_ceiling": text.Claim(
             "below" if robot["below_ceiling"] else "at or above",
             ("beyond.emb_success_rate", "beyond.replay_sensed_rate"),
         ),
-        "replay_wrong_sentence": text.Claim(
-            (
-                f"{out['replay_commands_wrong_grip']} of these {out['replay_commands_trials']} "
-                "replays held the object with a grip other than the one demonstrated (the "
-                "touch sensors read power in a precision grasp) and count as failures."
-            )
-            if out["replay_commands_wrong_grip"]
-            else "",
-            ("beyond.replay_commands_wrong_grip", "beyond.replay_commands_trials"),
-        ),
-        "floor_sentence": text.Claim(
-            text.floor_sentence(robot["at_floor"]), ("beyond.emb_categorisation_rate",)
+        "emb_floor": text.Claim(
+            "near the floor, so it can say little about congruency"
+            if robot["at_floor"]
+            else "clear of the floor",
+            ("beyond.emb_categorisation_rate",),
         ),
     }
+    # the final posture error: per-network contrasts, Holm within their family
+    for effect, larger, level, where in (
+        ("congruency", "incongruent", "congruent", "when incongruent"),
+        ("size", "small", "large", "for small objects"),
+    ):
+        out[f"err_{larger}"] = err["means"][larger]
+        out[f"err_{level}"] = err["means"][level]
+        term = (err["contrasts"] or {}).get(effect) or {"estimate": np.nan, "p": np.nan}
+        key = f"emb_final_error_{effect}"
+        for stat in ("estimate", "ci_low", "ci_high", "p", "p_holm"):
+            out[f"{key}_{stat}"] = term.get(stat, float("nan"))
+        out[f"{key}_family"] = term.get("family", "")
+        out[f"{key}_verdict"] = text.Claim(
+            difference_verdict(term, f"larger {where}", f"smaller {where}"),
+            (f"beyond.{key}_estimate", f"beyond.{key}_p_holm"),
+        )
     return out
 
 
-def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, pd.DataFrame]:
-    """The robot test, the cue ablation and the hidden layer; and the cue ablation's ANOVAs."""
+def beyond(
+    inputs: Mapping[str, str], config: dict, ablation_cue: str
+) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """The robot test, the cue ablation and the hidden layer; the cue timings' congruency
+    effects and ANOVAs."""
     emb = _json(inputs["embodied_analysis.json"])
-    # each run's tests in its own families (anova.json: the main run's confirmatory, the
-    # ablation's exploration)
     main, ablation = _json(inputs["anova.json"]), _json(inputs["ablation_anova.json"])
     divergence = pd.read_csv(inputs["divergence.csv"])
     first_step = _json(inputs["divergence.json"])["first_divergent_step"]
     explained = pd.read_csv(inputs["hidden_explained.csv"])
+    main_cue = config["network"]["categorisation_cue"]
     out = {
         "n_steps": config["demos"]["steps"],
         "n_predicted": config["demos"]["steps"] - 1,
         "n_hidden": config["network"]["hidden"],
+        "main_cue_phrase": text.CUES[main_cue],
+        "ablation_cue_phrase": text.CUES[ablation_cue],
     }
-    # the config's own networks' robot effects, over distinct trials (effects.json's main run)
     out |= _robot_values(emb, _json(inputs["robot_effects.json"])[OWN])
-
-    # the cue ablation: which reading of the paper's cue gives the effect
-    main_cue = config["network"]["categorisation_cue"]
-    rows = []
-    for cue, result in ((main_cue, main), (ablation_cue, ablation)):
+    rows, effects = [], []
+    for name, cue, result in (("main", main_cue, main), ("ablation", ablation_cue, ablation)):
         for mode in MODES:
             for effect in ("congruency", "size", "interaction"):
                 e = result[mode]["repeated_measures"][effect]
                 rows.append(
-                    {
-                        "cue": cue.replace("_", " "),
-                        "test": mode.replace("_", " "),
-                        "effect": effect,
-                        "F": e["F"],
-                        "df": f"({e['df1']:.0f}, {e['df2']:.0f})",
-                        "p": e["p"],
-                        "partial η²": e["eta_p2"],
-                    }
+                    {"cue": cue.replace("_", " "), "test": mode.replace("_", " "), "effect": effect}
+                    | {"F": e["F"], "df": f"({e['df1']:.0f}, {e['df2']:.0f})", "p": e["p"]}
+                    | {"partial η²": e["eta_p2"]}
                 )
-    for name, result in (("main", main), ("ablation", ablation)):
-        m, contrasts = result["closed_loop"], result["contrasts"]["closed_loop"]
-        out |= {
-            f"cue_{name}_congruent": m["means"]["congruent"],
-            f"cue_{name}_incongruent": m["means"]["incongruent"],
-            f"cue_{name}_congruency": text.fmt_term(contrasts["congruency"]),
-            f"cue_{name}_size": text.fmt_term(contrasts["size"]),
-        }
-        out |= _term_values(f"cue_{name}_congruency", contrasts["congruency"])
+        term = result["contrasts"]["closed_loop"]["congruency"]
+        key = f"cue_{name}_congruency"
+        out[f"cue_{name}_congruent"] = result["closed_loop"]["means"]["congruent"]
+        out[f"cue_{name}_incongruent"] = result["closed_loop"]["means"]["incongruent"]
+        for stat in ("estimate", "ci_low", "ci_high", "p", "p_holm"):
+            out[f"{key}_{stat}"] = (
+                term["p"] if stat == "p_holm" and stat not in term else term[stat]
+            )
+        out[f"{key}_family"] = term.get("family", "")
         out[f"cue_{name}_verdict"] = text.Claim(
-            text.cue_verdict(science.contrast_verdict(contrasts, "congruency")),
-            (f"beyond.cue_{name}_congruency_estimate", f"beyond.cue_{name}_congruency_p"),
+            text.verdict_word(term), (f"beyond.{key}_estimate", f"beyond.{key}_p_holm")
         )
-    # the test of the difference: first step only minus every step, paired by network
+        means = result["closed_loop"]["means"]
+        effects.append(
+            {"cue": f"{CUE_SHORT[cue]} ({name})"}
+            | {
+                "congruent": f"{means['congruent']:.4f}",
+                "incongruent": f"{means['incongruent']:.4f}",
+            }
+            | {"estimate": f"{term['estimate']:+.4f}"}
+            | {"95% interval": f"{term['ci_low']:+.4f}, {term['ci_high']:+.4f}"}
+            | {"p Holm": f"{out[key + '_p_holm']:.2g}", "verdict": text.verdict_word(term)}
+        )
+    # the test of the difference, first step only minus every step, paired by network; its
+    # adjusted p is the readings' table's, within that table's family
     difference = _json(inputs["cue_difference.json"])["congruency"]
-    # its verdict is the readings' table's, Holm-adjusted over that table's family of tests
-    differences = pd.read_csv(inputs["readings_differences.csv"])
-    row = differences[
-        (differences["comparison"] == "cue_timing")
-        & (differences["at"] == config["soms"]["goal_response"])
-        & (differences["measure"] == "rmse")
-        & (differences["effect"] == "congruency")
+    table = pd.read_csv(inputs["readings_differences.csv"])
+    row = table[
+        (table["comparison"] == "cue_timing")
+        & (table["at"] == config["soms"]["goal_response"])
+        & (table["measure"] == "rmse")
+        & (table["effect"] == "congruency")
     ]
     if len(row) == 1:
-        difference["p_holm"] = float(row["p_holm"].iloc[0])
-        difference["family"] = str(row["family"].iloc[0]) if "family" in row else "readings"
-    out |= _term_values("cue_difference", difference)
+        difference |= {"p_holm": float(row["p_holm"].iloc[0]), "family": row["family"].iloc[0]}
+    for stat in ("estimate", "ci_low", "ci_high", "df", "t", "p"):
+        out[f"cue_difference_{stat}"] = difference[stat]
     out["cue_difference_p_holm"] = difference.get("p_holm", difference["p"])
+    out["cue_difference_family"] = difference.get("family", "none")
+    out["cue_difference_verdict"] = text.Claim(
+        difference_verdict(
+            difference,
+            "larger with the cue at the first step only",
+            "larger with the cue at every step",
+            "not shown to differ between the timings",
+        ),
+        ("beyond.cue_difference_estimate", "beyond.cue_difference_p_holm"),
+    )
+    # the hidden layer: per-step paired tests, Holm over the steps
     out |= {
-        "main_cue_phrase": text.CUES[main_cue],
-        "ablation_cue_phrase": text.CUES[ablation_cue],
-        "cue_explanation": text.cue_difference(difference),
-    }
-
-    # the hidden layer
-    out |= {
-        "div_last_cong": float(divergence["congruent"].iloc[-1]),
-        "div_last_incong": float(divergence["incongruent"].iloc[-1]),
         "div_step1_cong": float(divergence["congruent"].iloc[0]),
         "div_step1_incong": float(divergence["incongruent"].iloc[0]),
+        "div_last_cong": float(divergence["congruent"].iloc[-1]),
+        "div_last_incong": float(divergence["incongruent"].iloc[-1]),
         "div_first_step": float("nan") if first_step is None else first_step,
-        "div_sentence": text.divergence_sentence(first_step),
+        "div_verdict": divergence_verdict(first_step),
         "pca_explained": text.pct(science.explained_by_two_axes(explained)),
     }
-    return out, pd.DataFrame(rows)
+    return out, {"cue_anova": pd.DataFrame(rows), "cue_effects": pd.DataFrame(effects)}
 
 
-def _variant_label(row: Mapping) -> str:
-    return NetworkVariant.from_row(row).label()
-
-
-def _schedule_sentence(pairs: list[dict]) -> str:
-    """The robot variants of this build that differ in the learning-rate schedule alone,
-    compared on the same networks' grasping trials (``robot_statistics.paired_grasping``)."""
-    if not pairs:
-        return "No two variants of this build differ in the learning-rate schedule alone."
-    said = []
-    for p in pairs:
-        a, b = SCHEDULE_WORDS[p["a"]], SCHEDULE_WORDS[p["b"]]
-        said.append(
-            f"with the cue {CUE_WORDS.get(p['categorisation_cue'], p['categorisation_cue'])}, "
-            f"{p['target']}, {int(p['hidden'])} hidden and {int(p['iterations']):,} iterations, "
-            f"the {a} holds the object in {p['held_a']} and the {b} in {p['held_b']} of the "
-            f"same {p['trials']} grasping trials (network and object); {p['only_a']} are held "
-            f"only with the {a} and {p['only_b']} only with the {b} (exact McNemar test "
-            f"{text.fmt_p(p['p'])})"
-        )
-    return "Variants that differ in the learning-rate schedule alone: " + "; ".join(said) + "."
-
-
-#: The cue timings in words.
-CUE_WORDS = {"first_step": "at the first step only", "all_steps": "at every step"}
-
-
-def _cue_sentence(variants: pd.DataFrame) -> str:
-    """The robot variants of this build that differ in the cue timing only, side by side."""
+def _pairs(variants: pd.DataFrame, schedule_pairs: list[dict]) -> pd.DataFrame:
+    """The variants that differ in one setting alone: the cue timing (shares side by side, not
+    tested) and the learning-rate schedule (paired by network and object: the exact McNemar
+    test of ``robot_statistics.paired_grasping``)."""
+    rows = []
     same = [k for k in NetworkVariant.keys() if k != "categorisation_cue"]
-    pairs = []
     for _, mine in variants.groupby(same, sort=True):
-        if mine["categorisation_cue"].nunique() < 2:
-            continue
-        held = ", ".join(
-            f"{text.pct(row['grasping_success'])} with the cue "
-            f"{CUE_WORDS.get(row['categorisation_cue'], row['categorisation_cue'])}"
-            for _, row in mine.sort_values("categorisation_cue", ascending=False).iterrows()
+        if mine["categorisation_cue"].nunique() == 2:
+            mine = mine.sort_values("categorisation_cue", ascending=False)
+            rows.append(
+                {
+                    "differs": "cue: first / all",
+                    "same": short_label(mine.iloc[0], ("categorisation_cue",)),
+                }
+                | {"held": " / ".join(text.pct(v) for v in mine["grasping_success"])}
+                | {"by one only": "", "McNemar p": "", "verdict": "not tested"}
+            )
+    for p in schedule_pairs:
+        rows.append(
+            {
+                "differs": f"rate: {SHORT['learning_rate_schedule'][p['a']]} / "
+                f"{SHORT['learning_rate_schedule'][p['b']]}"
+            }
+            | {
+                "same": short_label(
+                    p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",)
+                )
+            }
+            | {"held": f"{p['held_a']} / {p['held_b']} of {p['trials']}"}
+            | {"by one only": f"{p['only_a']} / {p['only_b']}", "McNemar p": f"{p['p']:.2g}"}
+            | {"verdict": "differ" if p["p"] < science.ALPHA else "not shown"}
         )
-        variant = NetworkVariant.from_row(mine.iloc[0])
-        pairs.append(f"{variant.label(leave_out=('categorisation_cue',))}: {held}")
-    if not pairs:
-        return "No two variants of this build differ in the cue timing alone."
-    return (
-        "Variants that differ in the cue timing alone hold the object in their grasping trials: "
-        + "; ".join(pairs)
-        + "."
+    return pd.DataFrame(
+        rows, columns=["differs", "same", "held", "by one only", "McNemar p", "verdict"]
     )
 
 
-def _confirmation(confirmation: pd.DataFrame, seed: int) -> dict:
-    """Explore, then confirm (config robot.confirmation; data/embodied/confirmation.csv): each
-    confirmed variant's share on the networks it was chosen on and on fresh ones, each with its
-    clustered interval, and the bar set against the confirmation's interval only. The statistics
-    are numbers named ``{seed set}_{statistic}`` (``_{k}`` appended for the k-th variant from the
-    second on); the two sentences are ``text.Claim`` s resting on them."""
-    if confirmation.empty:
-        none = (
-            "This build confirms no variant (config robot.confirmation.variants is empty), so no "
-            "share is set against the bar."
-        )
-        return {"exploration_sentence": "", "confirmation_sentence": none}
-    bar = text.pct(science.GRASPS)
+#: Where a confirmation's interval lies against the bar, and what that says.
+BAR_WORDS = {
+    "above": "lies above it: the variant holds the object more often than that (95% confidence)",
+    "includes": "includes it: these networks cannot tell whether the variant holds the object "
+    "more or less often than that",
+    "below": "lies below it: the variant holds the object less often than that (95% confidence)",
+}
+
+
+def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
+    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's
+    shares on the networks it was chosen on and on fresh ones, and the bar set against the
+    fresh networks' clustered interval only; every confirmed variant in the table."""
     out: dict[str, object] = {"bar_share": float(science.GRASPS)}
-    said_bar = {
-        "above": f"the confirmation's interval lies above {bar}, so the variant's rate of "
-        f"holding the object is above {bar} (at 95% confidence)",
-        "includes": f"the confirmation's interval includes {bar}, so these networks cannot tell "
-        f"whether the variant's rate is above or below {bar}",
-        "below": f"the confirmation's interval lies below {bar}, so the variant's rate of "
-        f"holding the object is below {bar} (at 95% confidence)",
-    }
+    rows = []
+    for _, row in confirmation.iterrows():
+        fresh = row["seed_set"] == "confirmation"
+        verdict = confirmation_science.bar_verdict(row["ci_low"], row["ci_high"], science.GRASPS)
+        rows.append(
+            {"variant": short_label(row)}
+            | {
+                "networks": f"{int(row['first_network'])}-{int(row['last_network'])}, "
+                + ("fresh" if fresh else "chosen on")
+            }
+            | {"held": f"{int(row['held'])}/{int(row['trials'])}, {text.pct(row['share'])}"}
+            | {"95% interval": f"{text.pct(row['ci_low'])}-{text.pct(row['ci_high'])}"}
+            | {"deff (raw)": f"{row['design_effect_raw']:.3f}"}
+            | {"vs bar": verdict if fresh else ""}
+        )
+    table = pd.DataFrame(rows)
+    if confirmation.empty:
+        return out | {
+            "confirmed_label": "none",
+            "confirmation_bar": "is not tested: this build "
+            "confirms no variant (config robot.confirmation.variants is empty)",
+        }, table
+    explored = confirmation[confirmation["seed_set"] == "exploration"].iloc[0]
+    fresh = confirmation[confirmation["seed_set"] == "confirmation"].iloc[0]
     counts = ("networks", "first_network", "last_network", "trials", "held")
-    entries = {"exploration": [], "confirmation": ["grasping.bar_share"]}
-    said: dict[str, list[str]] = {"exploration": [], "confirmation": []}
-    explored = confirmation[confirmation["seed_set"] == "exploration"]
-    for k, (_, row) in enumerate(explored.iterrows()):
-        suffix = "" if k == 0 else f"_{k + 1}"
-        mine = confirmation[(confirmation["seed_set"] == "confirmation")].iloc[k]
-        v = {}
-        for name, source in (("exploration", row), ("confirmation", mine)):
-            for column in (*counts, "share", "ci_low", "ci_high"):
-                value = source[column]
-                v[name, column] = int(value) if column in counts else float(value)
-                out[f"{name}_{column}{suffix}"] = v[name, column]
-                entries[name].append(f"grasping.{name}_{column}{suffix}")
-
-        def share(name: str, v=v) -> str:
-            low, high = text.pct(v[name, "ci_low"]), text.pct(v[name, "ci_high"])
-            return (
-                f"{v[name, 'held']} of its {v[name, 'trials']} distinct grasping trials "
-                f"({text.pct(v[name, 'share'])}; 95% interval {low} to {high})"
-            )
-
-        def networks(name: str, v=v) -> str:
-            return f"seed {seed}'s networks {v[name, 'first_network']}-{v[name, 'last_network']}"
-
-        label = f"the variant ({_variant_label(row)})"
-        verdict = confirmation_science.bar_verdict(
-            v["confirmation", "ci_low"], v["confirmation", "ci_high"], science.GRASPS
-        )
-        out[f"confirmation_verdict{suffix}"] = verdict
-        said["exploration"].append(
-            f"on the networks it was chosen on ({networks('exploration')}, on which the grid and "
-            f"the schedule were tried: the exploration), {label} holds the object in "
-            f"{share('exploration')}"
-        )
-        out[f"confirmation_design_effect_raw{suffix}"] = float(mine["design_effect_raw"])
-        entries["confirmation"].append(f"grasping.confirmation_design_effect_raw{suffix}")
-        misses = [
-            f"{o.replace('_', ' ')} ({m}) {int(mine[f'{m}_{o}_trials'] - mine[f'{m}_{o}_held'])} "
-            f"of {int(mine[f'{m}_{o}_trials'])}"
+    for name, source in (("exploration", explored), ("confirmation", fresh)):
+        for column in (*counts, "share", "ci_low", "ci_high"):
+            value = source[column]
+            out[f"{name}_{column}"] = int(value) if column in counts else float(value)
+    verdict = confirmation_science.bar_verdict(fresh["ci_low"], fresh["ci_high"], science.GRASPS)
+    out["confirmed_label"] = short_label(fresh)
+    out["confirmation_verdict"] = verdict
+    out["confirmation_bar"] = text.Claim(
+        BAR_WORDS[verdict],
+        ("grasping.bar_share", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"),
+    )
+    out["confirmation_misses"] = (
+        "; ".join(
+            f"{o.replace('_', ' ')} ({m}) {int(fresh[f'{m}_{o}_trials'] - fresh[f'{m}_{o}_held'])} "
+            f"of {int(fresh[f'{m}_{o}_trials'])}"
             for m in confirmation_science.MAPPINGS
             for o in confirmation_science.OBJECT_NAMES
-            if mine[f"{m}_{o}_held"] < mine[f"{m}_{o}_trials"]
-        ]
-        raw = float(mine["design_effect_raw"])
-        raw_design = (
-            f"the raw design effect, before the interval floors it at 1, {raw:.3f}"
-            if np.isfinite(raw)
-            else "no design effect: every trial or none was held, so there is no spread"
+            if fresh[f"{m}_{o}_held"] < fresh[f"{m}_{o}_trials"]
         )
-        said["confirmation"].append(
-            f"on {v['confirmation', 'networks']} fresh networks ({networks('confirmation')}, "
-            "never used to choose it; the same demonstrations and maps), "
-            f"{'it' if len(explored) == 1 else label} holds the object in "
-            f"{share('confirmation')}: {said_bar[verdict]} ({raw_design}; the trials it missed, "
-            f"per object and mapping: {'; '.join(misses) or 'none'})"
-        )
-    out["exploration_sentence"] = text.Claim(
-        "Counted once per network and object, and with an interval that takes each network's "
-        "four objects as one cluster (Korn and Graubard's: Clopper-Pearson's exact interval at "
-        "the effective number of trials): "
-        + "; ".join(said["exploration"])
-        + f". That share is the data the variant was chosen on, so the choice biases it upwards, "
-        f"and the bar of {bar} is not set against it.",
-        tuple(entries["exploration"]),
+        or "none"
     )
-    out["confirmation_sentence"] = text.Claim(
-        "Trained again and tested by the same rules, " + "; ".join(said["confirmation"]) + ".",
-        tuple(entries["confirmation"]),
-    )
-    return out
-
-
-def _palm_sentence(best: Mapping, own: Mapping, replay: Mapping) -> str:
-    """Where the learned networks' palms end, beside where the demonstrations' own ends
-    (``replay``: ``robot_statistics.replay_palm``)."""
-    return (
-        f"In their grasping trials the best variant's palm ends a median "
-        f"{best['grasping_palm_error_mm']:.1f} mm from the demonstrator's, the config's own "
-        f"networks' {own['grasping_palm_error_mm']:.1f} mm. The demonstrations themselves, "
-        f"replayed through the same controller, end a median "
-        f"{replay['palm_error_mm_median']:.1f} mm from that mean (at most "
-        f"{replay['palm_error_mm_max']:.1f} mm) and hold the object in "
-        f"{text.pct(replay['held'])} of their {replay['trials']} replays."
-    )
+    return out, table
 
 
 def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
     """Share held per bin of palm error, one column per source of trials (each its
     ``embodied_stats.held_by_palm_error`` table)."""
-    columns = {}
-    for name, bins in sources.items():
-        columns[name] = [
-            f"{text.pct(row['held'])} of {int(row['trials'])}" if row["trials"] else ""
-            for _, row in bins.iterrows()
+    columns = {
+        name: [
+            f"{text.pct(r['held'])} of {int(r['trials'])}" if r["trials"] else ""
+            for _, r in bins.iterrows()
         ]
+        for name, bins in sources.items()
+    }
+    edges = next(iter(sources.values()))
     labels = [
-        f"{low:g}-{high:g} mm" if np.isfinite(high) else f"{low:g} mm or more"
-        for low, high in zip(bins["low_mm"], bins["high_mm"], strict=True)
+        f"{low:g}-{high:g}" if np.isfinite(high) else f"{low:g} or more"
+        for low, high in zip(edges["low_mm"], edges["high_mm"], strict=True)
     ]
-    return pd.DataFrame({"palm error": labels} | columns)
+    return pd.DataFrame({"palm (mm)": labels} | columns)
 
 
-def _level_counts(effect: dict, measure: str, factor: str) -> str:
-    """The two levels' distinct trials of one robot effect, the paper's faster level first, and
-    every congruency x size cell's beside them: an effect can come from one cell alone."""
-    first, second = FACTOR_LEVELS[factor]
-    a, b = effect[factor][first], effect[factor][second]
-    if measure == "success":
-        verb, x, y = "held", round(a["mean"] * a["trials"]), round(b["mean"] * b["trials"])
-    else:
-        verb, x, y = "touched", a["n"], b["n"]
-    return (
-        f"{verb} in {x} of {a['trials']} distinct {first} trials and {y} of {b['trials']} "
-        f"{second}; per cell, {_cell_counts(effect, measure)}"
-    )
-
-
-def _cell_counts(effect: dict, measure: str) -> str:
-    """Each congruency x size cell's count of the measure over its distinct trials."""
-    counted = "held" if measure == "success" else "touched"
-    return ", ".join(
-        f"{name.replace('_', ' ')} {cell[counted]}/{cell['trials']}"
-        for name, cell in effect["cells"].items()
-    )
-
-
-def _robot_effect_text(effect: dict, measure: str, factor: str) -> str:
-    """One variant's effect of ``factor`` on a robot ``measure``, in words and numbers, over its
-    distinct trials (``effects.json``: one per network x object)."""
-    verdict = science.robot_effect_verdict(effect, measure, factor)
-    test = effect["tests"][factor]
-    first, second = FACTOR_LEVELS[factor]
-    counts = _level_counts(effect, measure, factor)
-    if verdict is None:
-        return f"not estimable ({counts}; {test['reason']})"
-    if test["method"] == "contrasts":
-        unit = " s" if measure == "contact_time" else ""
-        what = "share held" if measure == "success" else "contact time"
-        numbers = (
-            f"{counts}; per-network contrast of the {what}, {second} minus {first}, "
-            f"{test['estimate']:+.3f}{unit}, 95% interval {text.fmt_ci(test)}, "
-            f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}{_holm_words(test)}, "
-            f"{test['networks']} networks"
-        )
-    else:
-        (x, x_no), (y, y_no) = test["table"]
-        if x * (y + y_no) == y * (x + x_no):  # the same rate in both conditions
-            return f"no difference ({counts})"
-        numbers = f"{counts}; Fisher's exact test, {text.fmt_p(test['p'])}{_holm_words(test)}"
-    if not verdict.significant:  # a direction is not claimed from a test that does not show it
-        return f"not shown ({numbers})"
-    grip = effect["tests"][INTERACTION]
-    if grip["method"] == "contrasts" and grip["p_holm"] < science.ALPHA:
-        numbers += (
-            "; the congruency × size term is shown too, so this difference is an average over "
-            "cells that differ with the required grip, not an effect of every cell"
-        )
-    return f"{text.paper_agreement(verdict)} ({numbers})"
-
-
-def _robot_interaction_text(effect: dict, measure: str) -> str:
-    """The congruency x size term of a robot measure: twice the required grip's difference
-    (power - precision), which has no paper direction; shown or not within its family."""
-    test = effect["tests"][INTERACTION]
-    cells = _cell_counts(effect, measure)
-    if test["method"] != "contrasts":
-        return f"not tested (per cell, {cells}; {test['reason']})"
-    shown = "shown" if test["p_holm"] < science.ALPHA else "not shown"
-    return (
-        f"{shown}: {test['estimate']:+.3f}, 95% interval {text.fmt_ci(test)}, "
-        f"t({test['df']:.0f}) = {test['t']:.2f}, {text.fmt_p(test['p'])}{_holm_words(test)} "
-        f"(per cell, {cells})"
-    )
-
-
-def _object_misses(effect: dict) -> str:
-    """The objects a variant did not hold in every categorisation trial, per mapping."""
-    misses = [
-        f"{name.replace('_', ' ')} {cell['trials'] - cell['held']} of {cell['trials']}"
-        for name, cell in effect["objects"].items()
-        if cell["held"] < cell["trials"]
-    ]
-    return "; ".join(misses) if misses else "none"
-
-
-def _holm_words(test: dict) -> str:
-    if "p_holm" not in test:
-        return ""
-    return f", {text.fmt_family(test)}"
-
-
-def _robot_effect_values(effects: dict, run: str, key: str, page: str = "grasping") -> dict:
-    """For one variant (``key``: own or best) each robot effect's sentence, a ``text.Claim``
-    resting on its difference and p, which are stored beside it; the required-grip term and the
-    misses per object beside them."""
+def _best_effects(effects: dict) -> dict:
+    """The best variant's robot effects: each verdict a ``text.Claim`` resting on its difference
+    and the p it reads (Holm within the robot's family), stored beside it."""
     out: dict[str, object] = {}
     for measure in ("success", "contact_time"):
-        effect = effects[run][measure]
-        for factor in FACTOR_LEVELS:
-            name = f"{key}_{measure}_{factor}"
-            stats = science.robot_effect_statistics(effect, factor)
+        effect = effects[measure]
+        for factor in (*FACTOR_LEVELS, INTERACTION):
+            name = f"best_{measure}_{factor.replace('congruency:size', 'interaction')}"
+            test = effect["tests"][factor]
+            if factor == INTERACTION:
+                stats = {"estimate": test.get("estimate", np.nan), "p": test.get("p_holm", np.nan)}
+            else:
+                stats = science.robot_effect_statistics(effect, factor)
             out[f"{name}_estimate"], out[f"{name}_p"] = stats["estimate"], stats["p"]
             out[name] = text.Claim(
-                _robot_effect_text(effect, measure, factor),
-                (f"{page}.{name}_estimate", f"{page}.{name}_p"),
+                robot_verdict(effect, measure, factor),
+                (f"grasping.{name}_estimate", f"grasping.{name}_p"),
             )
-        name = f"{key}_{measure}_interaction"
-        test = effect["tests"][INTERACTION]
-        out[f"{name}_estimate"] = test.get("estimate", float("nan"))
-        out[f"{name}_p_holm"] = test.get("p_holm", float("nan"))
-        out[name] = text.Claim(
-            _robot_interaction_text(effect, measure),
-            (f"{page}.{name}_estimate", f"{page}.{name}_p_holm"),
+    out["best_misses"] = (
+        "; ".join(
+            f"{name.replace('_', ' ')} {cell['trials'] - cell['held']} of {cell['trials']}"
+            for name, cell in effects["success"]["objects"].items()
+            if cell["held"] < cell["trials"]
         )
-    out[f"{key}_misses"] = _object_misses(effects[run]["success"])
+        or "none"
+    )
+    tests = [t for m in effects.values() for t in m["tests"].values() if "family" in t]
+    out["robot_family"] = tests[0]["family"] if tests else "none"
+    out["robot_family_size"] = tests[0]["family_size"] if tests else 0
     return out
 
 
-def _wrong_grip_values(variants: pd.DataFrame) -> dict:
-    """How many distinct trials the grip criterion fails (held, but with the other grip), in
-    all variants together and per task; and the sentence that says so."""
-    grasp = int(variants["grasping_wrong_grip_hold"].sum())
-    cat = int(variants["categorisation_wrong_grip_hold"].sum())
-    trials = int(variants["trials"].sum())
-    if grasp + cat == 0:
-        words = (
-            f"No distinct trial of any variant ({trials} in all) held the object with a grip "
-            "other than the required one."
-        )
-    else:
-        words = (
-            f"Of the {trials} distinct trials of all variants, {grasp + cat} held the object "
-            f"with a grip other than the required one ({grasp} grasping, {cat} "
-            "categorisation) and count as failures; the table's last column gives them per "
-            "variant."
-        )
-    return {
-        "wrong_grip_grasping": grasp,
-        "wrong_grip_categorisation": cat,
-        "wrong_grip_trials": trials,
-        "wrong_grip_sentence": text.Claim(
-            words,
-            (
-                "grasping.wrong_grip_grasping",
-                "grasping.wrong_grip_categorisation",
-                "grasping.wrong_grip_trials",
-            ),
-        ),
-    }
-
-
 def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The robot grasps with what it learned: the variants' success, the best and the smallest
-    that grasps, and the congruency and size effects on success and contact time."""
+    """The robot grasps with what it learned: the variants, the confirmation of the best, how
+    precisely the arm must move, and the congruency and size effects on the body."""
     variants = pd.read_csv(inputs["robot_variants.csv"])
     effects = _json(inputs["robot_effects.json"])
-    anova = _json(inputs["anova.json"])
-    robot_stats = _json(inputs["robot_statistics.json"])
-    tolerance = record_table(robot_stats["tolerance"])
+    stats = _json(inputs["robot_statistics.json"])
+    tolerance = record_table(stats["tolerance"])
     tolerated = science.tolerated_noise(tolerance)
     exact = tolerance[tolerance["noise"] == 0].iloc[0]  # config checks: noise 0 is listed
     own = variants[variants["run"] == OWN].iloc[0]
     best = science.best_robot_variant(variants)
     smallest = science.smallest_that_grasps(variants)
-    animated = config["robot"]["animation"]["variant"]
     network = config["network"]
-    animated = {
-        "categorisation_cue": network["categorisation_cue"],
-        "learning_rate_schedule": network["learning_rate_schedule"],
-    } | animated
+    animated = {k: network[k] for k in ("categorisation_cue", "learning_rate_schedule")}
+    replay = stats["replay"]
     out = {
         "bar": text.pct(science.GRASPS),
         "n_variants": len(variants),
         "n_networks": int(own["networks"]),
-        "own_label": _variant_label(own),
+        "grid_scope": "the whole grid (robustness=True)"
+        if config["robustness"]
+        else "the config's own networks and the variants config robot.default lists",
+        "own_label": short_label(own),
         "own_grasping": text.pct(own["grasping_success"]),
-        "own_categorisation": text.pct(own["categorisation_success"]),
-        "best_label": _variant_label(best),
+        "best_label": short_label(best),
         "best_grasping": text.pct(best["grasping_success"]),
         "best_categorisation": text.pct(best["categorisation_success"]),
-        "best_contact": text.pct(best["grasping_contact"]),
-        "smallest_sentence": (
-            f"The smallest variant that holds the object in at least {text.pct(science.GRASPS)} "
-            f"of its grasping trials on these networks is {_variant_label(smallest)} "
-            f"({text.pct(smallest['grasping_success'])}), a share on the networks the variants "
-            "were compared on, not a test against the bar."
-            if smallest is not None
-            else f"No variant tested in this build holds the object in "
-            f"{text.pct(science.GRASPS)} of its grasping trials: the issue's bar is not met."
-        ),
-        "grid_sentence": (
-            "This build tested the whole grid (robustness)."
-            if config["robustness"]
-            else "This build tested only the config's own networks and the variants that config "
-            "robot.default lists; a build with robustness=True tests the whole grid."
-        ),
-        "animated_label": _variant_label(animated),
-        "best_palm_error": f"{best['grasping_palm_error_mm']:.0f} mm",
-        "own_palm_error": f"{own['grasping_palm_error_mm']:.0f} mm",
-        "tolerance_exact": (
-            f"the plan holds the object in {text.pct(exact['success'])} of its "
-            f"{int(exact['trials'])} trials, its palm {exact['palm_error_mm']:.1f} mm (median) "
-            "from the demonstrator's"
-        ),
-        "tolerance_sentence": (
-            f"The largest arm noise at which the plan holds the object in at least "
-            f"{text.pct(science.GRASPS)} of the trials is {tolerated['noise']:g} (0-1 units), "
-            f"where the palm ends {tolerated['palm_error_mm']:.1f} mm (median) from the "
-            f"demonstrator's ({text.pct(tolerated['success'])} held)."
-            if tolerated is not None
-            else f"At no arm noise tested does the plan hold the object in "
-            f"{text.pct(science.GRASPS)} of the trials."
-        ),
-        "palm_sentence": _palm_sentence(best, own, robot_stats["replay"]),
-        **_confirmation(pd.read_csv(inputs["robot_confirmation.csv"]), config["seed"]),
-        "cue_sentence": _cue_sentence(variants),
-        "schedule_sentence": _schedule_sentence(robot_stats["schedule_pairs"]),
-        "rmse_congruency": text.fmt_term(anova["contrasts"]["closed_loop"]["congruency"]),
-        "rmse_size": text.fmt_term(anova["contrasts"]["closed_loop"]["size"]),
+        "smallest_label": short_label(smallest) if smallest is not None else "none",
+        "animated_label": short_label(animated | config["robot"]["animation"]["variant"]),
+        "best_palm_mm": float(best["grasping_palm_error_mm"]),
+        "own_palm_mm": float(own["grasping_palm_error_mm"]),
+        "replay_palm_mm": float(replay["palm_error_mm_median"]),
+        "replay_palm_max_mm": float(replay["palm_error_mm_max"]),
+        "replay_held": text.pct(replay["held"]),
+        "replay_trials": int(replay["trials"]),
+        "exact_held": text.pct(exact["success"]),
+        "exact_trials": int(exact["trials"]),
+        "exact_palm_mm": float(exact["palm_error_mm"]),
+        "tolerated_noise": f"{tolerated['noise']:g}" if tolerated is not None else "none tested",
+        "tolerated_palm_mm": float(tolerated["palm_error_mm"]) if tolerated is not None else np.nan,
+        "wrong_grip_grasping": int(variants["grasping_wrong_grip_hold"].sum()),
+        "wrong_grip_categorisation": int(variants["categorisation_wrong_grip_hold"].sum()),
+        "wrong_grip_trials": int(variants["trials"].sum()),
     }
-    rows = []
+    out |= _best_effects(effects[best["run"]])
+    confirmed, confirmation = _confirmation(pd.read_csv(inputs["robot_confirmation.csv"]))
+    out |= confirmed
+    rows, cells = [], []
     for _, row in variants.iterrows():
-        effect = effects[row["run"]]
-        for measure in ("success", "contact_time"):
-            for factor in FACTOR_LEVELS:
-                rows.append(
-                    {
-                        "variant": _variant_label(row),
-                        "measure": measure.replace("_", " "),
-                        "factor": factor,
-                        "distinct trials": effect[measure]["distinct_trials"],
-                        "method": effect[measure]["tests"][factor]["method"],
-                        "result": _robot_effect_text(effect[measure], measure, factor),
-                    }
+        r, c = _effect_rows(effects[row["run"]], short_label(row))
+        rows, cells = rows + r, cells + c
+    best_rows, best_cells = _effect_rows(effects[best["run"]])
+    table = pd.DataFrame(
+        {
+            "variant": [short_label(r) for _, r in variants.iterrows()],
+            "nets": variants["networks"],
+            "trials": variants["grasping_trials"],
+            "grasp": [text.pct(v) for v in variants["grasping_success"]],
+            "categ.": [text.pct(v) for v in variants["categorisation_success"]],
+            "touched": [text.pct(v) for v in variants["grasping_contact"]],
+            "contact (s)": [
+                f"{v:.2f}" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
+            ],
+            "palm (mm)": [f"{v:.0f}" for v in variants["grasping_palm_error_mm"]],
+            "other grip": [
+                f"{int(g)} + {int(c)}"
+                for g, c in zip(
+                    variants["grasping_wrong_grip_hold"],
+                    variants["categorisation_wrong_grip_hold"],
+                    strict=True,
                 )
-            rows.append(
-                {
-                    "variant": _variant_label(row),
-                    "measure": measure.replace("_", " "),
-                    "factor": "congruency × size (2 × required grip, power − precision)",
-                    "distinct trials": effect[measure]["distinct_trials"],
-                    "method": effect[measure]["tests"][INTERACTION]["method"],
-                    "result": _robot_interaction_text(effect[measure], measure),
-                }
-            )
-    for key, row in (("own", own), ("best", best)):
-        out |= _robot_effect_values(effects, row["run"], key)
-    out |= _wrong_grip_values(variants)
-    table = variants.assign(
-        variant=[_variant_label(r) for _, r in variants.iterrows()],
-        grasping=[text.pct(v) for v in variants["grasping_success"]],
-        categorisation=[text.pct(v) for v in variants["categorisation_success"]],
-        touched=[text.pct(v) for v in variants["grasping_contact"]],
-        contact_time=[
-            f"{v:.2f} s" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
-        ],
-        palm_error=[f"{v:.0f} mm" for v in variants["grasping_palm_error_mm"]],
-        wrong_grip=[
-            f"{int(g)} + {int(c)}"
-            for g, c in zip(
-                variants["grasping_wrong_grip_hold"],
-                variants["categorisation_wrong_grip_hold"],
-                strict=True,
-            )
-        ],
-    )
-    table = table.rename(columns={"grasping_trials": "distinct trials per task"})
-    shown = ["variant", "networks", "distinct trials per task", "grasping", "categorisation"]
-    shown += ["touched", "contact_time", "palm_error"]
-    table = table[[*shown, "wrong_grip"]].rename(
-        columns={"wrong_grip": "held with the other grip (grasping + categorisation)"}
+            ],
+        }
     )
     objects = [c.removesuffix("_success") for c in tolerance.columns if c.endswith("_success")]
     tolerance_shown = pd.DataFrame(
         {
-            "arm noise (0-1 units)": [f"σ = {v:g}" for v in tolerance["noise"]],
+            "arm noise σ": [f"{v:g}" for v in tolerance["noise"]],
             "trials": tolerance["trials"].astype(int),
             "held": [text.pct(v) for v in tolerance["success"]],
-            "palm error (median)": [f"{v:.1f} mm" for v in tolerance["palm_error_mm"]],
+            "palm (mm)": [f"{v:.1f}" for v in tolerance["palm_error_mm"]],
         }
-        | {
-            obj.replace("_", " "): [text.pct(v) for v in tolerance[f"{obj}_success"]]
-            for obj in objects
-        }
+        | {o.replace("_", " "): [text.pct(v) for v in tolerance[f"{o}_success"]] for o in objects}
     )
-    bins = robot_stats["held_by_palm_error"]
+    bins = stats["held_by_palm_error"]
     palm = _palm_table(
         {
-            "mean plan, arm offset": record_table(bins["tolerance"]),
-            "demonstrations replayed": record_table(bins["replay"]),
-            f"best variant ({_variant_label(best)})": record_table(bins["runs"][best["run"]]),
-            "config's own networks": record_table(bins["runs"][OWN]),
+            "offset plan": record_table(bins["tolerance"]),
+            "demos replayed": record_table(bins["replay"]),
+            "best variant": record_table(bins["runs"][best["run"]]),
+            "own networks": record_table(bins["runs"][OWN]),
         }
     )
     return out, {
-        "robot_palm": palm,
         "robot_variants": table,
+        "robot_pairs": _pairs(variants, stats["schedule_pairs"]),
+        "robot_confirmation": confirmation,
+        "robot_effects_best": pd.DataFrame(best_rows),
+        "robot_cells_best": pd.DataFrame(best_cells),
         "robot_effects": pd.DataFrame(rows),
+        "robot_cells": pd.DataFrame(cells),
         "robot_tolerance": tolerance_shown,
+        "robot_palm": palm,
     }
 
 
@@ -1263,7 +1135,7 @@ def page_findings(
     rmse, iterations = _curves(inputs)
     curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
     demos = load_npz(inputs["demos.npz"])
-    beyond_values, cue_table = beyond(inputs, config, ablation_cue)
+    beyond_values, beyond_tables = beyond(inputs, config, ablation_cue)
     robustness_values, sweep_table = robustness(inputs, config)
     readings_values, readings_tables = readings(inputs, config)
     grasping_values, grasping_tables = grasping(inputs, config)
@@ -1300,8 +1172,8 @@ def page_findings(
             "headline": headline(anova),
             "scorecard": score_table,
             "comparison": comparison(anova, curve, config),
-            "cue_anova": cue_table,
         }
+        | beyond_tables
         | readings_tables
         | grasping_tables
         | size_tables
