@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from icub_affordance.findings import ALPHA, Verdict
+from icub_affordance.findings import ALPHA
 from icub_affordance.measures import is_hypothesis
 
 
@@ -141,15 +141,6 @@ def shown_word(term: dict, alpha: float = ALPHA) -> str:
     return "shown" if word in ("reproduced", "reversed") else word
 
 
-def paper_agreement(verdict: Verdict) -> str:
-    """How an effect stands to the paper, after "congruent trials were lower" (front page)."""
-    if not verdict.significant:
-        return "unlike the paper, which reports a significant difference"
-    return (
-        "as in the paper" if verdict.paper_direction else "the opposite of what the paper reports"
-    )
-
-
 def test_values(page: str, prefix: str, term: dict, verdict=verdict_word) -> dict:
     """A test as page values: its numbers as the analysis wrote them, ``_stats`` (all of them for
     reading), and ``_verdict``, a ``Claim`` resting on its estimate and adjusted p."""
@@ -165,19 +156,6 @@ def pct(x: float) -> str:
 
 
 # The main effects: the front page, the results, the discussion and the chapter beyond the paper.
-
-
-def robot_error_sentence(verdict: Verdict) -> str:
-    """The congruency effect on the robot's final posture error; no direction without its test."""
-    if not verdict.significant:
-        return (
-            "the final error did not differ significantly between congruent and incongruent trials"
-        )
-    return (
-        "the arm ended further from the demonstrated grasp in incongruent trials, significantly"
-        if verdict.paper_direction
-        else "the arm ended nearer the demonstrated grasp in incongruent trials, significantly"
-    )
 
 
 def anova_or_undefined(anova: dict | None, effect: str) -> str:
