@@ -990,15 +990,6 @@ def notes(config: dict) -> dict:
     }
 
 
-def _t_from_interval(row: Mapping) -> float:
-    """t = estimate / se as ``stats.t_term`` computed it, read back from the 95% interval the
-    analysis wrote (half-width = t(0.975, df) · se): the slope and grip tables keep no t."""
-    from scipy import stats as sps
-
-    se = (row["ci_high"] - row["ci_low"]) / (2 * sps.t.ppf(0.975, row["df"]))
-    return float(row["estimate"] / se) if se > 0 else float("nan")
-
-
 #: The size study's cue timings and controls, in short.
 SIZE_CUES = {"first_step": "first step", "all_steps": "every step"}
 SIZE_CONTROLS = {"removed": "no size in input", "equal_grips": "dose 0, equal grips"}
@@ -1060,7 +1051,8 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
 
     def tested(key: str, cue: str, row: Mapping) -> tuple[str, ...]:
         values[f"{key}_{cue}"] = float(row["estimate"])
-        values[f"{key}_t_{cue}"] = _t_from_interval(row)
+        values[f"{key}_ci_low_{cue}"] = float(row["ci_low"])
+        values[f"{key}_ci_high_{cue}"] = float(row["ci_high"])
         values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
         return (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
 
