@@ -117,6 +117,7 @@ FINDINGS_TABLES = [
     "comparison",
     "cue_anova",
     "readings_matrix",
+    "readings_verdicts",
     "readings_summary",
     "readings_differences",
     "readings_margins",

@@ -137,86 +137,144 @@ def object_means(measures: dict) -> pd.DataFrame:
     )
 
 
+def _p(p: float) -> str:
+    return f"{p:.2g}" if np.isfinite(p) else "–"
+
+
+def _estimate(d: float) -> str:
+    return f"{d:+.3g}" if d else "0"
+
+
+def _holm(row, column: str = "p_holm") -> str:
+    """A Holm p, or why the row has none (not in the family its column names)."""
+    if np.isfinite(row[column]):
+        return _p(row[column])
+    if not readings_science.is_hypothesis(row["measure"]):
+        return (
+            "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
+        )
+    return "identical" if str(row.get("identical")) == "True" else "no variation"
+
+
+def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> str:
+    """The one family a table's adjusted p are Holm-adjusted within (``readings.FAMILY_*``)."""
+    tested = table[p].map(np.isfinite) & table["measure"].map(readings_science.is_hypothesis)
+    (family,) = set(table.loc[tested, column])
+    return family
+
+
+def _by_measure(table: pd.DataFrame, column, cell) -> pd.DataFrame:
+    """Measure and effect (rows) by ``column(row)`` (columns), each cell ``cell(row)``."""
+    rows: dict = {}
+    for _, r in table.iterrows():
+        label = {"measure": text.MEASURE_LABELS[r["measure"]], "effect": r["effect"]}
+        rows.setdefault((r["measure"], r["effect"]), label)[column(r)] = cell(r)
+    return pd.DataFrame(list(rows.values()))
+
+
+def _numbers(table: pd.DataFrame, label) -> pd.DataFrame:
+    """Every row's estimate, interval, raw p and Holm p, its family in the column's name."""
+    return pd.DataFrame(
+        {
+            "": table.apply(label, axis=1),
+            "measure": table["measure"].map(text.MEASURE_LABELS),
+            "effect": table["effect"],
+            "estimate": table["diff"].map(_estimate),
+            "95% interval": [
+                f"[{a:+.3g}, {b:+.3g}]"
+                for a, b in zip(table["ci_low"], table["ci_high"], strict=True)
+            ],
+            "p": table["p"].map(_p),
+            f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
+        }
+    )
+
+
+def _reading(row) -> str:
+    return text.reading_label(row["cue"], row["goal_response"])
+
+
+def _comparison(row) -> str:
+    name = "cue" if row["comparison"] == "cue_timing" else "Goal"
+    return f"{name} · {text.CUE_LABELS.get(row['at'], row['at'])}"
+
+
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The readings chapter: the matrix of readings x measures (raw and Holm-adjusted p), the
-    tests of the differences between cue timings and Goal responses, the Goal map's clusters
-    under each response, and the conclusions, each a ``text.Claim`` resting on the statistics
-    stored here (``text.summary_key``, ``text.difference_key``)."""
+    """The readings chapter: the Goal map's clusters under each response, the statistics of the
+    readings x measures matrix and of the differences between readings, the verdict phrases on
+    them (``text.reading_claims``, ``text.difference_claims``), and the tables: the matrix and
+    the differences with their verdicts, every number of both (folded), the margins."""
     summary = pd.read_csv(inputs["readings_summary.csv"])
-    differences = pd.read_csv(inputs["readings_differences.csv"])
-    goal_units = {}
+    diffs = pd.read_csv(inputs["readings_differences.csv"], keep_default_na=False, na_values=[""])
+    values = {}
     for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
         if name in inputs:
             soms = load_npz(inputs[name])
             for o, obj in enumerate(soms["objects"].tolist()):
                 for t, task in enumerate(soms["tasks"].tolist()):
-                    goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
-                        soms["goal_act"][o, t]
-                    )
-
-    def number(value) -> float | None:
-        """A statistic, or None (null) where there is none: a null control's Holm p, a constant
-        measure's p, the cue timing's equivalence test."""
-        return float(value) if np.isfinite(value) else None
-
-    stats = {
-        text.summary_key(row, stat): number(row[stat])
-        for _, row in summary.iterrows()
-        for stat in ("diff", "p", "p_holm")
-    } | {
-        text.difference_key(row, stat): number(row[stat])
-        for _, row in differences.iterrows()
-        for stat in ("diff", "p", "p_holm", "margin", "p_equivalence_holm")
+                    values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
+    for table, key, stats in (
+        (summary, text.summary_key, ("diff", "p", "p_holm")),
+        (diffs, text.difference_key, ("diff", "p", "p_holm", "margin", "p_equivalence_holm")),
+    ):  # a statistic, or None where there is none (a null control's Holm p, ...)
+        for _, row in table.iterrows():
+            values |= {key(row, s): float(row[s]) if np.isfinite(row[s]) else None for s in stats}
+    values |= {
+        "n_readings": int(summary["reading"].nunique()),
+        "replications": " to ".join(map(str, sorted(set(summary["replications"])))),
+        "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
+        "n_differences": int(np.isfinite(diffs["p_holm"]).sum()),
+        "n_equivalence": int(np.isfinite(diffs["p_equivalence_holm"]).sum()),
+        "family": _family(summary),
+        "family_differences": _family(diffs),
+        "family_equivalence": _family(diffs, "family_equivalence", "p_equivalence_holm"),
     }
-    reps = sorted(set(summary["replications"]))
-    claims = text.readings_conclusion(summary) | {
-        "conclusion_null": text.null_control_sentence(summary),
-        "conclusion_cue": text.cue_timing_conclusion(differences),
-        "conclusion_goal": text.goal_response_conclusion(differences),
-    }
-    values = (
-        goal_units
-        | stats
-        | {
-            "n_readings": int(summary["reading"].nunique()),
-            "replications": " to ".join(map(str, reps)),
-            "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
-            "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
-            "margins": ", ".join(
-                f"{text.MEASURE_NAMES[m]} ±{v:g}"
-                for m, v in config["readings"]["equivalence_margin"].items()
-                if m in config["readings"]["measures"]
-            ),
-            "conclusion_method": text.readings_method(summary),
-        }
-        | {key: claim if claim is not None else "" for key, claim in claims.items()}
-    )
+    values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
+    values |= text.difference_claims(diffs, "goal_response", "goal")
 
-    def shown(table: pd.DataFrame, columns: tuple[str, str]) -> list[str]:
-        return [text.reading_label(c, g) for c, g in zip(*(table[c] for c in columns), strict=True)]
+    def verdict(row) -> str:
+        if not readings_science.is_hypothesis(row["measure"]):
+            return _estimate(row["diff"])
+        if "comparison" in row:
+            word = text.DIFFERENCE_WORDS[readings_science.difference_verdict(row)]
+        else:
+            word = text.DIRECTION_WORDS[readings_science.direction(row)]
+        return f"{_estimate(row['diff'])} {word}"
 
-    readings_config = config["readings"]
-    margins = pd.DataFrame(
-        [
-            {
-                "measure": text.MEASURE_NAMES[m],
-                "margin": f"±{margin:g}",
-                "declared in commit": readings_config["margin_declared"][m]["commit"],
-                "results of the measure read before": (
-                    "yes" if readings_config["margin_declared"][m]["results_before"] else "no"
-                ),
-            }
-            for m, margin in readings_config["equivalence_margin"].items()
-            if m in readings_config["measures"]
+    numbers = _numbers(summary, _reading)
+    if (summary["replications"] > 1).any():
+        numbers["paper / reversed"] = [
+            f"{a} / {b} of {n}"
+            for a, b, n in summary[["n_paper", "n_reversed", "replications"]].to_numpy()
         ]
-    )
+    tost = diffs["margin"].map(np.isfinite)
+    declared = config["readings"]["margin_declared"]
+    margins = config["readings"]["equivalence_margin"]
     return values, {
-        "readings_margins": margins,
-        "readings_matrix": readings_science.matrix(
-            summary.assign(reading=shown(summary, ("cue", "goal_response")))
+        "readings_matrix": _by_measure(summary, _reading, verdict),
+        "readings_summary": numbers,
+        "readings_verdicts": _by_measure(
+            diffs[diffs["measure"].map(readings_science.is_hypothesis)], _comparison, verdict
         ),
-        "readings_summary": summary,
-        "readings_differences": readings_science.difference_display(differences),
+        "readings_differences": _numbers(diffs, _comparison).assign(
+            margin=diffs["margin"].map(lambda m: f"±{m:g}" if np.isfinite(m) else "–"),
+            **{
+                f"TOST Holm p, “{values['family_equivalence']}”": [
+                    _holm(r, "p_equivalence_holm") if t else "–"
+                    for (_, r), t in zip(diffs.iterrows(), tost, strict=True)
+                ]
+            },
+        ),
+        "readings_margins": pd.DataFrame(
+            {
+                "measure": [text.MEASURE_LABELS[m] for m in margins],
+                "margin": [f"±{v:g}" for v in margins.values()],
+                "declared in": [declared[m]["commit"] for m in margins],
+                "its results read before": [
+                    "yes" if declared[m]["results_before"] else "no" for m in margins
+                ],
+            }
+        ).loc[[m in config["readings"]["measures"] for m in margins]],
     }
 
 
