@@ -142,7 +142,7 @@ def _p(p: float) -> str:
 
 
 def _estimate(d: float) -> str:
-    return f"{d:+.3g}" if d else "0"
+    return np.format_float_positional(d, 3, fractional=False, sign=True) if d else "0"
 
 
 def _holm(row, column: str = "p_holm") -> str:
@@ -172,17 +172,16 @@ def _by_measure(table: pd.DataFrame, column, cell) -> pd.DataFrame:
     return pd.DataFrame(list(rows.values()))
 
 
-def _numbers(table: pd.DataFrame, label) -> pd.DataFrame:
+def _numbers(table: pd.DataFrame, label, name: str) -> pd.DataFrame:
     """Every row's estimate, interval, raw p and Holm p, its family in the column's name."""
     return pd.DataFrame(
         {
-            "": table.apply(label, axis=1),
+            name: table.apply(label, axis=1),
             "measure": table["measure"].map(text.MEASURE_LABELS),
             "effect": table["effect"],
-            "estimate": table["diff"].map(_estimate),
-            "95% interval": [
-                f"[{a:+.3g}, {b:+.3g}]"
-                for a, b in zip(table["ci_low"], table["ci_high"], strict=True)
+            "estimate [95% interval]": [
+                f"{_estimate(d)} [{_estimate(a)}, {_estimate(b)}]"
+                for d, a, b in table[["diff", "ci_low", "ci_high"]].to_numpy()
             ],
             "p": table["p"].map(_p),
             f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
@@ -241,7 +240,7 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             word = text.DIRECTION_WORDS[readings_science.direction(row)]
         return f"{_estimate(row['diff'])} {word}"
 
-    numbers = _numbers(summary, _reading)
+    numbers = _numbers(summary, _reading, "reading")
     if (summary["replications"] > 1).any():
         numbers["paper / reversed"] = [
             f"{a} / {b} of {n}"
@@ -256,11 +255,10 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "readings_verdicts": _by_measure(
             diffs[diffs["measure"].map(readings_science.is_hypothesis)], _comparison, verdict
         ),
-        "readings_differences": _numbers(diffs, _comparison).assign(
-            margin=diffs["margin"].map(lambda m: f"±{m:g}" if np.isfinite(m) else "–"),
+        "readings_differences": _numbers(diffs, _comparison, "comparison").assign(
             **{
-                f"TOST Holm p, “{values['family_equivalence']}”": [
-                    _holm(r, "p_equivalence_holm") if t else "–"
+                f"TOST Holm p (margin), “{values['family_equivalence']}”": [
+                    f"{_holm(r, 'p_equivalence_holm')} (±{r['margin']:g})" if t else "–"
                     for (_, r), t in zip(diffs.iterrows(), tost, strict=True)
                 ]
             },
