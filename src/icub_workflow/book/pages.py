@@ -146,9 +146,9 @@ def _estimate(d: float) -> str:
 
 
 def _holm(row, column: str = "p_holm") -> str:
-    """A Holm p, or why the row has none (not in the family its column names)."""
+    """A Holm p (2 significant digits), or why the row has none: it is in no family."""
     if np.isfinite(row[column]):
-        return _p(row[column])
+        return f"{row[column]:.2g}"
     if not readings_science.is_hypothesis(row["measure"]):
         return (
             "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
@@ -163,39 +163,47 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
     return family
 
 
-def _by_measure(table: pd.DataFrame, column, cell) -> pd.DataFrame:
-    """Measure and effect (rows) by ``column(row)`` (columns), each cell ``cell(row)``."""
+def _label(row) -> str:
+    """A reading (``first · fixed``), or a comparison at a level of the other choice."""
+    if "comparison" in row:
+        name = "cue" if row["comparison"] == "cue_timing" else "Goal"
+        return f"{name} · {text.CUE_LABELS.get(row['at'], row['at'])}"
+    return f"{text.CUE_LABELS[row['cue']]} · {row['goal_response']}"
+
+
+def _verdicts(table: pd.DataFrame) -> pd.DataFrame:
+    """Measure and effect (rows) by reading or comparison (columns): the estimate and, for a
+    hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``)."""
     rows: dict = {}
     for _, r in table.iterrows():
+        cell = _estimate(r["diff"])
+        if readings_science.is_hypothesis(r["measure"]):
+            test = (
+                readings_science.difference_verdict
+                if "comparison" in r
+                else readings_science.direction
+            )
+            cell += " " + text.WORDS.get(test(r), test(r))
         label = {"measure": text.MEASURE_LABELS[r["measure"]], "effect": r["effect"]}
-        rows.setdefault((r["measure"], r["effect"]), label)[column(r)] = cell(r)
+        rows.setdefault((r["measure"], r["effect"]), label)[_label(r)] = cell
     return pd.DataFrame(list(rows.values()))
 
 
-def _numbers(table: pd.DataFrame, label, name: str) -> pd.DataFrame:
+def _numbers(table: pd.DataFrame, name: str) -> pd.DataFrame:
     """Every row's estimate, interval, raw p and Holm p, its family in the column's name."""
     return pd.DataFrame(
         {
-            name: table.apply(label, axis=1),
+            name: table.apply(_label, axis=1),
             "measure": table["measure"].map(text.MEASURE_LABELS),
             "effect": table["effect"],
             "estimate [95% interval]": [
                 f"{_estimate(d)} [{_estimate(a)}, {_estimate(b)}]"
                 for d, a, b in table[["diff", "ci_low", "ci_high"]].to_numpy()
             ],
-            "p": table["p"].map(_p),
+            "p": table["p"].map(lambda p: f"{p:.2g}" if np.isfinite(p) else "–"),
             f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
         }
     )
-
-
-def _reading(row) -> str:
-    return text.reading_label(row["cue"], row["goal_response"])
-
-
-def _comparison(row) -> str:
-    name = "cue" if row["comparison"] == "cue_timing" else "Goal"
-    return f"{name} · {text.CUE_LABELS.get(row['at'], row['at'])}"
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -212,12 +220,14 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             for o, obj in enumerate(soms["objects"].tolist()):
                 for t, task in enumerate(soms["tasks"].tolist()):
                     values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
-    for table, key, stats in (
-        (summary, text.summary_key, ("diff", "p", "p_holm")),
-        (diffs, text.difference_key, ("diff", "p", "p_holm", "margin", "p_equivalence_holm")),
+    for table, stats in (
+        (summary, ("diff", "p", "p_holm")),
+        (diffs, ("diff", "p", "p_holm", "margin", "p_equivalence_holm")),
     ):  # a statistic, or None where there is none (a null control's Holm p, ...)
         for _, row in table.iterrows():
-            values |= {key(row, s): float(row[s]) if np.isfinite(row[s]) else None for s in stats}
+            values |= {
+                text.stat_key(row, s): row[s] if np.isfinite(row[s]) else None for s in stats
+            }
     values |= {
         "n_readings": int(summary["reading"].nunique()),
         "replications": " to ".join(map(str, sorted(set(summary["replications"])))),
@@ -230,49 +240,33 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     }
     values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
     values |= text.difference_claims(diffs, "goal_response", "goal")
-
-    def verdict(row) -> str:
-        if not readings_science.is_hypothesis(row["measure"]):
-            return _estimate(row["diff"])
-        if "comparison" in row:
-            word = text.DIFFERENCE_WORDS[readings_science.difference_verdict(row)]
-        else:
-            word = text.DIRECTION_WORDS[readings_science.direction(row)]
-        return f"{_estimate(row['diff'])} {word}"
-
-    numbers = _numbers(summary, _reading, "reading")
+    numbers = _numbers(summary, "reading")
     if (summary["replications"] > 1).any():
-        numbers["paper / reversed"] = [
-            f"{a} / {b} of {n}"
-            for a, b, n in summary[["n_paper", "n_reversed", "replications"]].to_numpy()
-        ]
-    tost = diffs["margin"].map(np.isfinite)
-    declared = config["readings"]["margin_declared"]
-    margins = config["readings"]["equivalence_margin"]
+        counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
+        numbers["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
+    tost = [
+        f"{_holm(r, 'p_equivalence_holm')} (±{r['margin']:g})" if np.isfinite(r["margin"]) else "–"
+        for _, r in diffs.iterrows()
+    ]
+    declared, margins = (config["readings"][k] for k in ("margin_declared", "equivalence_margin"))
+    shown = [m for m in margins if m in config["readings"]["measures"]]
     return values, {
-        "readings_matrix": _by_measure(summary, _reading, verdict),
+        "readings_matrix": _verdicts(summary),
         "readings_summary": numbers,
-        "readings_verdicts": _by_measure(
-            diffs[diffs["measure"].map(readings_science.is_hypothesis)], _comparison, verdict
-        ),
-        "readings_differences": _numbers(diffs, _comparison, "comparison").assign(
-            **{
-                f"TOST Holm p (margin), “{values['family_equivalence']}”": [
-                    f"{_holm(r, 'p_equivalence_holm')} (±{r['margin']:g})" if t else "–"
-                    for (_, r), t in zip(diffs.iterrows(), tost, strict=True)
-                ]
-            },
+        "readings_verdicts": _verdicts(diffs[diffs["measure"].map(readings_science.is_hypothesis)]),
+        "readings_differences": _numbers(diffs, "comparison").assign(
+            **{f"TOST Holm p (margin), “{values['family_equivalence']}”": tost}
         ),
         "readings_margins": pd.DataFrame(
             {
-                "measure": [text.MEASURE_LABELS[m] for m in margins],
-                "margin": [f"±{v:g}" for v in margins.values()],
-                "declared in": [declared[m]["commit"] for m in margins],
+                "measure": [text.MEASURE_LABELS[m] for m in shown],
+                "margin": [f"±{margins[m]:g}" for m in shown],
+                "declared in": [declared[m]["commit"] for m in shown],
                 "its results read before": [
-                    "yes" if declared[m]["results_before"] else "no" for m in margins
+                    "yes" if declared[m]["results_before"] else "no" for m in shown
                 ],
             }
-        ).loc[[m in config["readings"]["measures"] for m in margins]],
+        ),
     }
 
 

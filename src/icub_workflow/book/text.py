@@ -690,10 +690,11 @@ def cost_findings(cost, growth: dict) -> str:
 
 
 # ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
-# Short verdict phrases on the readings' tests, each a Claim resting on the statistics the page
-# stores under ``summary_key`` and ``difference_key``; the sentences around them are the page's.
+# Short verdict phrases on the readings' tests, each a Claim resting on the page's statistics
+# (``stat_key``); the sentences around them are the page's own.
 
-#: The readings' measures, cue timings and verdicts as the chapter's tables name them (its legend).
+#: The chapter's names of the measures and cue timings (its tables' legend), and of the verdicts
+#: (``readings.direction``, ``readings.difference_verdict``) where they differ from the verdict.
 MEASURE_LABELS = {
     "rmse": "RMSE",
     "rmse_correct": "correct-trial RMSE",
@@ -704,46 +705,28 @@ MEASURE_LABELS = {
     "rmse_per_grip_distance_excess": "excess over null",
 }
 CUE_LABELS = {"first_step": "first", "all_steps": "every"}
-DIRECTION_WORDS = {
-    "paper": "paper",
-    "reversed": "reversed",
-    "none": "not shown",
-    "constant": "no variation",
-}
-#: ``readings.difference_verdict`` in words: a's effect larger or smaller than b's in the paper's
-#: direction (Holm), the same within the margin (TOST, Holm), identical (untested), or neither.
-DIFFERENCE_WORDS = {
-    "a > b": "larger",
-    "a < b": "smaller",
-    "equivalent": "equivalent",
-    "identical": "identical",
-    "not shown": "not shown",
-    "not a hypothesis": "",
-}
+WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller"}
 
 
-def summary_key(row, stat: str) -> str:
-    """The readings page's value of one summary row's statistic (diff, p, p_holm)."""
-    return f"{row['cue']}_{row['goal_response']}_{row['measure']}_{row['effect']}_{stat}"
+def stat_key(row, stat: str) -> str:
+    """The readings page's value of a statistic of one row of the summary or the differences."""
+    first = (
+        [row["comparison"], row["at"]]
+        if "comparison" in row
+        else [row["cue"], row["goal_response"]]
+    )
+    return "_".join([*first, row["measure"], row["effect"], stat])
 
 
-def difference_key(row, stat: str) -> str:
-    """The readings page's value of one differences row's statistic."""
-    return f"{row['comparison']}_{row['at']}_{row['measure']}_{row['effect']}_{stat}"
-
-
-def _on(keys) -> tuple[str, ...]:
-    return tuple(f"readings.{k}" for k in keys)
-
-
-def _stats(row, stats, key) -> list[str]:
-    """The keys of a row's statistics that exist (a constant cell has no p, an identical
-    difference no test): what a claim can rest on."""
-    return [key(row, stat) for stat in stats if math.isfinite(float(row[stat]))]
-
-
-def reading_label(cue: str, goal: str) -> str:
-    return f"{CUE_LABELS[cue]} · {goal}"
+def _rests_on(rows, stats) -> tuple[str, ...]:
+    """The rows' statistics that exist (a constant cell has no p, an identical difference no
+    test), as what a claim rests on."""
+    return tuple(
+        f"readings.{stat_key(r, s)}"
+        for _, r in rows.iterrows()
+        for s in stats
+        if math.isfinite(r[s])
+    )
 
 
 def _listing(items: list[str], none: str) -> str:
@@ -753,72 +736,66 @@ def _listing(items: list[str], none: str) -> str:
 
 
 def reading_claims(summary) -> dict[str, Claim]:
-    """Per tested measure and effect, the readings whose effect goes the paper's way
-    (``paper_<measure>_<effect>``) and those where it is reversed (``reversed_...``), on Holm's p
-    (``readings.direction``); per measure, the readings giving both effects the paper's way
-    (``both_<measure>``)."""
+    """Per tested measure, the readings whose congruency or size effect goes the paper's way on
+    Holm's p (``paper_<measure>_<effect>``), and those where both do (``both_<measure>``)."""
     from icub_affordance.readings import direction
 
     out = {}
-    for measure, group in summary[summary["measure"].map(is_hypothesis)].groupby(
+    for measure, rows in summary[summary["measure"].map(is_hypothesis)].groupby(
         "measure", sort=False
     ):
-        keys = _on(
-            k for _, r in group.iterrows() for k in _stats(r, ("diff", "p_holm"), summary_key)
-        )
-        found: dict[str, dict[str, str]] = {}
-        for _, r in group.iterrows():
-            found.setdefault(reading_label(r["cue"], r["goal_response"]), {})[r["effect"]] = (
-                direction(r)
-            )
-        tests = {
-            f"{word}_{measure}_{effect}": {k for k, v in found.items() if v[effect] == word}
-            for word in ("paper", "reversed")
-            for effect in ("congruency", "size")
-        } | {f"both_{measure}": {k for k, v in found.items() if set(v.values()) == {"paper"}}}
-        for name, chosen in tests.items():
-            words = _listing([k for k in found if k in chosen], "no reading")
-            out[name] = Claim("every reading" if len(chosen) == len(found) else words, keys)
+        found: dict[str, set[str]] = {}
+        for _, r in rows.iterrows():
+            found.setdefault(f"{CUE_LABELS[r['cue']]} · {r['goal_response']}", set())
+            if direction(r) == "paper":
+                found[f"{CUE_LABELS[r['cue']]} · {r['goal_response']}"].add(r["effect"])
+        for name, effects in (
+            ("congruency", {"congruency"}),
+            ("size", {"size"}),
+            ("both", {"congruency", "size"}),
+        ):
+            chosen = [reading for reading, shown in found.items() if effects <= shown]
+            words = "every reading" if len(chosen) == len(found) else _listing(chosen, "no reading")
+            key = f"both_{measure}" if name == "both" else f"paper_{measure}_{name}"
+            out[key] = Claim(words, _rests_on(rows, ("diff", "p_holm")))
     return out
 
 
-def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim]:
-    """The effects a comparison of readings changes or leaves the same, in words, from its tests
-    (``readings.difference_verdict``): ``<prefix>_changes`` (a's effect larger or smaller than
-    b's, Holm), ``<prefix>_larger``, ``_smaller``, ``_equivalent`` (TOST within the margin, Holm),
-    ``_identical``, ``_not_shown``, and each one's count (``<prefix>_n_larger``, ...) of
-    ``<prefix>_n`` effects. An effect changed at one level of the other choice only says so."""
+def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | int]:
+    """The effects a comparison of readings changes, from its tests
+    (``readings.difference_verdict``): ``<prefix>_changes`` (larger or smaller, Holm),
+    ``_larger``, ``_smaller``, naming the level of the other choice where only one shows it; and
+    how many of the ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the
+    margin, Holm), identical or not shown (``<prefix>_n_equivalent``, ...)."""
     from icub_affordance.readings import difference_verdict
 
     rows = differences[
         (differences["comparison"] == comparison) & differences["measure"].map(is_hypothesis)
     ]
-    words = rows.apply(difference_verdict, axis=1).map(DIFFERENCE_WORDS)
-    levels = list(dict.fromkeys(rows["at"]))
-    keys = _on(
-        k
-        for _, r in rows.iterrows()
-        for k in _stats(r, ("diff", "p_holm", "p_equivalence_holm"), difference_key)
-    )
+    words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
+    rests = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm"))
 
     def effects(chosen) -> str:
         parts = []
         for effect, group in chosen.groupby("effect", sort=False):
-            measures = []
-            for measure, at in group.groupby("measure", sort=False)["at"]:
-                shown = [CUE_LABELS.get(a, a) for a in at]
-                only = "" if len(shown) == len(levels) else f" ({_listing(shown, '')} only)"
-                measures.append(MEASURE_LABELS[measure] + only)
+            measures = [
+                MEASURE_LABELS[m]
+                + (
+                    ""
+                    if len(at) == rows["at"].nunique()
+                    else f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)"
+                )
+                for m, at in group.groupby("measure", sort=False)["at"]
+            ]
             parts.append(f"{effect} on {_listing(measures, '')}")
         return "; ".join(parts) or "no effect"
 
     out: dict[str, Claim | int] = {f"{prefix}_n": len(rows)}
     for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
-        name = word.replace(" ", "_")
-        chosen = rows[words == word]
-        out[f"{prefix}_{name}"] = Claim(effects(chosen), keys)
-        out[f"{prefix}_n_{name}"] = Claim(str(len(chosen)), keys)
-    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), keys)
+        out[f"{prefix}_n_{word.replace(' ', '_')}"] = Claim(str((words == word).sum()), rests)
+    out[f"{prefix}_larger"] = Claim(effects(rows[words == "larger"]), rests)
+    out[f"{prefix}_smaller"] = Claim(effects(rows[words == "smaller"]), rests)
+    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), rests)
     return out
 
 
