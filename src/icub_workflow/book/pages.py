@@ -244,8 +244,11 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     if (summary["replications"] > 1).any():
         counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
         numbers["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
-    tost = [
-        f"{_holm(r, 'p_equivalence_holm')} (±{r['margin']:g})" if np.isfinite(r["margin"]) else "–"
+    tost = [  # a TOST's Holm p with its margin; an identical difference had no TOST
+        "–"
+        if not np.isfinite(r["margin"])
+        else _holm(r, "p_equivalence_holm")
+        + (f" (±{r['margin']:g})" if np.isfinite(r["p_equivalence_holm"]) else "")
         for _, r in diffs.iterrows()
     ]
     declared, margins = (config["readings"][k] for k in ("margin_declared", "equivalence_margin"))
