@@ -512,7 +512,7 @@ def _built_tables(cong_shift, grows_size, margin, seed):
     return summ, diffs
 
 
-def page(tmp_path, summ, diffs):
+def page(tmp_path, summ, diffs, with_tables=False):
     summ.to_csv(tmp_path / "summary.csv", index=False)
     diffs.to_csv(tmp_path / "differences.csv", index=False)
     inputs = {
@@ -532,9 +532,10 @@ def page(tmp_path, summ, diffs):
     values, tables = readings_page(inputs, config)
     # the margins' table says when each was declared, and whether it was declared blind
     margins = tables["readings_margins"].set_index("measure")
-    assert list(margins["results of the measure read before"]) == ["yes", "no"]
-    assert set(margins["declared in commit"]) == {"3e997e7"}
-    return traced({"readings": values})
+    assert list(margins["its results read before"]) == ["yes", "no"]
+    assert set(margins["declared in"]) == {"3e997e7"}
+    pages = traced({"readings": values})
+    return (pages, tables) if with_tables else pages
 
 
 def test_every_readings_claim_rests_on_values_the_page_stores(tmp_path):
@@ -545,101 +546,152 @@ def test_every_readings_claim_rests_on_values_the_page_stores(tmp_path):
     pages = page(tmp_path, summ, diffs)
     claims = pages["claims"]["readings"]
     assert set(claims) >= {
-        "conclusion_effects",
-        "conclusion_paper_measure",
-        "conclusion_other_measures",
-        "conclusion_null",
-        "conclusion_cue",
-        "conclusion_goal",
+        "both_rmse",
+        "paper_rmse_congruency",
+        "paper_rmse_size",
+        "both_rmse_per_grip_distance_excess",
+        "cue_changes",
+        "cue_larger",
+        "goal_changes",
+        "goal_n_equivalent",
+        "goal_n_identical",
     }
     for entries in claims.values():
         for entry in entries:
             assert isinstance(pages["readings"][entry.split(".", 1)[1]], float), entry
-    assert pages["readings"][text.summary_key(summ.iloc[0], "p_holm")] is None
+    assert pages["readings"][text.stat_key(summ.iloc[0], "p_holm")] is None
 
 
-def test_effect_lines_follow_holm_p():
+def matrix_page(tmp_path, summ):
+    _, diffs = built_tables()
+    pages, tables = page(tmp_path, summ, diffs, with_tables=True)
+    matrix = tables["readings_matrix"].set_index(["measure", "effect"])
+    return pages["readings"], matrix
+
+
+def test_the_matrix_verdicts_and_phrases_follow_holm_p(tmp_path):
     summ, _ = built_tables()
     key = (
         (summ["reading"] == "all_steps+fixed")
         & (summ["measure"] == "rmse")
         & (summ["effect"] == "congruency")
     )
-    shown = text.readings_conclusion(summ.assign(p_holm=np.where(key, 0.01, summ["p_holm"])))
-    hidden = text.readings_conclusion(summ.assign(p_holm=np.where(key, 0.2, summ["p_holm"])))
-    flipped = text.readings_conclusion(
-        summ.assign(
-            p_holm=np.where(key, 0.01, summ["p_holm"]),
-            diff=np.where(key, -summ["diff"], summ["diff"]),
-        )  # fmt: skip
+    others = (summ["measure"] == "rmse") & ~key  # not shown: the phrase lists this one alone
+    holm_p = np.where(key, 0.01, np.where(others, 0.5, summ["p_holm"]))
+    shown = summ.assign(p_holm=holm_p, diff=summ["diff"].abs())
+    cell = ("RMSE", "congruency"), "every · fixed"
+    for table, word, listed in (
+        (shown, "paper", True),
+        (shown.assign(p_holm=np.where(key, 0.2, shown["p_holm"])), "not shown", False),
+        (shown.assign(diff=np.where(key, -shown["diff"], shown["diff"])), "reversed", False),
+    ):
+        values, matrix = matrix_page(tmp_path, table)
+        assert matrix.loc[cell].endswith(" " + word)
+        assert ("every · fixed" in values["paper_rmse_congruency"]) is listed
+    # the raw p is not the verdict's: a raw p below 0.05 with Holm's above is "not shown"
+    raw = shown.assign(
+        p=np.where(key, 0.01, shown["p"]), p_holm=np.where(key, 0.2, shown["p_holm"])
     )
-
-    def line(claims):
-        lines = claims["conclusion_effects"].text.splitlines()
-        return next(x for x in lines if "Congruency, the paper's RMSE" in x)
-
-    label = "*the cue at every step, a Goal bump of fixed width*"
-    assert label in line(shown).split("not shown")[0]  # in the paper's direction
-    assert label in line(hidden).split("not shown")[1]
-    assert label in line(flipped).split("reversed")[1]
-    assert line(shown) != line(hidden) != line(flipped)
+    assert matrix_page(tmp_path, raw)[1].loc[cell].endswith("not shown")
 
 
-def test_paper_measure_sentence_needs_both_effects_after_holm():
+def test_both_effects_need_both_verdicts_after_holm(tmp_path):
     summ, _ = built_tables()
-    rmse = summ["measure"] == "rmse"
-    first = summ["reading"] == "first_step+fixed"
-    both = summ.assign(p_holm=np.where(rmse & first, 0.001, 0.5), diff=np.abs(summ["diff"]) + 0.01)
-    claim = text.readings_conclusion(both)["conclusion_paper_measure"]
-    assert "both effects go the paper's way with *the cue at the first step only" in claim.text
-    one = both.assign(
-        p_holm=np.where(rmse & first & (summ["effect"] == "size"), 0.06, both["p_holm"])
-    )
+    rmse, first = summ["measure"] == "rmse", summ["reading"] == "first_step+fixed"
+    both = summ.assign(p_holm=np.where(rmse & first, 0.001, 0.5), diff=summ["diff"].abs() + 0.01)
+    assert matrix_page(tmp_path, both)[0]["both_rmse"] == "first · fixed"
+    size = rmse & first & (summ["effect"] == "size")
+    one = both.assign(p_holm=np.where(size, 0.06, both["p_holm"]))
+    assert matrix_page(tmp_path, one)[0]["both_rmse"] == "no reading"
+    every = both.assign(p_holm=np.where(rmse, 0.001, 0.5))
+    assert matrix_page(tmp_path, every)[0]["both_rmse"] == "every reading"
+
+
+def test_grip_distance_verdicts_read_its_excess_over_the_null_control(tmp_path):
+    summ, diffs = built_tables()
+    # the raw measure and its null control significant on their raw p: still no verdict
+    shown = summ["measure"].isin(["rmse_per_grip_distance", "rmse_per_grip_distance_null"])
+    summ = summ.assign(p=np.where(shown, 1e-6, summ["p"]))
+    pages, tables = page(tmp_path, summ, diffs, with_tables=True)
+    matrix = tables["readings_matrix"].set_index(["measure", "effect"])
+    for measure in ("RMSE per grip distance", "null control"):
+        for cell in matrix.loc[measure].to_numpy().ravel():
+            assert " " not in cell, cell  # a number alone
+    assert all(" " in c for c in matrix.loc["excess over null"].to_numpy().ravel())
+    assert "paper_rmse_per_grip_distance_congruency" not in pages["readings"]
+    assert "paper_rmse_per_grip_distance_excess_congruency" in pages["readings"]
+    numbers = tables["readings_summary"].set_index("measure")
+    holm_column = f"Holm p, “{FAMILY_SUMMARY}”"
+    assert set(numbers.loc["null control", holm_column]) == {"not a hypothesis"}
+    assert set(numbers.loc["RMSE per grip distance", holm_column]) == {"by excess"}
+
+
+def test_cue_phrases_only_from_the_test_of_the_difference(tmp_path):
+    summ, diffs = built_tables(cong_shift=0.02)
+    pages, tables = page(tmp_path, summ, diffs, with_tables=True)
+    values = pages["readings"]
+    assert values["cue_larger"].startswith("congruency on RMSE")
+    assert values["cue_changes"].startswith(values["cue_larger"])
     assert (
-        "no reading gives both effects"
-        in text.readings_conclusion(one)["conclusion_paper_measure"].text
+        "readings.cue_timing_fixed_rmse_congruency_p_holm"
+        in pages["claims"]["readings"]["cue_larger"]
     )
+    verdicts = tables["readings_verdicts"].set_index(["measure", "effect"])
+    assert verdicts.loc[("RMSE", "congruency"), "cue · fixed"].endswith("larger")
+    cue = diffs["comparison"] == "cue_timing"
+    faint = diffs.assign(p_holm=np.where(cue, np.maximum(diffs["p_holm"], 0.06), diffs["p_holm"]))
+    values = page(tmp_path, summ, faint)["readings"]
+    assert values["cue_changes"] == values["cue_larger"] == "no effect"
+    # one Goal response only: the phrase says where
+    fixed = cue & (diffs["at"] == "fixed")
+    one = faint.assign(p_holm=np.where(fixed, 0.001, faint["p_holm"]))
+    assert "(fixed only)" in page(tmp_path, summ, one)["readings"]["cue_changes"]
 
 
-def test_cue_sentence_only_from_the_test_of_the_difference():
-    _, diffs = built_tables(cong_shift=0.02)
-    claim = text.cue_timing_conclusion(diffs)
-    assert claim.text.startswith("The cue timing changes these effects")
-    assert "the congruency effect on the paper's RMSE (+0.02" in claim.text
-    not_shown = text.cue_timing_conclusion(diffs.assign(p_holm=np.maximum(diffs["p_holm"], 0.06)))
-    assert not_shown.text.startswith("No difference between the two cue timings survives")
-    assert "readings.cue_timing_fixed_rmse_congruency_p_holm" in claim.rests_on
-
-
-def test_goal_sentence_says_no_difference_only_from_equivalence():
-    _, diffs = built_tables(grows_size=0.01)
-    claim = text.goal_response_conclusion(diffs)
-    assert "The Goal response changes these effects" in claim.text
-    assert "the size effect on the paper's RMSE (+0.01" in claim.text
-    assert "the Goal response is shown to make no difference" in claim.text
-    assert "barely matters" not in claim.text
-    assert "neither show a difference" not in claim.text  # every effect is one or the other
+def test_goal_phrases_say_no_difference_only_from_equivalence(tmp_path):
+    summ, diffs = built_tables(grows_size=0.01)
+    values = page(tmp_path, summ, diffs)["readings"]
+    assert "size on RMSE" in values["goal_changes"]
     goal = diffs["comparison"] == "goal_response"
     everything = diffs.assign(
         p_holm=np.where(goal, 0.5, diffs["p_holm"]),
         p_equivalence_holm=np.where(goal, 0.001, diffs["p_equivalence_holm"]),
     )
-    same = text.goal_response_conclusion(everything).text
-    assert "So the Goal response barely matters" in same
-    assert same.startswith("No effect differs between the two Goal responses")
+    values = page(tmp_path, summ, everything)["readings"]
+    assert values["goal_changes"] == "no effect"
+    assert int(values["goal_n_equivalent"]) == values["goal_n"]
     nothing = everything.assign(p_equivalence_holm=np.where(goal, 0.2, np.nan))
-    gone = text.goal_response_conclusion(nothing).text
-    assert "no difference" not in gone and "barely matters" not in gone
-    assert "neither show a difference" in gone
+    values = page(tmp_path, summ, nothing)["readings"]
+    assert values["goal_n_equivalent"] == "0"
+    assert int(values["goal_n_not_shown"]) == values["goal_n"]
 
 
-def test_null_control_sentence_follows_both_effects():
-    summ, _ = built_tables()
-    claim = text.null_control_sentence(summ)
-    null = summ["measure"] == "rmse_per_grip_distance_null"
-    moved = text.null_control_sentence(summ.assign(diff=np.where(null, 0.123, summ["diff"])))
-    assert "beside +0.123 from the null control" in moved.text and claim.text != moved.text
-    assert any(e.endswith("rmse_per_grip_distance_null_size_diff") for e in claim.rests_on)
+def test_identical_differences_are_listed_as_identical_without_a_test(tmp_path):
+    summ, diffs = built_tables()
+    row = (diffs["comparison"] == "goal_response") & (diffs["measure"] == "rmse")
+    row &= (diffs["effect"] == "size") & (diffs["at"] == "all_steps")
+    diffs.loc[
+        row, ["diff", "ci_low", "ci_high", "p", "p_holm", "p_equivalence", "p_equivalence_holm"]
+    ] = [0.0, 0.0, 0.0, np.nan, np.nan, np.nan, np.nan]
+    diffs.loc[row, ["identical", "family", "family_equivalence"]] = [True, NOT_TESTED, ""]
+    pages, tables = page(tmp_path, summ, diffs, with_tables=True)
+    assert pages["readings"]["goal_n_identical"] == "1"
+    verdicts = tables["readings_verdicts"].set_index(["measure", "effect"])
+    assert verdicts.loc[("RMSE", "size"), "Goal · every"] == "0 identical"
+    numbers = tables["readings_differences"]
+    shown = numbers[
+        (numbers["comparison"] == "Goal · every")
+        & (numbers["measure"] == "RMSE")
+        & (numbers["effect"] == "size")
+    ]
+    holm_columns = [c for c in numbers.columns if "Holm p" in c]
+    assert [c.split("“")[1].rstrip("”") for c in holm_columns] == [
+        FAMILY_DIFFERENCES,
+        FAMILY_EQUIVALENCE,
+    ]
+    holm_p, tost_p = shown.iloc[0][holm_columns]
+    assert holm_p == tost_p == "identical"  # no TOST, no margin, no family
+    assert shown.iloc[0]["p"] == "–"
 
 
 def job_counts(stdout: str) -> dict[str, int]:

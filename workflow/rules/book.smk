@@ -119,6 +119,7 @@ FINDINGS_TABLES = [
     "cue_anova",
     "cue_effects",
     "readings_matrix",
+    "readings_verdicts",
     "readings_summary",
     "readings_differences",
     "readings_margins",

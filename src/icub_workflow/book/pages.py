@@ -138,86 +138,139 @@ def object_means(measures: dict) -> pd.DataFrame:
     )
 
 
+def _p(p: float) -> str:
+    return f"{p:.2g}" if np.isfinite(p) else "–"
+
+
+def _estimate(d: float) -> str:
+    return np.format_float_positional(d, 3, fractional=False, sign=True) if d else "0"
+
+
+def _holm(row, column: str = "p_holm") -> str:
+    """A Holm p (2 significant digits), or why the row has none: it is in no family."""
+    if np.isfinite(row[column]):
+        return f"{row[column]:.2g}"
+    if not readings_science.is_hypothesis(row["measure"]):
+        return (
+            "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
+        )
+    return "identical" if str(row.get("identical")) == "True" else "no variation"
+
+
+def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> str:
+    """The one family a table's adjusted p are Holm-adjusted within (``readings.FAMILY_*``)."""
+    tested = table[p].map(np.isfinite) & table["measure"].map(readings_science.is_hypothesis)
+    (family,) = set(table.loc[tested, column])
+    return family
+
+
+def _label(row) -> str:
+    """A reading (``first · fixed``), or a comparison at a level of the other choice."""
+    if "comparison" in row:
+        name = "cue" if row["comparison"] == "cue_timing" else "Goal"
+        return f"{name} · {text.CUE_LABELS.get(row['at'], row['at'])}"
+    return f"{text.CUE_LABELS[row['cue']]} · {row['goal_response']}"
+
+
+def _verdicts(table: pd.DataFrame) -> pd.DataFrame:
+    """Measure and effect (rows) by reading or comparison (columns): the estimate and, for a
+    hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``)."""
+    rows: dict = {}
+    for _, r in table.iterrows():
+        cell = _estimate(r["diff"])
+        if readings_science.is_hypothesis(r["measure"]):
+            test = (
+                readings_science.difference_verdict
+                if "comparison" in r
+                else readings_science.direction
+            )
+            cell += " " + text.WORDS.get(test(r), test(r))
+        label = {"measure": text.MEASURE_LABELS[r["measure"]], "effect": r["effect"]}
+        rows.setdefault((r["measure"], r["effect"]), label)[_label(r)] = cell
+    return pd.DataFrame(list(rows.values()))
+
+
+def _numbers(table: pd.DataFrame, name: str) -> pd.DataFrame:
+    """Every row's estimate, interval, raw p and Holm p, its family in the column's name."""
+    return pd.DataFrame(
+        {
+            name: table.apply(_label, axis=1),
+            "measure": table["measure"].map(text.MEASURE_LABELS),
+            "effect": table["effect"],
+            "estimate [95% interval]": [
+                f"{_estimate(d)} [{_estimate(a)}, {_estimate(b)}]"
+                for d, a, b in table[["diff", "ci_low", "ci_high"]].to_numpy()
+            ],
+            "p": table["p"].map(lambda p: f"{p:.2g}" if np.isfinite(p) else "–"),
+            f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
+        }
+    )
+
+
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The readings chapter: the matrix of readings x measures (raw and Holm-adjusted p), the
-    tests of the differences between cue timings and Goal responses, the Goal map's clusters
-    under each response, and the conclusions, each a ``text.Claim`` resting on the statistics
-    stored here (``text.summary_key``, ``text.difference_key``)."""
+    """The readings chapter: the Goal map's clusters under each response, the statistics of the
+    readings x measures matrix and of the differences between readings, the verdict phrases on
+    them (``text.reading_claims``, ``text.difference_claims``), and the tables: the matrix and
+    the differences with their verdicts, every number of both (folded), the margins."""
     summary = pd.read_csv(inputs["readings_summary.csv"])
-    differences = pd.read_csv(inputs["readings_differences.csv"])
-    goal_units = {}
+    diffs = pd.read_csv(inputs["readings_differences.csv"], keep_default_na=False, na_values=[""])
+    values = {}
     for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
         if name in inputs:
             soms = load_npz(inputs[name])
             for o, obj in enumerate(soms["objects"].tolist()):
                 for t, task in enumerate(soms["tasks"].tolist()):
-                    goal_units[f"goal_{response}_{obj}_{task}"] = active_units(
-                        soms["goal_act"][o, t]
-                    )
-
-    def number(value) -> float | None:
-        """A statistic, or None (null) where there is none: a null control's Holm p, a constant
-        measure's p, the cue timing's equivalence test."""
-        return float(value) if np.isfinite(value) else None
-
-    stats = {
-        text.summary_key(row, stat): number(row[stat])
-        for _, row in summary.iterrows()
-        for stat in ("diff", "p", "p_holm")
-    } | {
-        text.difference_key(row, stat): number(row[stat])
-        for _, row in differences.iterrows()
-        for stat in ("diff", "p", "p_holm", "margin", "p_equivalence_holm")
-    }
-    reps = sorted(set(summary["replications"]))
-    claims = text.readings_conclusion(summary) | {
-        "conclusion_null": text.null_control_sentence(summary),
-        "conclusion_cue": text.cue_timing_conclusion(differences),
-        "conclusion_goal": text.goal_response_conclusion(differences),
-    }
-    values = (
-        goal_units
-        | stats
-        | {
-            "n_readings": int(summary["reading"].nunique()),
-            "replications": " to ".join(map(str, reps)),
-            "measures": ", ".join(text.MEASURE_NAMES[m] for m in config["readings"]["measures"]),
-            "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
-            "margins": ", ".join(
-                f"{text.MEASURE_NAMES[m]} ±{v:g}"
-                for m, v in config["readings"]["equivalence_margin"].items()
-                if m in config["readings"]["measures"]
-            ),
-            "conclusion_method": text.readings_method(summary),
-        }
-        | {key: claim if claim is not None else "" for key, claim in claims.items()}
-    )
-
-    def shown(table: pd.DataFrame, columns: tuple[str, str]) -> list[str]:
-        return [text.reading_label(c, g) for c, g in zip(*(table[c] for c in columns), strict=True)]
-
-    readings_config = config["readings"]
-    margins = pd.DataFrame(
-        [
-            {
-                "measure": text.MEASURE_NAMES[m],
-                "margin": f"±{margin:g}",
-                "declared in commit": readings_config["margin_declared"][m]["commit"],
-                "results of the measure read before": (
-                    "yes" if readings_config["margin_declared"][m]["results_before"] else "no"
-                ),
+                    values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
+    for table, stats in (
+        (summary, ("diff", "p", "p_holm")),
+        (diffs, ("diff", "p", "p_holm", "margin", "p_equivalence_holm")),
+    ):  # a statistic, or None where there is none (a null control's Holm p, ...)
+        for _, row in table.iterrows():
+            values |= {
+                text.stat_key(row, s): row[s] if np.isfinite(row[s]) else None for s in stats
             }
-            for m, margin in readings_config["equivalence_margin"].items()
-            if m in readings_config["measures"]
-        ]
-    )
+    values |= {
+        "n_readings": int(summary["reading"].nunique()),
+        "replications": " to ".join(map(str, sorted(set(summary["replications"])))),
+        "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
+        "n_differences": int(np.isfinite(diffs["p_holm"]).sum()),
+        "n_equivalence": int(np.isfinite(diffs["p_equivalence_holm"]).sum()),
+        "family": _family(summary),
+        "family_differences": _family(diffs),
+        "family_equivalence": _family(diffs, "family_equivalence", "p_equivalence_holm"),
+    }
+    values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
+    values |= text.difference_claims(diffs, "goal_response", "goal")
+    numbers = _numbers(summary, "reading")
+    if (summary["replications"] > 1).any():
+        counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
+        numbers["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
+    tost = [  # a TOST's Holm p with its margin; an identical difference had no TOST
+        "–"
+        if not np.isfinite(r["margin"])
+        else _holm(r, "p_equivalence_holm")
+        + (f" (±{r['margin']:g})" if np.isfinite(r["p_equivalence_holm"]) else "")
+        for _, r in diffs.iterrows()
+    ]
+    declared, margins = (config["readings"][k] for k in ("margin_declared", "equivalence_margin"))
+    shown = [m for m in margins if m in config["readings"]["measures"]]
     return values, {
-        "readings_margins": margins,
-        "readings_matrix": readings_science.matrix(
-            summary.assign(reading=shown(summary, ("cue", "goal_response")))
+        "readings_matrix": _verdicts(summary),
+        "readings_summary": numbers,
+        "readings_verdicts": _verdicts(diffs[diffs["measure"].map(readings_science.is_hypothesis)]),
+        "readings_differences": _numbers(diffs, "comparison").assign(
+            **{f"TOST Holm p (margin), “{values['family_equivalence']}”": tost}
         ),
-        "readings_summary": summary,
-        "readings_differences": readings_science.difference_display(differences),
+        "readings_margins": pd.DataFrame(
+            {
+                "measure": [text.MEASURE_LABELS[m] for m in shown],
+                "margin": [f"±{margins[m]:g}" for m in shown],
+                "declared in": [declared[m]["commit"] for m in shown],
+                "its results read before": [
+                    "yes" if declared[m]["results_before"] else "no" for m in shown
+                ],
+            }
+        ),
     }
 
 

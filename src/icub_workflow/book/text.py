@@ -217,331 +217,114 @@ def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" + ("" if n == 1 else "s")
 
 
-# The readings chapter (book/readings.md): the readings x measures matrix in words, and the tests
-# of the differences between readings. Every sentence that states a finding is a Claim resting on
-# the page's values named by ``summary_key`` and ``difference_key``.
+# ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
+# Short verdict phrases on the readings' tests, each a Claim resting on the page's statistics
+# (``stat_key``); the sentences around them are the page's own.
 
-MEASURE_NAMES = {
-    "rmse": "the paper's RMSE",
-    "rmse_correct": "the correct-trial RMSE (the reaction-time analogue)",
-    "wrong_grip": "the wrong-grip rate",
+#: The chapter's names of the measures and cue timings (its tables' legend), and of the verdicts
+#: (``readings.direction``, ``readings.difference_verdict``) where they differ from the verdict.
+MEASURE_LABELS = {
+    "rmse": "RMSE",
+    "rmse_correct": "correct-trial RMSE",
+    "wrong_grip": "wrong-grip rate",
     "commitment": "commitment",
     "rmse_per_grip_distance": "RMSE per grip distance",
-    "rmse_per_grip_distance_null": "the null control of RMSE per grip distance",
-    "rmse_per_grip_distance_excess": "RMSE per grip distance beyond its null control",
+    "rmse_per_grip_distance_null": "null control",
+    "rmse_per_grip_distance_excess": "excess over null",
 }
-GOAL_RESPONSES = {
-    "fixed": "a Goal bump of fixed width",
-    "grows": "a Goal bump that widens with its input",
-}
-DIRECTIONS = {
-    "paper": "in the paper's direction",
-    "reversed": "reversed",
-    "none": "not shown (p ≥ 0.05 after Holm within “exploration: readings”)",
-    "constant": "absent, the measure the same for every network and object,",
-}
-COMPARISON_NAMES = {
-    "cue_timing": ("the cue timing", "the cue at the first step only minus the cue at every step"),
-    "goal_response": (
-        "the Goal response",
-        "a Goal bump that widens minus one of fixed width",
-    ),
-}
+CUE_LABELS = {"first_step": "first", "all_steps": "every"}
+WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller"}
 
 
-def summary_key(row, stat: str) -> str:
-    """The readings page's value of one summary row's statistic (diff, p, p_holm)."""
-    return f"{row['cue']}_{row['goal_response']}_{row['measure']}_{row['effect']}_{stat}"
-
-
-def difference_key(row, stat: str) -> str:
-    """The readings page's value of one differences row's statistic."""
-    return f"{row['comparison']}_{row['at']}_{row['measure']}_{row['effect']}_{stat}"
-
-
-def _on(keys) -> tuple[str, ...]:
-    return tuple(f"readings.{k}" for k in keys)
-
-
-def _stats(row, stats, key) -> list[str]:
-    """The keys of a row's statistics that exist (a constant cell has no p, a null control no
-    Holm p): what a claim can rest on."""
-    return [key(row, stat) for stat in stats if math.isfinite(float(row[stat]))]
-
-
-def reading_label(cue: str, goal: str) -> str:
-    return f"{CUES[cue]}, {GOAL_RESPONSES[goal]}"
-
-
-def fmt_holm(p: float, family: str | None = None) -> str:
-    """A Holm-adjusted p, with the family it is adjusted within where given."""
-    within = f" within “{family}”" if family else ""
-    return f"Holm-adjusted{within} p < 0.001" if p < 0.001 else f"Holm-adjusted{within} p = {p:.3f}"
-
-
-def readings_method(summary) -> str:
-    """How the matrix's tests were made (MyST): not a finding."""
-    n = sorted(set(summary["replications"]))
-    hypotheses = summary[summary["measure"].map(is_hypothesis)]
-    tested = int(hypotheses["p"].map(math.isfinite).sum())
-    untested = len(hypotheses) - tested
-    family = (
-        f"Holm's adjustment runs over the family “exploration: readings”, the matrix's {tested} "
-        "tests (every reading, measure and effect; the null control's rows, and those of RMSE "
-        "per grip distance, whose hypothesis is its excess over the null control, are shown "
-        "and left out"
-        + (
-            f", and so are {untested} cells where every network scored the same on every object, "
-            "which leave nothing to test"
-            if untested
-            else ""
-        )
-        + "), and a verdict needs the adjusted p below 0.05."
+def stat_key(row, stat: str) -> str:
+    """The readings page's value of a statistic of one row of the summary or the differences."""
+    first = (
+        [row["comparison"], row["at"]]
+        if "comparison" in row
+        else [row["cue"], row["goal_response"]]
     )
-    if n == [1]:
-        return (
-            "Each reading ran once here (one replication at the config's seed), so a test below "
-            "is that replication's t-test over its networks (t with networks − 2 degrees of "
-            "freedom, the mapping between networks): it says how sure the effect is for these "
-            "demonstrations, maps and networks, not whether another replication would show it. "
-            f"`{ROBUSTNESS_COMMAND}` replicates every reading. " + family
-        )
-    return (
-        f"Each reading ran {' to '.join(map(str, n))} whole replications (each reseeding the "
-        "demonstrations, the SOMs and the networks); a test is a t-test of the replications' "
-        "estimates (replications − 1 degrees of freedom) and an interval a 95% t-interval. "
-        + family
+    return "_".join([*first, row["measure"], row["effect"], stat])
+
+
+def _rests_on(rows, stats) -> tuple[str, ...]:
+    """The rows' statistics that exist (a constant cell has no p, an identical difference no
+    test), as what a claim rests on."""
+    return tuple(
+        f"readings.{stat_key(r, s)}"
+        for _, r in rows.iterrows()
+        for s in stats
+        if math.isfinite(r[s])
     )
 
 
-def readings_conclusion(summary) -> dict[str, Claim]:
-    """What the readings matrix says (MyST), generated from ``data/readings/summary.csv``: per
-    measure and effect, which readings give it in the paper's direction, reversed or not at all
-    (``readings.direction``, on Holm's p), and which readings give both effects."""
+def _listing(items: list[str], none: str) -> str:
+    if not items:
+        return none
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def reading_claims(summary) -> dict[str, Claim]:
+    """Per tested measure, the readings whose congruency or size effect goes the paper's way on
+    Holm's p (``paper_<measure>_<effect>``), and those where both do (``both_<measure>``)."""
     from icub_affordance.readings import direction
 
-    readings = list(dict.fromkeys(summary["reading"]))
-    measures = [m for m in dict.fromkeys(summary["measure"]) if is_hypothesis(m)]
-    rows = {(r["reading"], r["measure"], r["effect"]): r for _, r in summary.iterrows()}
-    info = summary.drop_duplicates("reading").set_index("reading")
-
-    def label(reading: str) -> str:
-        row = info.loc[reading]
-        return f"*{reading_label(row['cue'], row['goal_response'])}*"
-
-    def listing(names: list[str]) -> str:
-        labels = [label(r) for r in names]
-        if not labels:
-            return "no reading"
-        return labels[0] if len(labels) == 1 else ", ".join(labels[:-1]) + " and " + labels[-1]
-
-    def on(measure, effects=("congruency", "size")) -> tuple[str, ...]:
-        keys = []
-        for reading in readings:
-            for effect in effects:
-                row = rows[(reading, measure, effect)]
-                keys += _stats(row, ("diff", "p_holm"), summary_key)
-        return _on(keys)
-
-    lines, rests = [], []
-    for measure in measures:
-        for effect in ("congruency", "size"):
-            by = {d: [] for d in DIRECTIONS}
-            for reading in readings:
-                by[direction(rows[(reading, measure, effect)])].append(reading)
-            parts = [f"{DIRECTIONS[d]} with {listing(names)}" for d, names in by.items() if names]
-            lines.append(
-                f"- **{effect.capitalize()}, {MEASURE_NAMES[measure]}:** " + "; ".join(parts) + "."
-            )
-        rests += on(measure)
-    both = {
-        measure: [
-            r
-            for r in readings
-            if direction(rows[(r, measure, "congruency")])
-            == direction(rows[(r, measure, "size")])
-            == "paper"
-        ]
-        for measure in measures
-    }
-    first = measures[0]
-    if both[first]:
-        paper = (
-            f"On {MEASURE_NAMES[first]}, the paper's own measure, both effects go the paper's way "
-            f"with {listing(both[first])}."
-        )
-    else:
-        paper = (
-            f"On {MEASURE_NAMES[first]}, the paper's own measure, no reading gives both effects "
-            "in the paper's direction."
-        )
-    others = [m for m in measures[1:] if both[m]]
-    other = (
-        " ".join(
-            f"On {MEASURE_NAMES[m]}, both go the paper's way with {listing(both[m])}."
-            for m in others
-        )
-        or "No other measure gives both effects in the paper's direction under any reading."
-    )
-    return {
-        "conclusion_effects": Claim("\n".join(lines), tuple(rests)),
-        "conclusion_paper_measure": Claim(paper, on(first)),
-        "conclusion_other_measures": Claim(other, tuple(k for m in measures[1:] for k in on(m))),
-    }
+    out = {}
+    for measure, rows in summary[summary["measure"].map(is_hypothesis)].groupby(
+        "measure", sort=False
+    ):
+        found: dict[str, set[str]] = {}
+        for _, r in rows.iterrows():
+            found.setdefault(f"{CUE_LABELS[r['cue']]} · {r['goal_response']}", set())
+            if direction(r) == "paper":
+                found[f"{CUE_LABELS[r['cue']]} · {r['goal_response']}"].add(r["effect"])
+        for name, effects in (
+            ("congruency", {"congruency"}),
+            ("size", {"size"}),
+            ("both", {"congruency", "size"}),
+        ):
+            chosen = [reading for reading, shown in found.items() if effects <= shown]
+            words = "every reading" if len(chosen) == len(found) else _listing(chosen, "no reading")
+            key = f"both_{measure}" if name == "both" else f"paper_{measure}_{name}"
+            out[key] = Claim(words, _rests_on(rows, ("diff", "p_holm")))
+    return out
 
 
-def null_control_sentence(summary) -> Claim | None:
-    """How much of RMSE per grip distance's size effect the denominator alone makes, per
-    reading: the measure's size effect beside its null control's (numbers, no test)."""
-    from icub_affordance.measures import NULL_CONTROLS
+def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | int]:
+    """The effects a comparison of readings changes, from its tests
+    (``readings.difference_verdict``): ``<prefix>_changes`` (larger or smaller, Holm),
+    ``_larger``, ``_smaller``, naming the level of the other choice where only one shows it; and
+    how many of the ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the
+    margin, Holm), identical or not shown (``<prefix>_n_equivalent``, ...)."""
+    from icub_affordance.readings import difference_verdict
 
-    parts, keys = [], []
-    for measure, null in NULL_CONTROLS.items():
-        for _, row in summary[
-            (summary["measure"] == measure) & (summary["effect"] == "size")
-        ].iterrows():
-            control = summary[
-                (summary["measure"] == null)
-                & (summary["effect"] == "size")
-                & (summary["reading"] == row["reading"])
-            ].iloc[0]
-            parts.append(
-                f"*{reading_label(row['cue'], row['goal_response'])}* {row['diff']:+.3g} "
-                f"beside {control['diff']:+.3g} from the null control"
-            )
-            keys += [summary_key(row, "diff"), summary_key(control, "diff")]
-    if not parts:
-        return None
-    return Claim(
-        "The size effect on RMSE per grip distance, and the same effect made by dividing one "
-        "constant error per network by each trial's grip distance (the null control): "
-        + "; ".join(parts)
-        + ". What the null control shows, the denominator makes by itself, whatever the network "
-        "did: of a size effect on RMSE per grip distance, only what exceeds its null control "
-        "can come from the movements.",
-        _on(keys),
-    )
-
-
-def _cells(rows, with_ci: bool = True) -> str:
-    out = []
-    for _, row in rows.iterrows():
-        text = f"the {row['effect']} effect on {MEASURE_NAMES[row['measure']]}"
-        ci = f" [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]" if with_ci else ""
-        out.append(f"{text} ({row['diff']:+.3g}{ci}, {fmt_holm(row['p_holm'], row.get('family'))})")
-    return "; ".join(out)
-
-
-def cue_timing_conclusion(differences) -> Claim | None:
-    """What the paired tests of first_step minus all_steps show (``differences.csv``): the
-    cue timing is said to change an effect only where that difference is significant after
-    Holm's adjustment."""
     rows = differences[
-        (differences["comparison"] == "cue_timing") & differences["measure"].map(is_hypothesis)
+        (differences["comparison"] == comparison) & differences["measure"].map(is_hypothesis)
     ]
-    if rows.empty:
-        return None
-    keys = _on(k for _, r in rows.iterrows() for k in _stats(r, ("diff", "p_holm"), difference_key))
-    sig = rows[rows["p_holm"] < ALPHA]
-    if sig.empty:
-        return Claim(
-            f"No difference between the two cue timings survives Holm's adjustment over the "
-            f"{int((differences['measure'].map(is_hypothesis)).sum())} tests of differences "
-            "(each effect of one reading minus the same effect of the other, paired by network): "
-            "this build does not show that the cue timing decides any effect on any measure.",
-            keys,
-        )
-    parts = []
-    for goal, group in sig.groupby("at", sort=False):
-        parts.append(f"with {GOAL_RESPONSES[goal]}, " + _cells(group))
-    rest = (
-        " No other difference between the cue timings survives the adjustment."
-        if len(sig) < len(rows)
-        else ""
-    )
-    return Claim(
-        "The cue timing changes these effects (the cue at the first step only minus the cue at "
-        "every step, paired by network, significant after Holm's adjustment): "
-        + "; ".join(parts)
-        + "."
-        + rest,
-        keys,
-    )
+    words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
+    rests = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm"))
 
-
-def goal_response_conclusion(differences) -> Claim | None:
-    """What the paired tests of grows minus fixed and their equivalence tests show: a difference
-    only where it is significant after Holm's adjustment, no difference only where the TOST
-    within the declared margin is (Holm-adjusted over the equivalence tests), and "the Goal
-    response barely matters" only if every effect on every measure is equivalent."""
-    rows = differences[
-        (differences["comparison"] == "goal_response") & differences["measure"].map(is_hypothesis)
-    ]
-    if rows.empty:
-        return None
-    keys = _on(
-        k
-        for _, r in rows.iterrows()
-        for k in _stats(r, ("diff", "p_holm", "p_equivalence_holm"), difference_key)
-    )
-    sig = rows[rows["p_holm"] < ALPHA]
-    same = rows[rows["p_equivalence_holm"] < ALPHA]
-    identical = rows[rows["identical"].astype(str) == "True"] if "identical" in rows else rows[:0]
-    neither = len(rows) - len(sig) - len(same) - len(identical)
-    sentences = []
-    if sig.empty:
-        sentences.append(
-            "No effect differs between the two Goal responses after Holm's adjustment (a "
-            "widening bump minus a fixed one, paired by network)."
-        )
-    else:
-        parts = [
-            f"with {CUES[cue]}, " + _cells(group) for cue, group in sig.groupby("at", sort=False)
-        ]
-        sentences.append(
-            "The Goal response changes these effects (a widening bump minus a fixed one, paired "
-            "by network, significant after Holm's adjustment): " + "; ".join(parts) + "."
-        )
-    tested = same
-    if not tested.empty:
+    def effects(chosen) -> str:
         parts = []
-        for cue, group in tested.groupby("at", sort=False):
-            items = [
-                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]} (within "
-                f"±{r['margin']:g}, TOST "
-                f"{fmt_holm(r['p_equivalence_holm'], r.get('family_equivalence'))})"
-                for _, r in group.iterrows()
+        for effect, group in chosen.groupby("effect", sort=False):
+            measures = [
+                MEASURE_LABELS[m]
+                + (
+                    ""
+                    if len(at) == rows["at"].nunique()
+                    else f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)"
+                )
+                for m, at in group.groupby("measure", sort=False)["at"]
             ]
-            parts.append(f"with {CUES[cue]}, " + "; ".join(items))
-        sentences.append(
-            "Within the margins declared in the config, the Goal response is shown to make no "
-            "difference (equivalence tests) to these effects: " + "; ".join(parts) + "."
-        )
-    if not identical.empty:
-        parts = [
-            f"with {CUES[cue]}, "
-            + "; ".join(
-                f"the {r['effect']} effect on {MEASURE_NAMES[r['measure']]}"
-                for _, r in group.iterrows()
-            )
-            for cue, group in identical.groupby("at", sort=False)
-        ]
-        sentences.append(
-            "These effects are identical on every network under both responses (nothing "
-            "varies, so no test is needed or possible): " + "; ".join(parts) + "."
-        )
-    if len(same) + len(identical) == len(rows):
-        sentences.append(
-            "So the Goal response barely matters: every effect on every measure is the same "
-            "within its margin under both responses."
-        )
-    elif neither:
-        sentences.append(
-            f"For the other {neither} of the {len(rows)} effects, the data neither show a "
-            "difference between the Goal responses nor rule one out within the margin: whether "
-            "the Goal response matters there is not known from this build."
-        )
-    return Claim(" ".join(sentences), keys)
+            parts.append(f"{effect} on {_listing(measures, '')}")
+        return "; ".join(parts) or "no effect"
+
+    out: dict[str, Claim | int] = {f"{prefix}_n": len(rows)}
+    for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
+        out[f"{prefix}_n_{word.replace(' ', '_')}"] = Claim(str((words == word).sum()), rests)
+    out[f"{prefix}_larger"] = Claim(effects(rows[words == "larger"]), rests)
+    out[f"{prefix}_smaller"] = Claim(effects(rows[words == "smaller"]), rests)
+    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), rests)
+    return out
 
 
 # ---- What drives the size effect -----------------------------------------------------------
