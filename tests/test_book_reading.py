@@ -1,0 +1,221 @@
+"""The book as a reader meets it: every chapter leads with its answer, the words are few enough
+to read in twenty minutes, the tables fit the text column, and the front page's scorecard
+verdicts follow their tests."""
+
+from __future__ import annotations
+
+import html
+import json
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pandas as pd
+import pytest
+import yaml
+
+from icub_workflow.book import reading, scorecard, text
+
+REPO = Path(__file__).resolve().parents[1]
+HTML = "book/_build/html"
+
+#: The issue's budget: at most this many words a reader reads, per chapter and in all.
+CHAPTER_WORDS, BOOK_WORDS = 2000, 10000
+
+
+def toc_chapters() -> list[str]:
+    toc = yaml.safe_load((REPO / "book" / "_toc.yml").read_text())
+    return [toc["root"]] + [entry["file"] for entry in toc["chapters"]]
+
+
+# -- the reader's count, on pages made here ----------------------------------------------------
+
+PAGE = """<html><body><nav>menu words here</nav><article class="bd-article">
+<section><h1>Title of it</h1>
+<div class="admonition in-brief"><p class="admonition-title">In brief</p>
+<p>The effect is reproduced. The size effect, p = 0.013, is reversed.</p></div>
+<p>Five words of plain prose.</p>
+<table><tr><td>many numbers 1 2 3 4 5 6</td></tr></table>
+<div class="cell docutils container"><div class="cell_input">hidden code words</div></div>
+<div class="admonition dropdown"><p>three folded words</p></div>
+<details><summary>two more</summary></details>
+</section></article></body></html>"""
+
+
+def test_the_reader_count_skips_tables_code_and_folded_sections():
+    page = reading.page_text(PAGE)
+    # title 3 + "In brief" 2 + brief 12 + prose 5
+    assert page.words == 3 + 2 + 12 + 5
+    assert page.folded_words == 3 + 2
+    assert page.first_block == reading.IN_BRIEF_CLASS
+    assert reading.sentences(page.in_brief) == [
+        "The effect is reproduced.",
+        "The size effect, p = 0.013, is reversed.",
+    ]
+
+
+def test_a_page_whose_first_block_is_prose_has_no_in_brief():
+    page = reading.page_text(PAGE.replace("admonition in-brief", "admonition note"))
+    assert page.first_block == "div" and page.in_brief == ""
+
+
+# -- the scorecard, on outputs made here ----------------------------------------------------------
+
+
+def term(estimate, p, family="confirmatory"):
+    return {"estimate": estimate, "ci_low": estimate - 0.01, "ci_high": estimate + 0.01,
+            "p": p, "p_holm": p, "family": family, "df": 10, "t": 3.0}  # fmt: skip
+
+
+def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.93, 0.99)):
+    anova = {
+        "closed_loop": {
+            "n_networks": 12,
+            "correct_rt": {"congruency": term(0.01, 0.2), "size": term(0.0, 1.0)},
+        },
+        "contrasts": {"closed_loop": {"congruency": term(0.04, congruency_p),
+                                      "size": term(size, 0.01)}},
+    }  # fmt: skip
+    curve = {"start": 0.22, "end": 0.047}
+    readings = pd.DataFrame(
+        [{"reading": r, "cue": c, "measure": "rmse", "effect": "congruency", "replications": 1,
+          "diff": 0.006, "ci_low": -0.003, "ci_high": 0.016, "p": 0.2, "p_holm": 1.0,
+          "family": "exploration: readings"}
+         for r, c in (("first_step+fixed", "first_step"), ("all_steps+fixed", "all_steps"))]
+    )  # fmt: skip
+    size_rows = pd.DataFrame(
+        [{"dose": d, "cue": "first_step", "measure": "rmse", "replications": 6, "diff": x,
+          "ci_low": x - 0.005, "ci_high": x + 0.005, "p": 0.001, "p_holm": 0.001,
+          "family": "size study: declared"} for d, x in (("0.0", dose0), ("equal_grips", 0.01))]
+    )  # fmt: skip
+    variants = pd.DataFrame(
+        [{"run": "main", "grasping_success": 0.0625, "grasping_trials": 48, "networks": 12}]
+    )
+    confirmation = pd.DataFrame(
+        [{"seed_set": "confirmation", "share": held, "ci_low": ci[0], "ci_high": ci[1],
+          "networks": 12, "trials": 48}]
+    )  # fmt: skip
+    return anova, curve, readings, size_rows, variants, confirmation
+
+
+def verdicts(*args, **kwargs) -> dict[str, str]:
+    values, table = scorecard.scorecard(*score_inputs(*args, **kwargs))
+    words = {key: value.text for key, value in values.items() if key.endswith("_verdict")}
+    assert sorted(table["verdict"]) == sorted(words.values())  # the table shows these values
+    return words
+
+
+def test_each_scorecard_verdict_follows_its_test():
+    base = verdicts()
+    assert base["score_learn_verdict"] == "reproduced"
+    assert base["score_congruency_all_verdict"] == "reproduced"
+    assert base["score_size_all_verdict"] == "reversed"
+    assert base["score_congruency_correct_verdict"] == "not shown"
+    assert base["score_reading_verdict"] == "not shown"
+    assert base["score_size_maps_verdict"] == "reversed"
+    assert base["score_size_grips_verdict"] == "reproduced"
+    assert base["score_robot_own_verdict"] == "falls short"
+    assert base["score_robot_best_verdict"] == "shown"
+    # flip each statistic: its verdict, and only its, follows
+    assert verdicts(congruency_p=0.2)["score_congruency_all_verdict"] == "not shown"
+    assert verdicts(size=0.026)["score_size_all_verdict"] == "reproduced"
+    assert verdicts(dose0=0.02)["score_size_maps_verdict"] == "reproduced"
+    assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
+    changed = verdicts(congruency_p=0.2)
+    assert {k for k in base if base[k] != changed[k]} == {"score_congruency_all_verdict"}
+
+
+def test_each_scorecard_verdict_rests_on_the_numbers_beside_it():
+    values, _ = scorecard.scorecard(*score_inputs())
+    for value in values.values():
+        if isinstance(value, text.Claim):
+            for entry in value.rests_on:
+                page, name = entry.split(".", 1)
+                assert page == "intro" and isinstance(values[name], float), entry
+
+
+# -- the built book (the test configuration's run) -----------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def pages(built):
+    return reading.chapters(built / HTML)
+
+
+def test_every_chapter_of_the_table_of_contents_is_built(pages):
+    assert set(toc_chapters()) <= set(pages), set(toc_chapters()) - set(pages)
+
+
+def test_every_chapter_leads_with_an_in_brief_of_at_most_three_sentences(pages):
+    for name in toc_chapters():
+        page = pages[name]
+        assert page.first_block == reading.IN_BRIEF_CLASS, name
+        assert 1 <= len(reading.sentences(page.in_brief)) <= 3, (name, page.in_brief)
+
+
+def test_the_book_is_short_enough_to_read_in_twenty_minutes(pages):
+    counts = {name: pages[name].words for name in toc_chapters()}
+    assert {n: c for n, c in counts.items() if c > CHAPTER_WORDS} == {}
+    assert sum(counts.values()) <= BOOK_WORDS, counts
+
+
+def test_the_scorecard_on_the_front_page_is_the_findings(built):
+    found = json.loads((built / "data" / "book" / "findings.json").read_text())
+    table = pd.read_csv(built / "data" / "book" / "tables" / "scorecard.csv")
+    verdicts = [v for k, v in found["intro"].items() if k.startswith("score_") and k.endswith(
+        "_verdict")]  # fmt: skip
+    assert sorted(table["verdict"]) == sorted(verdicts)
+    assert all(k in found["claims"]["intro"] for k in found["intro"] if k.endswith("_verdict"))
+    html = (built / HTML / "intro.html").read_text()
+    for claim in table["claim or question"]:
+        assert claim.replace("'", "&#x27;") in html or claim in html, claim
+
+
+# -- looked at: tables and figures within the text column, in headless Chromium ----------------
+
+#: Run in each page after load: every table and image in the article, and whether it is wider
+#: than the article's text column (its own width, or a scrolled-away part of it).
+MEASURE = """<script>
+window.addEventListener("load", () => {
+  const article = document.querySelector("article");
+  const column = article.getBoundingClientRect();
+  const wide = [];
+  for (const el of article.querySelectorAll("table, img, figure, .cell_output")) {
+    const box = el.getBoundingClientRect();
+    const cut = el.scrollWidth > el.clientWidth + 1 && el.tagName !== "IMG";
+    if (box.right > column.right + 1 || cut) {
+      wide.push(`${el.tagName.toLowerCase()} ${Math.round(Math.max(box.width, el.scrollWidth))}px`
+        + ` in a ${Math.round(column.width)}px column: ${el.textContent.trim().slice(0, 60)}`);
+    }
+  }
+  const out = document.createElement("pre");
+  out.id = "width-report";
+  out.textContent = JSON.stringify(wide);
+  document.body.appendChild(out);
+});
+</script>"""
+
+
+@pytest.mark.slow
+def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        pytest.skip("Debian's chromium is not installed (apt-get install chromium)")
+    site = tmp_path / "html"
+    shutil.copytree(built / HTML, site)
+    too_wide = {}
+    for name in toc_chapters():
+        page = site / f"{name}.html"
+        page.write_text(page.read_text().replace("</body>", MEASURE + "</body>"))
+        dom = subprocess.run(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1280,2000",
+             "--virtual-time-budget=5000", "--dump-dom", page.as_uri()],
+            capture_output=True, text=True, timeout=120,
+        ).stdout  # fmt: skip
+        report = re.search(r'<pre id="width-report"[^>]*>(.*?)</pre>', dom, re.S)
+        assert report, f"{name}: the measuring script did not run"
+        found = json.loads(html.unescape(report.group(1)))
+        if found:
+            too_wide[name] = found
+    assert too_wide == {}
