@@ -285,11 +285,14 @@ def reading_claims(summary) -> dict[str, Claim]:
             chosen = [reading for reading, shown in found.items() if effects <= shown]
             words = "every reading" if len(chosen) == len(found) else _listing(chosen, "no reading")
             key = f"both_{measure}" if name == "both" else f"paper_{measure}_{name}"
-            out[key] = Claim(words, _rests_on(rows, ("diff", "p_holm")))
+            rests = _rests_on(rows, ("diff", "p_holm"))
+            # a measure none of whose readings could be tested (too few correct trials at a
+            # small scale) states no finding: it says so, and is no claim
+            out[key] = Claim(words, rests) if rests else "no test could be made"
     return out
 
 
-def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | int]:
+def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | str | int]:
     """The effects a comparison of readings changes, from its tests
     (``readings.difference_verdict``): ``<prefix>_changes`` (larger or smaller, Holm),
     ``_larger``, ``_smaller``, naming the level of the other choice where only one shows it; and
@@ -318,12 +321,15 @@ def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Cl
             parts.append(f"{effect} on {_listing(measures, '')}")
         return "; ".join(parts) or "no effect"
 
-    out: dict[str, Claim | int] = {f"{prefix}_n": len(rows)}
+    def claim(said: str) -> Claim | str:  # with no test behind it (all identical) no claim
+        return Claim(said, rests) if rests else said
+
+    out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
     for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
-        out[f"{prefix}_n_{word.replace(' ', '_')}"] = Claim(str((words == word).sum()), rests)
-    out[f"{prefix}_larger"] = Claim(effects(rows[words == "larger"]), rests)
-    out[f"{prefix}_smaller"] = Claim(effects(rows[words == "smaller"]), rests)
-    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), rests)
+        out[f"{prefix}_n_{word.replace(' ', '_')}"] = claim(str((words == word).sum()))
+    out[f"{prefix}_larger"] = claim(effects(rows[words == "larger"]))
+    out[f"{prefix}_smaller"] = claim(effects(rows[words == "smaller"]))
+    out[f"{prefix}_changes"] = claim(effects(rows[words.isin(["larger", "smaller"])]))
     return out
 
 
