@@ -485,6 +485,13 @@ def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None =
     return out | {f"{prefix}_family": term.get("family", "none"), f"{prefix}_verdict": claim}
 
 
+def divergence_verdict(first: int | None) -> text.Claim:
+    """The hidden layer's lasting conflict (per-step paired tests, Holm over the steps)."""
+    lasting = "not at every step to the last (no lasting conflict shown)"
+    lasting = lasting if first is None else f"at every step from step {first} to the last"
+    return text.Claim(lasting, ("beyond.div_first_step",))
+
+
 def _robot_values(emb: dict, own: dict) -> dict:
     """The robot test's numbers (``embodied/analysis.json``; ``own`` the config's own networks'
     ``effects.json`` entry), every count over distinct trials, and its verdicts."""
@@ -528,9 +535,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "pca_explained": science.explained_by_two_axes(explained),
         "div_first_step": np.nan if first is None else first,
     }
-    lasting = "not at every step to the last (no lasting conflict shown)"
-    lasting = lasting if first is None else f"at every step from step {first} to the last"
-    out["div_verdict"] = text.Claim(lasting, ("beyond.div_first_step",))
+    out["div_verdict"] = divergence_verdict(first)
     own = _json(inputs["robot_effects.json"])[OWN]
     out |= _robot_values(_json(inputs["embodied_analysis.json"]), own)
     anova, effects = [], []
