@@ -433,7 +433,6 @@ def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
 
 
 # -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------
-# Their tables: the numbers as the analysis wrote them, short labels and verdicts; pages format.
 
 #: A variant's settings in the robot tables' short words (the grasping chapter's legend).
 SHORT = {
@@ -441,6 +440,7 @@ SHORT = {
     "target": {"sensed": "sens", "commands": "cmd"},
     "learning_rate_schedule": {"constant": "const", "anneal": "anneal"},
 }
+ROBOT_MEASURES = (("success", "held", "held"), ("contact_time", "touched", "contact, s"))
 EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "cong. × size"}
 
 
@@ -459,14 +459,12 @@ def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
 
 
 def robot_verdict(effect: dict, measure: str, factor: str) -> str:
-    """One robot effect against the paper (``findings.robot_effect_verdict``: its direction and
-    its p adjusted within the robot's family); the congruency x size term has no paper
-    direction, so it is "shown" or not."""
+    """One robot effect against the paper (``findings.robot_effect_verdict``, Holm within the
+    robot's family); the congruency x size term, with no paper direction, is "shown" or not."""
     test = effect["tests"][factor]
-    if factor == INTERACTION:
-        if test["method"] != "contrasts":
-            return "not tested"
-        return "shown" if test["p_holm"] < science.ALPHA else "not shown"
+    if factor == INTERACTION:  # no paper direction: shown or not, where a contrast tests it
+        shown = test["method"] == "contrasts" and test["p_holm"] < science.ALPHA
+        return "not tested" if test["method"] != "contrasts" else "shown" if shown else "not shown"
     verdict = science.robot_effect_verdict(effect, measure, factor)
     if verdict is None or not verdict.significant:
         return "not estimable" if verdict is None else "not shown"
@@ -474,9 +472,8 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
 
 
 def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None = None) -> dict:
-    """A tested difference as page values: its numbers as the analysis wrote them (NaN where
-    untested), its family and ``<prefix>_verdict``, ``text.verdict_word`` (or its ``words``), a
-    ``text.Claim`` resting on the estimate and the adjusted p."""
+    """A test's numbers as written (NaN where untested), its family and ``<prefix>_verdict``:
+    ``text.verdict_word`` (or its ``words``), a claim resting on the estimate and adjusted p."""
     out = {f"{prefix}_{k}": term.get(k, np.nan) for k in ("estimate", "ci_low", "ci_high", "p")}
     out[f"{prefix}_p_holm"] = term.get("p_holm", out[f"{prefix}_p"])
     word = text.verdict_word({"estimate": out[f"{prefix}_estimate"], "p": out[f"{prefix}_p_holm"]})
@@ -495,27 +492,24 @@ def divergence_verdict(first: int | None) -> text.Claim:
 def _robot_values(emb: dict, own: dict) -> dict:
     """The robot test's numbers (``embodied/analysis.json``; ``own`` the config's own networks'
     ``effects.json`` entry), every count over distinct trials, and its verdicts."""
-    robot, measures = science.robot_verdicts(emb), emb["measures"]
     out = {f"emb_{k}": v for k, v in emb.items() if not isinstance(v, dict)}
-    suc, err = measures["success"], measures["final_error"]
+    suc, err = emb["measures"]["success"], emb["measures"]["final_error"]
     records = {k: emb[k] for k in ("replay_success", "replay_trials", "replay_wrong_grip_holds")}
     records |= {"suc": suc["means"], "err": err["means"]}
     records["suc_diff"] = suc["incongruent_minus_congruent"]
     out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
-    stats = science.robot_effect_statistics(own["success"], "congruency")
+    success = own["success"]
+    stats = science.robot_effect_statistics(success, "congruency")
     out |= {f"emb_success_{k}": v for k, v in stats.items()}
-    out["emb_success_family"] = own["success"]["tests"]["congruency"].get("family", "none")
-    out["emb_success_verdict"] = text.Claim(
-        robot_verdict(own["success"], "success", "congruency"),
-        ("beyond.emb_success_estimate", "beyond.emb_success_p"),
-    )
+    out["emb_success_family"] = success["tests"]["congruency"].get("family", "none")
+    rests = ("beyond.emb_success_estimate", "beyond.emb_success_p")
+    out["emb_success_verdict"] = text.Claim(robot_verdict(success, "success", "congruency"), rests)
     floor = "near the floor, so it can say little about congruency"
-    floor = floor if robot["at_floor"] else "clear of the floor"
+    floor = floor if science.robot_verdicts(emb)["at_floor"] else "clear of the floor"
     out["emb_floor"] = text.Claim(floor, ("beyond.emb_categorisation_success",))
-    out["emb_ceiling"] = text.Claim(
-        "below" if robot["below_ceiling"] else "at or above",
-        ("beyond.emb_success_rate", "beyond.replay_success_sensed_postures"),
-    )
+    ceiling = "below" if science.robot_verdicts(emb)["below_ceiling"] else "at or above"
+    rests = ("beyond.emb_success_rate", "beyond.replay_success_sensed_postures")
+    out["emb_ceiling"] = text.Claim(ceiling, rests)
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
         term = (err["contrasts"] or {}).get(effect) or {}
         words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}"}
@@ -528,14 +522,13 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     """The robot test, the cue ablation and the hidden layer."""
     cues = {"main": config["network"]["categorisation_cue"], "ablation": ablation_cue}
     first = _json(inputs["divergence.json"])["first_divergent_step"]
-    explained = pd.read_csv(inputs["hidden_explained.csv"])
     out = {f"{name}_cue_phrase": text.CUES[cue] for name, cue in cues.items()} | {
         "n_predicted": config["demos"]["steps"] - 1,
         "n_hidden": config["network"]["hidden"],
-        "pca_explained": science.explained_by_two_axes(explained),
+        "pca_explained": science.explained_by_two_axes(pd.read_csv(inputs["hidden_explained.csv"])),
         "div_first_step": np.nan if first is None else first,
+        "div_verdict": divergence_verdict(first),
     }
-    out["div_verdict"] = divergence_verdict(first)
     own = _json(inputs["robot_effects.json"])[OWN]
     out |= _robot_values(_json(inputs["embodied_analysis.json"]), own)
     anova, effects = [], []
@@ -551,9 +544,9 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     # the test of the difference, first step only minus every step, paired by network; its
     # adjusted p is the readings' table's, within that table's family
     difference = _json(inputs["cue_difference.json"])["congruency"]
+    query = "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
     table = pd.read_csv(inputs["readings_differences.csv"])
-    query = "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency' & at == @at"
-    row = table.query(query, local_dict={"at": config["soms"]["goal_response"]})
+    row = table.query(f"{query} & at == @goal_response", local_dict=config["soms"])
     difference |= (row[["p_holm", "family"]].to_dict("records") or [{}])[0]
     out |= {"cue_difference_df": difference["df"], "cue_difference_t": difference["t"]}
     words = {"reproduced": "larger with the cue at the first step only"}
@@ -564,14 +557,10 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
 
 
 def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]]:
-    """A variant's robot effects (its ``effects.json`` entry), one row per measure and term: the
-    test, the difference and the p its verdict reads (``findings.robot_effect_statistics``); and
-    its counts per congruency x size cell, one row per measure."""
+    """A variant's robot effects (``effects.json``): per measure and term the test, the difference
+    and the p its verdict reads (``findings.robot_effect_statistics``); its counts per cell."""
     rows, cells = [], []
-    for measure, counted, shown in (
-        ("success", "held", "held"),
-        ("contact_time", "touched", "contact, s"),
-    ):
+    for measure, counted, shown in ROBOT_MEASURES:
         named = {k.replace("ongruent_", "ong. "): c for k, c in effects[measure]["cells"].items()}
         cells.append({"variant": label, "measure": counted})
         cells[-1] |= {k: f"{c[counted]}/{c['trials']}" for k, c in named.items()}
@@ -591,8 +580,7 @@ def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]
 
 
 def _best_effects(effects: dict) -> dict:
-    """The best variant's robot effects: each verdict a ``text.Claim`` resting on its difference
-    and the p it reads (Holm within the robot's family), stored beside it; its misses."""
+    """The best variant's effects: each verdict a claim resting on its difference and p; misses."""
     out: dict[str, object] = {}
     for r in _effect_rows(effects)[0]:
         name = f"best_{r['key']}"
@@ -606,38 +594,34 @@ def _best_effects(effects: dict) -> dict:
 
 
 def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
-    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's
-    counts on the networks it was chosen on and on fresh ones, and the bar set against the
-    fresh networks' clustered interval only; every confirmed variant in the table."""
+    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's counts
+    on the networks it was chosen on and fresh ones, the bar set against the fresh ones only."""
     rows = confirmation.to_dict("records")
     for r in rows:  # the bar is set against the fresh networks only
         bar = confirmation_science.bar_verdict(r["ci_low"], r["ci_high"], science.GRASPS)
         r |= {"variant": short_label(r), "vs_bar": bar if r["seed_set"] == "confirmation" else ""}
     out = {"bar": science.GRASPS, "confirmed_label": "none"}
     if not rows:
-        out["confirmation_bar"] = "is not tested: this build confirms no variant"
-        return out, pd.DataFrame(rows)
+        return out | {"confirmation_bar": "is not tested: no variant confirmed"}, pd.DataFrame()
     first = {r["seed_set"]: r for r in reversed(rows)}  # the first confirmed variant's two rows
     keys = ("networks", "trials", "held", "share", "ci_low", "ci_high")
     out |= {f"{seeds}_{k}": r[k] for seeds, r in first.items() for k in keys}
     fresh = first["confirmation"]
-    words = {"above": "lies above it", "includes": "includes it", "below": "lies below it"}
     out |= {"confirmed_label": fresh["variant"], "confirmation_verdict": fresh["vs_bar"]}
     rests = ("grasping.bar", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high")
-    out["confirmation_bar"] = text.Claim(words[fresh["vs_bar"]], rests)
+    bar = "includes it" if fresh["vs_bar"] == "includes" else f"lies {fresh['vs_bar']} it"
+    out["confirmation_bar"] = text.Claim(bar, rests)
     held = {k.removesuffix("_held"): v for k, v in fresh.items() if k.endswith("_held")}
     out["confirmation_misses"] = _misses({k: (v, fresh[f"{k}_trials"]) for k, v in held.items()})
     return out, pd.DataFrame(rows)
 
 
 def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The robot grasps with what it learned: the variants, the confirmation of the best, how
-    precisely the arm must move, and the congruency and size effects on the body."""
+    """The robot grasps: the variants, the best confirmed, the arm's precision, the effects."""
     variants = pd.read_csv(inputs["robot_variants.csv"])
     variants["variant"] = [short_label(r) for _, r in variants.iterrows()]
     effects, stats = _json(inputs["robot_effects.json"]), _json(inputs["robot_statistics.json"])
-    tolerance = record_table(stats["tolerance"])
-    tolerated = science.tolerated_noise(tolerance)
+    tolerated = science.tolerated_noise(tolerance := record_table(stats["tolerance"]))
     best, smallest = science.best_robot_variant(variants), science.smallest_that_grasps(variants)
     animated = {k: config["network"][k] for k in ("categorisation_cue", "learning_rate_schedule")}
     out = {
