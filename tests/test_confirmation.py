@@ -269,23 +269,23 @@ def test_the_values_are_the_rows_and_the_bar_phrase_rests_on_them():
     values, claims = out["grasping"], out["claims"]["grasping"]
     assert set(claims) == {"confirmation_bar"}
     assert claims["confirmation_bar"] == [
-        "grasping.bar_share", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"
+        "grasping.bar", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"
     ]  # fmt: skip
     for entry in claims["confirmation_bar"]:
         assert isinstance(values[entry.split(".", 1)[1]], int | float)
     assert (values["exploration_held"], values["exploration_trials"]) == (45, 48)
-    assert (values["exploration_first_network"], values["exploration_last_network"]) == (0, 11)
-    assert values["confirmation_held"] == 44 and values["confirmation_first_network"] == 12
+    assert values["confirmation_held"] == 44 and values["confirmation_networks"] == 12
     assert values["confirmed_label"] == "all · cmd · h40 · 768k · anneal"
     # the fresh networks' misses, one each on mapping A's objects as the fixture deals them
     assert values["confirmation_misses"] == (
-        "big ball (A) 1 of 6; small ball (A) 1 of 6; big cube (A) 1 of 6; small cube (A) 1 of 6"
+        "A big ball 1 of 6; A small ball 1 of 6; A big cube 1 of 6; A small cube 1 of 6"
     )
-    assert shown["networks"].tolist() == ["0-11, chosen on", "12-23, fresh"]
-    assert shown["held"].tolist() == ["45/48, 94%", "44/48, 92%"]
-    assert shown["deff (raw)"].tolist()[1] == "0.850"
+    # the table: every row as written, beside its label and where it stands against the bar
+    assert shown["seed_set"].tolist() == ["exploration", "confirmation"]
+    assert shown[["first_network", "last_network"]].values.tolist() == [[0, 11], [12, 23]]
+    assert shown["held"].tolist() == [45, 44] and shown["design_effect_raw"].tolist()[1] == 0.85
     moved, _ = page(confirmation_csv(confirm=(41, 0.70, 0.92), raw=(0.85, 0.6)))
-    assert "big ball (B) 1 of 6" in moved["grasping"]["confirmation_misses"]
+    assert "B big ball 1 of 6" in moved["grasping"]["confirmation_misses"]
     held, _ = page(confirmation_csv(confirm=(48, 0.93, 1.0), raw=(0.85, float("nan"))))
     assert held["grasping"]["confirmation_misses"] == "none"
 
@@ -302,7 +302,7 @@ def test_the_bar_is_set_against_the_confirmations_interval(low, high, words):
     out, shown = page(confirmation_csv(confirm=(44, low, high)))
     assert out["grasping"]["confirmation_verdict"] == bar_verdict(low, high, 0.9)
     assert out["grasping"]["confirmation_bar"].startswith(words)
-    assert shown["vs bar"].tolist() == ["", bar_verdict(low, high, 0.9)]
+    assert shown["vs_bar"].tolist() == ["", bar_verdict(low, high, 0.9)]
 
 
 def test_the_exploration_alone_never_meets_the_bar():
@@ -324,7 +324,7 @@ def test_every_confirmed_variant_is_in_the_table():
         shown["variant"].tolist()
         == ["all · cmd · h40 · 768k · anneal"] * 2 + ["all · cmd · h20 · 768k · anneal"] * 2
     )
-    assert shown["vs bar"].tolist() == ["", "above", "", "below"]
+    assert shown["vs_bar"].tolist() == ["", "above", "", "below"]
 
 
 def test_no_confirmed_variant_says_so():

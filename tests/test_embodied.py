@@ -474,10 +474,11 @@ def test_the_books_robot_verdicts_read_the_effects_as_written():
     assert values["best_contact_time_size"].text == "not estimable"
     rows, cells = pages._effect_rows(effects)
     # every cell shown: the large objects held, the small ones never
-    assert cells[0] == {"measure": "held", "cong. large": "6/6", "cong. small": "0/6",
+    assert cells[0] == {"variant": "", "measure": "held", "cong. large": "6/6",
+                        "cong. small": "0/6",
                         "incong. large": "6/6", "incong. small": "0/6"}  # fmt: skip
     held = {r["effect"]: r for r in rows if r["measure"] == "held"}
-    assert held["size"]["p Holm"] != ""  # adjusted over the robot's family
+    assert not np.isnan(held["size"]["p_holm"])  # adjusted over the robot's family
     # the interaction: 0 in every network, no test and no exact fallback
     interaction = values["best_success_interaction"]
     assert interaction.text == "not tested" and held["cong. × size"]["test"] == "none"

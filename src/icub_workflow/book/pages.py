@@ -440,9 +440,7 @@ SHORT = {
     "target": {"sensed": "sens", "commands": "cmd"},
     "learning_rate_schedule": {"constant": "const", "anneal": "anneal"},
 }
-#: The cue timings in the tables' short words.
-CUE_SHORT = {"first_step": "first step", "all_steps": "every step"}
-#: A robot effect's short name in the tables.
+ROBOT_MEASURES = (("success", "held", "held"), ("contact_time", "touched", "contact, s"))
 EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "cong. × size"}
 
 
@@ -454,495 +452,205 @@ def short_label(row: Mapping, leave_out: tuple[str, ...] = ()) -> str:
     return " · ".join(words[k] for k in NetworkVariant.keys() if k not in leave_out)
 
 
+def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
+    """The trials not held, per object: ``counts`` is {object: (held, trials)}."""
+    missed = [f"{k.replace('_', ' ')} {t - h} of {t}" for k, (h, t) in counts.items() if h < t]
+    return "; ".join(missed) or "none"
+
+
 def robot_verdict(effect: dict, measure: str, factor: str) -> str:
-    """One robot effect against the paper (``findings.robot_effect_verdict``: its direction and
-    its p adjusted within the robot's family); the congruency x size term has no paper
-    direction, so it is "shown" or not."""
-    if factor == INTERACTION:
-        test = effect["tests"][INTERACTION]
-        if test["method"] != "contrasts":
-            return "not tested"
-        return "shown" if test["p_holm"] < science.ALPHA else "not shown"
+    """One robot effect against the paper (``findings.robot_effect_verdict``, Holm within the
+    robot's family); the congruency x size term, with no paper direction, is "shown" or not."""
+    test = effect["tests"][factor]
+    if factor == INTERACTION:  # no paper direction: shown or not, where a contrast tests it
+        shown = test["method"] == "contrasts" and test["p_holm"] < science.ALPHA
+        return "not tested" if test["method"] != "contrasts" else "shown" if shown else "not shown"
     verdict = science.robot_effect_verdict(effect, measure, factor)
-    if verdict is None:
-        return "not estimable"
-    if not verdict.significant:
-        return "not shown"
+    if verdict is None or not verdict.significant:
+        return "not estimable" if verdict is None else "not shown"
     return "as in the paper" if verdict.paper_direction else "reversed"
 
 
-def difference_verdict(term: dict, larger: str, smaller: str, none: str = "not shown to differ"):
-    """A tested difference (positive: ``larger``), from its direction and adjusted p."""
-    word = text.verdict_word(term)
-    return {"reproduced": larger, "reversed": smaller, "not shown": none}.get(word, word)
+def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None = None) -> dict:
+    """A test's numbers as written (NaN where untested), its family and ``<prefix>_verdict``:
+    ``text.verdict_word`` (or its ``words``), a claim resting on the estimate and adjusted p."""
+    out = {f"{prefix}_{k}": term.get(k, np.nan) for k in ("estimate", "ci_low", "ci_high", "p")}
+    out[f"{prefix}_p_holm"] = term.get("p_holm", out[f"{prefix}_p"])
+    word = text.verdict_word({"estimate": out[f"{prefix}_estimate"], "p": out[f"{prefix}_p_holm"]})
+    rests = (f"{page}.{prefix}_estimate", f"{page}.{prefix}_p_holm")
+    claim = text.Claim((words or {}).get(word, word), rests)
+    return out | {f"{prefix}_family": term.get("family", "none"), f"{prefix}_verdict": claim}
 
 
-def divergence_verdict(first_step: int | None) -> text.Claim:
-    """The hidden layer's conflict, from the per-step paired tests (Holm over the steps): the
-    first step from which incongruent trials are further from grasping at every step, if any."""
-    return text.Claim(
-        f"at every step from step {first_step} to the last"
-        if first_step is not None
-        else "not at every step to the last (no lasting conflict shown)",
-        ("beyond.div_first_step",),
-    )
-
-
-def _effect_rows(effects: dict, label: str | None = None) -> tuple[list[dict], list[dict]]:
-    """One variant's robot effects (``effects.json``) as table rows, one per measure and term,
-    and its counts per congruency x size cell, one row per measure."""
-    rows, cells = [], []
-    for measure, name in (("success", "held"), ("contact_time", "contact, s")):
-        effect = effects[measure]
-        counted = "held" if measure == "success" else "touched"
-        first = {"variant": label} if label else {}
-        cells.append(
-            first
-            | {"measure": counted}
-            | {
-                k.replace("incongruent_", "incong. ").replace("congruent_", "cong. "): (
-                    f"{c[counted]}/{c['trials']}"
-                )
-                for k, c in effect["cells"].items()
-            }
-        )
-        for factor in (*FACTOR_LEVELS, INTERACTION):
-            test = effect["tests"][factor]
-            estimate = (
-                science.robot_effect_statistics(effect, factor)["estimate"]
-                if factor != INTERACTION
-                else test.get("estimate", float("nan"))
-            )
-            contrast = test["method"] == "contrasts"
-            rows.append(
-                first
-                | {
-                    "measure": name,
-                    "effect": EFFECT_NAMES[factor],
-                    "test": f"t ({test['networks']})"
-                    if contrast
-                    else {"exact": "Fisher"}.get(test["method"], "none"),
-                    "estimate": f"{estimate:+.3f}" if np.isfinite(estimate) else "",
-                    "95% interval": f"{test['ci_low']:+.3f}, {test['ci_high']:+.3f}"
-                    if contrast
-                    else "",
-                    "p": f"{test['p']:.2g}" if "p" in test else "",
-                    "p Holm": f"{test['p_holm']:.2g}" if "p_holm" in test else "",
-                    "verdict": robot_verdict(effect, measure, factor),
-                }
-            )
-    return rows, cells
+def divergence_verdict(first: int | None) -> text.Claim:
+    """The hidden layer's lasting conflict (per-step paired tests, Holm over the steps)."""
+    lasting = "not at every step to the last (no lasting conflict shown)"
+    lasting = lasting if first is None else f"at every step from step {first} to the last"
+    return text.Claim(lasting, ("beyond.div_first_step",))
 
 
 def _robot_values(emb: dict, own: dict) -> dict:
-    """The chapter beyond's robot numbers (``embodied/analysis.json``; ``own`` the config's own
-    networks' ``effects.json`` entry), every count over distinct trials, and its verdicts, each
-    a ``text.Claim`` resting on the statistics stored beside it."""
-    robot = science.robot_verdicts(emb)
-    err, suc = emb["measures"]["final_error"], emb["measures"]["success"]
-    diff = suc["incongruent_minus_congruent"]
-    stats = science.robot_effect_statistics(own["success"], "congruency")
-    family = own["success"]["tests"]["congruency"].get("family", "")
-    out = {
-        "emb_n_trials": emb["n_trials"],
-        "emb_n_networks": emb["n_networks"],
-        "emb_success": text.pct(emb["success_rate"]),
-        "emb_grasping_success": text.pct(emb["grasping_success"]),
-        "emb_categorisation_success": text.pct(emb["categorisation_success"]),
-        "emb_categorisation_rate": float(emb["categorisation_success"]),
-        "emb_success_rate": float(emb["success_rate"]),
-        "emb_touching": text.pct(emb["touching_rate"]),
-        "emb_wrong_grip_holds": int(emb["wrong_grip_holds"]),
-        "replay_commands": text.pct(emb["replay_success"]["commands"]),
-        "replay_sensed": text.pct(emb["replay_success"]["sensed_postures"]),
-        "replay_sensed_rate": float(emb["replay_success"]["sensed_postures"]),
-        "replay_commands_wrong_grip": int(emb["replay_wrong_grip_holds"]["commands"]),
-        "replay_commands_trials": int(emb["replay_trials"]["commands"]),
-        "suc_congruent": text.pct(suc["means"]["congruent"]),
-        "suc_incongruent": text.pct(suc["means"]["incongruent"]),
-        "suc_diff_points": 100 * diff["mean"],
-        "suc_diff_low": 100 * diff["ci_low"],
-        "suc_diff_high": 100 * diff["ci_high"],
-        "emb_success_congruency_estimate": stats["estimate"],
-        "emb_success_congruency_p": stats["p"],
-        "emb_success_family": family,
-        "emb_success_verdict": text.Claim(
-            robot_verdict(own["success"], "success", "congruency"),
-            ("beyond.emb_success_congruency_estimate", "beyond.emb_success_congruency_p"),
-        ),
-        "emb_ceiling": text.Claim(
-            "below" if robot["below_ceiling"] else "at or above",
-            ("beyond.emb_success_rate", "beyond.replay_sensed_rate"),
-        ),
-        "emb_floor": text.Claim(
-            "near the floor, so it can say little about congruency"
-            if robot["at_floor"]
-            else "clear of the floor",
-            ("beyond.emb_categorisation_rate",),
-        ),
-    }
-    # the final posture error: per-network contrasts, Holm within their family
-    for effect, larger, level, where in (
-        ("congruency", "incongruent", "congruent", "when incongruent"),
-        ("size", "small", "large", "for small objects"),
-    ):
-        out[f"err_{larger}"] = err["means"][larger]
-        out[f"err_{level}"] = err["means"][level]
-        term = (err["contrasts"] or {}).get(effect) or {"estimate": np.nan, "p": np.nan}
-        key = f"emb_final_error_{effect}"
-        for stat in ("estimate", "ci_low", "ci_high", "p", "p_holm"):
-            out[f"{key}_{stat}"] = term.get(stat, float("nan"))
-        out[f"{key}_family"] = term.get("family", "")
-        out[f"{key}_verdict"] = text.Claim(
-            difference_verdict(term, f"larger {where}", f"smaller {where}"),
-            (f"beyond.{key}_estimate", f"beyond.{key}_p_holm"),
-        )
+    """The robot test's numbers (``embodied/analysis.json``; ``own`` the config's own networks'
+    ``effects.json`` entry), every count over distinct trials, and its verdicts."""
+    out = {f"emb_{k}": v for k, v in emb.items() if not isinstance(v, dict)}
+    suc, err = emb["measures"]["success"], emb["measures"]["final_error"]
+    records = {k: emb[k] for k in ("replay_success", "replay_trials", "replay_wrong_grip_holds")}
+    records |= {"suc": suc["means"], "err": err["means"]}
+    records["suc_diff"] = suc["incongruent_minus_congruent"]
+    out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
+    success = own["success"]
+    stats = science.robot_effect_statistics(success, "congruency")
+    out |= {f"emb_success_{k}": v for k, v in stats.items()}
+    out["emb_success_family"] = success["tests"]["congruency"].get("family", "none")
+    rests = ("beyond.emb_success_estimate", "beyond.emb_success_p")
+    out["emb_success_verdict"] = text.Claim(robot_verdict(success, "success", "congruency"), rests)
+    floor = "near the floor, so it can say little about congruency"
+    floor = floor if science.robot_verdicts(emb)["at_floor"] else "clear of the floor"
+    out["emb_floor"] = text.Claim(floor, ("beyond.emb_categorisation_success",))
+    ceiling = "below" if science.robot_verdicts(emb)["below_ceiling"] else "at or above"
+    rests = ("beyond.emb_success_rate", "beyond.replay_success_sensed_postures")
+    out["emb_ceiling"] = text.Claim(ceiling, rests)
+    for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
+        term = (err["contrasts"] or {}).get(effect) or {}
+        words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}"}
+        words["not shown"] = "not shown to differ"
+        out |= tested("beyond", f"emb_final_error_{effect}", term, words)
     return out
 
 
-def beyond(
-    inputs: Mapping[str, str], config: dict, ablation_cue: str
-) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The robot test, the cue ablation and the hidden layer; the cue timings' congruency
-    effects and ANOVAs."""
-    emb = _json(inputs["embodied_analysis.json"])
-    main, ablation = _json(inputs["anova.json"]), _json(inputs["ablation_anova.json"])
-    divergence = pd.read_csv(inputs["divergence.csv"])
-    first_step = _json(inputs["divergence.json"])["first_divergent_step"]
-    explained = pd.read_csv(inputs["hidden_explained.csv"])
-    main_cue = config["network"]["categorisation_cue"]
-    out = {
-        "n_steps": config["demos"]["steps"],
+def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[dict, dict]:
+    """The robot test, the cue ablation and the hidden layer."""
+    cues = {"main": config["network"]["categorisation_cue"], "ablation": ablation_cue}
+    first = _json(inputs["divergence.json"])["first_divergent_step"]
+    out = {f"{name}_cue_phrase": text.CUES[cue] for name, cue in cues.items()} | {
         "n_predicted": config["demos"]["steps"] - 1,
         "n_hidden": config["network"]["hidden"],
-        "main_cue_phrase": text.CUES[main_cue],
-        "ablation_cue_phrase": text.CUES[ablation_cue],
+        "pca_explained": science.explained_by_two_axes(pd.read_csv(inputs["hidden_explained.csv"])),
+        "div_first_step": np.nan if first is None else first,
+        "div_verdict": divergence_verdict(first),
     }
-    out |= _robot_values(emb, _json(inputs["robot_effects.json"])[OWN])
-    rows, effects = [], []
-    for name, cue, result in (("main", main_cue, main), ("ablation", ablation_cue, ablation)):
+    own = _json(inputs["robot_effects.json"])[OWN]
+    out |= _robot_values(_json(inputs["embodied_analysis.json"]), own)
+    anova, effects = [], []
+    for name, cue in cues.items():
+        result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])
         for mode in MODES:
-            for effect in ("congruency", "size", "interaction"):
-                e = result[mode]["repeated_measures"][effect]
-                rows.append(
-                    {"cue": cue.replace("_", " "), "test": mode.replace("_", " "), "effect": effect}
-                    | {"F": e["F"], "df": f"({e['df1']:.0f}, {e['df2']:.0f})", "p": e["p"]}
-                    | {"partial η²": e["eta_p2"]}
-                )
-        term = result["contrasts"]["closed_loop"]["congruency"]
-        key = f"cue_{name}_congruency"
-        out[f"cue_{name}_congruent"] = result["closed_loop"]["means"]["congruent"]
-        out[f"cue_{name}_incongruent"] = result["closed_loop"]["means"]["incongruent"]
-        for stat in ("estimate", "ci_low", "ci_high", "p", "p_holm"):
-            out[f"{key}_{stat}"] = (
-                term["p"] if stat == "p_holm" and stat not in term else term[stat]
-            )
-        out[f"{key}_family"] = term.get("family", "")
-        out[f"cue_{name}_verdict"] = text.Claim(
-            text.verdict_word(term), (f"beyond.{key}_estimate", f"beyond.{key}_p_holm")
-        )
-        means = result["closed_loop"]["means"]
-        effects.append(
-            {"cue": f"{CUE_SHORT[cue]} ({name})"}
-            | {
-                "congruent": f"{means['congruent']:.4f}",
-                "incongruent": f"{means['incongruent']:.4f}",
-            }
-            | {"estimate": f"{term['estimate']:+.4f}"}
-            | {"95% interval": f"{term['ci_low']:+.4f}, {term['ci_high']:+.4f}"}
-            | {"p Holm": f"{out[key + '_p_holm']:.2g}", "verdict": text.verdict_word(term)}
-        )
+            terms = result[mode]["repeated_measures"].items()
+            anova += [{"cue": cue, "test": mode, "effect": e} | term for e, term in terms]
+        out |= tested("beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"])
+        out |= {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
+        mine = {k.removeprefix(f"cue_{name}_"): v for k, v in out.items() if f"cue_{name}_" in k}
+        effects.append({"run": name, "cue": cue} | mine | {"verdict": mine["verdict"].text})
     # the test of the difference, first step only minus every step, paired by network; its
     # adjusted p is the readings' table's, within that table's family
     difference = _json(inputs["cue_difference.json"])["congruency"]
+    query = "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
     table = pd.read_csv(inputs["readings_differences.csv"])
-    row = table[
-        (table["comparison"] == "cue_timing")
-        & (table["at"] == config["soms"]["goal_response"])
-        & (table["measure"] == "rmse")
-        & (table["effect"] == "congruency")
-    ]
-    if len(row) == 1:
-        difference |= {"p_holm": float(row["p_holm"].iloc[0]), "family": row["family"].iloc[0]}
-    for stat in ("estimate", "ci_low", "ci_high", "df", "t", "p"):
-        out[f"cue_difference_{stat}"] = difference[stat]
-    out["cue_difference_p_holm"] = difference.get("p_holm", difference["p"])
-    out["cue_difference_family"] = difference.get("family", "none")
-    out["cue_difference_verdict"] = text.Claim(
-        difference_verdict(
-            difference,
-            "larger with the cue at the first step only",
-            "larger with the cue at every step",
-            "not shown to differ between the timings",
-        ),
-        ("beyond.cue_difference_estimate", "beyond.cue_difference_p_holm"),
-    )
-    # the hidden layer: per-step paired tests, Holm over the steps
-    out |= {
-        "div_step1_cong": float(divergence["congruent"].iloc[0]),
-        "div_step1_incong": float(divergence["incongruent"].iloc[0]),
-        "div_last_cong": float(divergence["congruent"].iloc[-1]),
-        "div_last_incong": float(divergence["incongruent"].iloc[-1]),
-        "div_first_step": float("nan") if first_step is None else first_step,
-        "div_verdict": divergence_verdict(first_step),
-        "pca_explained": text.pct(science.explained_by_two_axes(explained)),
-    }
-    return out, {"cue_anova": pd.DataFrame(rows), "cue_effects": pd.DataFrame(effects)}
+    row = table.query(f"{query} & at == @goal_response", local_dict=config["soms"])
+    difference |= (row[["p_holm", "family"]].to_dict("records") or [{}])[0]
+    out |= {"cue_difference_df": difference["df"], "cue_difference_t": difference["t"]}
+    words = {"reproduced": "larger with the cue at the first step only"}
+    words |= {"reversed": "larger with the cue at every step"}
+    words["not shown"] = "not shown to differ between the timings"
+    out |= tested("beyond", "cue_difference", difference, words)
+    return out, {"cue_anova": pd.DataFrame(anova), "cue_effects": pd.DataFrame(effects)}
 
 
-def _pairs(variants: pd.DataFrame, schedule_pairs: list[dict]) -> pd.DataFrame:
-    """The variants that differ in one setting alone: the cue timing (shares side by side, not
-    tested) and the learning-rate schedule (paired by network and object: the exact McNemar
-    test of ``robot_statistics.paired_grasping``)."""
-    rows = []
-    same = [k for k in NetworkVariant.keys() if k != "categorisation_cue"]
-    for _, mine in variants.groupby(same, sort=True):
-        if mine["categorisation_cue"].nunique() == 2:
-            mine = mine.sort_values("categorisation_cue", ascending=False)
-            rows.append(
-                {
-                    "differs": "cue: first / all",
-                    "same": short_label(mine.iloc[0], ("categorisation_cue",)),
-                }
-                | {"held": " / ".join(text.pct(v) for v in mine["grasping_success"])}
-                | {"by one only": "", "McNemar p": "", "verdict": "not tested"}
-            )
-    for p in schedule_pairs:
-        rows.append(
-            {
-                "differs": f"rate: {SHORT['learning_rate_schedule'][p['a']]} / "
-                f"{SHORT['learning_rate_schedule'][p['b']]}"
-            }
-            | {
-                "same": short_label(
-                    p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",)
-                )
-            }
-            | {"held": f"{p['held_a']} / {p['held_b']} of {p['trials']}"}
-            | {"by one only": f"{p['only_a']} / {p['only_b']}", "McNemar p": f"{p['p']:.2g}"}
-            | {"verdict": "differ" if p["p"] < science.ALPHA else "not shown"}
-        )
-    return pd.DataFrame(
-        rows, columns=["differs", "same", "held", "by one only", "McNemar p", "verdict"]
-    )
-
-
-#: Where a confirmation's interval lies against the bar, and what that says.
-BAR_WORDS = {
-    "above": "lies above it: the variant holds the object more often than that (95% confidence)",
-    "includes": "includes it: these networks cannot tell whether the variant holds the object "
-    "more or less often than that",
-    "below": "lies below it: the variant holds the object less often than that (95% confidence)",
-}
-
-
-def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
-    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's
-    shares on the networks it was chosen on and on fresh ones, and the bar set against the
-    fresh networks' clustered interval only; every confirmed variant in the table."""
-    out: dict[str, object] = {"bar_share": float(science.GRASPS)}
-    rows = []
-    for _, row in confirmation.iterrows():
-        fresh = row["seed_set"] == "confirmation"
-        verdict = confirmation_science.bar_verdict(row["ci_low"], row["ci_high"], science.GRASPS)
-        rows.append(
-            {"variant": short_label(row)}
-            | {
-                "networks": f"{int(row['first_network'])}-{int(row['last_network'])}, "
-                + ("fresh" if fresh else "chosen on")
-            }
-            | {"held": f"{int(row['held'])}/{int(row['trials'])}, {text.pct(row['share'])}"}
-            | {"95% interval": f"{text.pct(row['ci_low'])}-{text.pct(row['ci_high'])}"}
-            | {"deff (raw)": f"{row['design_effect_raw']:.3f}"}
-            | {"vs bar": verdict if fresh else ""}
-        )
-    table = pd.DataFrame(rows)
-    if confirmation.empty:
-        return out | {
-            "confirmed_label": "none",
-            "confirmation_bar": "is not tested: this build "
-            "confirms no variant (config robot.confirmation.variants is empty)",
-        }, table
-    explored = confirmation[confirmation["seed_set"] == "exploration"].iloc[0]
-    fresh = confirmation[confirmation["seed_set"] == "confirmation"].iloc[0]
-    counts = ("networks", "first_network", "last_network", "trials", "held")
-    for name, source in (("exploration", explored), ("confirmation", fresh)):
-        for column in (*counts, "share", "ci_low", "ci_high"):
-            value = source[column]
-            out[f"{name}_{column}"] = int(value) if column in counts else float(value)
-    verdict = confirmation_science.bar_verdict(fresh["ci_low"], fresh["ci_high"], science.GRASPS)
-    out["confirmed_label"] = short_label(fresh)
-    out["confirmation_verdict"] = verdict
-    out["confirmation_bar"] = text.Claim(
-        BAR_WORDS[verdict],
-        ("grasping.bar_share", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"),
-    )
-    out["confirmation_misses"] = (
-        "; ".join(
-            f"{o.replace('_', ' ')} ({m}) {int(fresh[f'{m}_{o}_trials'] - fresh[f'{m}_{o}_held'])} "
-            f"of {int(fresh[f'{m}_{o}_trials'])}"
-            for m in confirmation_science.MAPPINGS
-            for o in confirmation_science.OBJECT_NAMES
-            if fresh[f"{m}_{o}_held"] < fresh[f"{m}_{o}_trials"]
-        )
-        or "none"
-    )
-    return out, table
-
-
-def _palm_table(sources: dict[str, pd.DataFrame]) -> pd.DataFrame:
-    """Share held per bin of palm error, one column per source of trials (each its
-    ``embodied_stats.held_by_palm_error`` table)."""
-    columns = {
-        name: [
-            f"{text.pct(r['held'])} of {int(r['trials'])}" if r["trials"] else ""
-            for _, r in bins.iterrows()
-        ]
-        for name, bins in sources.items()
-    }
-    edges = next(iter(sources.values()))
-    labels = [
-        f"{low:g}-{high:g}" if np.isfinite(high) else f"{low:g} or more"
-        for low, high in zip(edges["low_mm"], edges["high_mm"], strict=True)
-    ]
-    return pd.DataFrame({"palm (mm)": labels} | columns)
+def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]]:
+    """A variant's robot effects (``effects.json``): per measure and term the test, the difference
+    and the p its verdict reads (``findings.robot_effect_statistics``); its counts per cell."""
+    rows, cells = [], []
+    for measure, counted, shown in ROBOT_MEASURES:
+        named = {k.replace("ongruent_", "ong. "): c for k, c in effects[measure]["cells"].items()}
+        cells.append({"variant": label, "measure": counted})
+        cells[-1] |= {k: f"{c[counted]}/{c['trials']}" for k, c in named.items()}
+        for factor in (*FACTOR_LEVELS, INTERACTION):
+            test = dict.fromkeys(("estimate", "ci_low", "ci_high", "p", "p_holm"), np.nan)
+            test |= effects[measure]["tests"][factor]
+            reads = {"estimate": test["estimate"], "p": test["p_holm"]}  # the interaction's
+            if factor != INTERACTION:
+                reads = science.robot_effect_statistics(effects[measure], factor)
+            row = test | {"estimate": reads["estimate"], "p_reads": reads["p"], "variant": label}
+            row |= {"measure": shown, "effect": EFFECT_NAMES[factor]}
+            row["key"] = f"{measure}_{factor.replace(INTERACTION, 'interaction')}"
+            method = {"contrasts": f"t ({test.get('networks')})", "exact": "Fisher"}
+            row["test"] = method.get(test["method"], "none")
+            rows.append(row | {"verdict": robot_verdict(effects[measure], measure, factor)})
+    return rows, cells
 
 
 def _best_effects(effects: dict) -> dict:
-    """The best variant's robot effects: each verdict a ``text.Claim`` resting on its difference
-    and the p it reads (Holm within the robot's family), stored beside it."""
+    """The best variant's effects: each verdict a claim resting on its difference and p; misses."""
     out: dict[str, object] = {}
-    for measure in ("success", "contact_time"):
-        effect = effects[measure]
-        for factor in (*FACTOR_LEVELS, INTERACTION):
-            name = f"best_{measure}_{factor.replace('congruency:size', 'interaction')}"
-            test = effect["tests"][factor]
-            if factor == INTERACTION:
-                stats = {"estimate": test.get("estimate", np.nan), "p": test.get("p_holm", np.nan)}
-            else:
-                stats = science.robot_effect_statistics(effect, factor)
-            out[f"{name}_estimate"], out[f"{name}_p"] = stats["estimate"], stats["p"]
-            out[name] = text.Claim(
-                robot_verdict(effect, measure, factor),
-                (f"grasping.{name}_estimate", f"grasping.{name}_p"),
-            )
-    out["best_misses"] = (
-        "; ".join(
-            f"{name.replace('_', ' ')} {cell['trials'] - cell['held']} of {cell['trials']}"
-            for name, cell in effects["success"]["objects"].items()
-            if cell["held"] < cell["trials"]
-        )
-        or "none"
-    )
+    for r in _effect_rows(effects)[0]:
+        name = f"best_{r['key']}"
+        out |= {f"{name}_estimate": r["estimate"], f"{name}_p": r["p_reads"]}
+        out[name] = text.Claim(r["verdict"], (f"grasping.{name}_estimate", f"grasping.{name}_p"))
+    objects = effects["success"]["objects"]
+    out["best_misses"] = _misses({k: (c["held"], c["trials"]) for k, c in objects.items()})
     tests = [t for m in effects.values() for t in m["tests"].values() if "family" in t]
-    out["robot_family"] = tests[0]["family"] if tests else "none"
-    out["robot_family_size"] = tests[0]["family_size"] if tests else 0
-    return out
+    family = tests[0] if tests else {"family": "none", "family_size": 0}
+    return out | {"robot_family": family["family"], "robot_family_size": family["family_size"]}
+
+
+def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
+    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's counts
+    on the networks it was chosen on and fresh ones, the bar set against the fresh ones only."""
+    rows = confirmation.to_dict("records")
+    for r in rows:  # the bar is set against the fresh networks only
+        bar = confirmation_science.bar_verdict(r["ci_low"], r["ci_high"], science.GRASPS)
+        r |= {"variant": short_label(r), "vs_bar": bar if r["seed_set"] == "confirmation" else ""}
+    out = {"bar": science.GRASPS, "confirmed_label": "none"}
+    if not rows:
+        return out | {"confirmation_bar": "is not tested: no variant confirmed"}, pd.DataFrame()
+    first = {r["seed_set"]: r for r in reversed(rows)}  # the first confirmed variant's two rows
+    keys = ("networks", "trials", "held", "share", "ci_low", "ci_high")
+    out |= {f"{seeds}_{k}": r[k] for seeds, r in first.items() for k in keys}
+    fresh = first["confirmation"]
+    out |= {"confirmed_label": fresh["variant"], "confirmation_verdict": fresh["vs_bar"]}
+    rests = ("grasping.bar", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high")
+    bar = "includes it" if fresh["vs_bar"] == "includes" else f"lies {fresh['vs_bar']} it"
+    out["confirmation_bar"] = text.Claim(bar, rests)
+    held = {k.removesuffix("_held"): v for k, v in fresh.items() if k.endswith("_held")}
+    out["confirmation_misses"] = _misses({k: (v, fresh[f"{k}_trials"]) for k, v in held.items()})
+    return out, pd.DataFrame(rows)
 
 
 def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
-    """The robot grasps with what it learned: the variants, the confirmation of the best, how
-    precisely the arm must move, and the congruency and size effects on the body."""
+    """The robot grasps: the variants, the best confirmed, the arm's precision, the effects."""
     variants = pd.read_csv(inputs["robot_variants.csv"])
-    effects = _json(inputs["robot_effects.json"])
-    stats = _json(inputs["robot_statistics.json"])
-    tolerance = record_table(stats["tolerance"])
-    tolerated = science.tolerated_noise(tolerance)
-    exact = tolerance[tolerance["noise"] == 0].iloc[0]  # config checks: noise 0 is listed
-    own = variants[variants["run"] == OWN].iloc[0]
-    best = science.best_robot_variant(variants)
-    smallest = science.smallest_that_grasps(variants)
-    network = config["network"]
-    animated = {k: network[k] for k in ("categorisation_cue", "learning_rate_schedule")}
-    replay = stats["replay"]
+    variants["variant"] = [short_label(r) for _, r in variants.iterrows()]
+    effects, stats = _json(inputs["robot_effects.json"]), _json(inputs["robot_statistics.json"])
+    tolerated = science.tolerated_noise(tolerance := record_table(stats["tolerance"]))
+    best, smallest = science.best_robot_variant(variants), science.smallest_that_grasps(variants)
+    animated = {k: config["network"][k] for k in ("categorisation_cue", "learning_rate_schedule")}
     out = {
-        "bar": text.pct(science.GRASPS),
         "n_variants": len(variants),
-        "n_networks": int(own["networks"]),
         "grid_scope": "the whole grid (robustness=True)"
         if config["robustness"]
         else "the config's own networks and the variants config robot.default lists",
-        "own_label": short_label(own),
-        "own_grasping": text.pct(own["grasping_success"]),
-        "best_label": short_label(best),
-        "best_grasping": text.pct(best["grasping_success"]),
-        "best_categorisation": text.pct(best["categorisation_success"]),
-        "smallest_label": short_label(smallest) if smallest is not None else "none",
         "animated_label": short_label(animated | config["robot"]["animation"]["variant"]),
-        "best_palm_mm": float(best["grasping_palm_error_mm"]),
-        "own_palm_mm": float(own["grasping_palm_error_mm"]),
-        "replay_palm_mm": float(replay["palm_error_mm_median"]),
-        "replay_palm_max_mm": float(replay["palm_error_mm_max"]),
-        "replay_held": text.pct(replay["held"]),
-        "replay_trials": int(replay["trials"]),
-        "exact_held": text.pct(exact["success"]),
-        "exact_trials": int(exact["trials"]),
-        "exact_palm_mm": float(exact["palm_error_mm"]),
-        "tolerated_noise": f"{tolerated['noise']:g}" if tolerated is not None else "none tested",
-        "tolerated_palm_mm": float(tolerated["palm_error_mm"]) if tolerated is not None else np.nan,
-        "wrong_grip_grasping": int(variants["grasping_wrong_grip_hold"].sum()),
-        "wrong_grip_categorisation": int(variants["categorisation_wrong_grip_hold"].sum()),
-        "wrong_grip_trials": int(variants["trials"].sum()),
+        "smallest_label": "none" if smallest is None else smallest["variant"],
+        "tolerated_noise": "none tested" if tolerated is None else f"{tolerated['noise']:g}",
+        "tolerated_palm_mm": np.nan if tolerated is None else tolerated["palm_error_mm"],
     }
-    out |= _best_effects(effects[best["run"]])
+    own = variants[variants["run"] == OWN].to_dict("records")[0]
+    exact = tolerance[tolerance["noise"] == 0].to_dict("records")[0]  # config: noise 0 is listed
+    records = {"own": own, "best": best, "replay": stats["replay"], "exact": exact}
+    out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
+    for key in ("grasping_wrong_grip_hold", "categorisation_wrong_grip_hold", "trials"):
+        out[f"wrong_grip_{key.split('_')[0]}"] = int(variants[key].sum())
     confirmed, confirmation = _confirmation(pd.read_csv(inputs["robot_confirmation.csv"]))
-    out |= confirmed
-    rows, cells = [], []
-    for _, row in variants.iterrows():
-        r, c = _effect_rows(effects[row["run"]], short_label(row))
-        rows, cells = rows + r, cells + c
-    best_rows, best_cells = _effect_rows(effects[best["run"]])
-    table = pd.DataFrame(
-        {
-            "variant": [short_label(r) for _, r in variants.iterrows()],
-            "nets": variants["networks"],
-            "trials": variants["grasping_trials"],
-            "grasp": [text.pct(v) for v in variants["grasping_success"]],
-            "categ.": [text.pct(v) for v in variants["categorisation_success"]],
-            "touched": [text.pct(v) for v in variants["grasping_contact"]],
-            "contact (s)": [
-                f"{v:.2f}" if np.isfinite(v) else "" for v in variants["grasping_contact_time"]
-            ],
-            "palm (mm)": [f"{v:.0f}" for v in variants["grasping_palm_error_mm"]],
-            "other grip": [
-                f"{int(g)} + {int(c)}"
-                for g, c in zip(
-                    variants["grasping_wrong_grip_hold"],
-                    variants["categorisation_wrong_grip_hold"],
-                    strict=True,
-                )
-            ],
-        }
-    )
-    objects = [c.removesuffix("_success") for c in tolerance.columns if c.endswith("_success")]
-    tolerance_shown = pd.DataFrame(
-        {
-            "arm noise σ": [f"{v:g}" for v in tolerance["noise"]],
-            "trials": tolerance["trials"].astype(int),
-            "held": [text.pct(v) for v in tolerance["success"]],
-            "palm (mm)": [f"{v:.1f}" for v in tolerance["palm_error_mm"]],
-        }
-        | {o.replace("_", " "): [text.pct(v) for v in tolerance[f"{o}_success"]] for o in objects}
-    )
-    bins = stats["held_by_palm_error"]
-    palm = _palm_table(
-        {
-            "offset plan": record_table(bins["tolerance"]),
-            "demos replayed": record_table(bins["replay"]),
-            "best variant": record_table(bins["runs"][best["run"]]),
-            "own networks": record_table(bins["runs"][OWN]),
-        }
-    )
-    return out, {
-        "robot_variants": table,
-        "robot_pairs": _pairs(variants, stats["schedule_pairs"]),
+    for p in (pairs := stats["schedule_pairs"]):  # paired by network and object: McNemar
+        p["same"] = short_label(p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",))
+        p["verdict"] = "differ" if p["p"] < science.ALPHA else "not shown"
+    rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
+    return out | confirmed | _best_effects(effects[best["run"]]), {
+        "robot_variants": variants,
+        "robot_pairs": pd.DataFrame(pairs),
         "robot_confirmation": confirmation,
-        "robot_effects_best": pd.DataFrame(best_rows),
-        "robot_cells_best": pd.DataFrame(best_cells),
-        "robot_effects": pd.DataFrame(rows),
-        "robot_cells": pd.DataFrame(cells),
-        "robot_tolerance": tolerance_shown,
-        "robot_palm": palm,
+        "robot_effects": pd.DataFrame([r for effect, _ in rows for r in effect]),
+        "robot_cells": pd.DataFrame([c for _, cells in rows for c in cells]),
     }
 
 
