@@ -164,8 +164,7 @@ def anova_or_undefined(anova: dict | None, effect: str) -> str:
     )
 
 
-# The robustness page (book/robustness.md): the sweep and its cost, or a plain note that this
-# build did not run them.
+# The robustness page (book/robustness.md) and the reproduction notes' scale.
 
 ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
@@ -184,45 +183,21 @@ def growth_phrase(growth: dict) -> str:
     return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
 
 
-def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
-    """What this build trained and tested (``scale["now"]``, runs.RunPlan.scale), and what the
-    other scale does (``scale["other"]``), in MyST: the default build answers each of the
-    book's questions at the smallest scale that supports its claims, ``robustness: true`` at
-    full scale."""
-    network = config["network"]
-
-    def words(s: dict[str, int]) -> str:
-        return (
-            f"each of the {s['readings']} readings of the paper at "
-            f"{_count(s['reading_seeds'], 'seed')}; the size study's {s['size_runs']} runs "
-            f"({_count(s['size_replications'], 'replication')}); "
-            f"{_count(s['variants'], 'robot variant')} besides the config's own networks; "
-            f"{s['fresh']} fresh networks for the confirmation; "
-            + (f"the sweep's {s['sweep']} points" if s["sweep"] else "no sweep")
-        )
-
-    made = "`robustness: true`" if config["robustness"] else "`robustness: false` (the default)"
-    other = (
-        f"The full scale, `{ROBUSTNESS_COMMAND}`, builds {words(scale['other'])}."
-        if not config["robustness"]
-        else f"The default build makes {words(scale['other'])}."
-    )
-    return (
-        f"This book was built with {made}: the paper's model once ({network['networks']} "
-        f"networks at seed {config['seed']}) and its cue ablation; {words(scale['now'])}. " + other
-    )
-
-
-def _count(n: int, noun: str) -> str:
-    return f"{n} {noun}" + ("" if n == 1 else "s")
+def build_scale(scale: dict[str, dict[str, int]], config: dict) -> dict:
+    """What the default and the full scale (``robustness: true``) each build (``scale``'s "now"
+    and "other", runs.RunPlan.scale), and whether this build is the full one."""
+    full = bool(config["robustness"])
+    return {"full": full, "default": scale["other" if full else "now"]} | {
+        "full_scale": scale["now" if full else "other"]
+    }
 
 
 # ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
 # Short verdict phrases on the readings' tests, each a Claim resting on the page's statistics
 # (``stat_key``); the sentences around them are the page's own.
 
-#: The chapter's names of the measures and cue timings (its tables' legend), and of the verdicts
-#: (``readings.direction``, ``readings.difference_verdict``) where they differ from the verdict.
+#: The chapter's names of the measures, of the readings' choices (its tables' legend) and of the
+#: verdicts (``readings.direction``, ``readings.difference_verdict``) where they differ.
 MEASURE_LABELS = {
     "rmse": "RMSE",
     "rmse_correct": "correct-trial RMSE",
@@ -232,35 +207,26 @@ MEASURE_LABELS = {
     "rmse_per_grip_distance_null": "null control",
     "rmse_per_grip_distance_excess": "excess over null",
 }
-CUE_LABELS = {"first_step": "first", "all_steps": "every"}
+CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
 WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller"}
 
 
 def stat_key(row, stat: str) -> str:
     """The readings page's value of a statistic of one row of the summary or the differences."""
-    first = (
-        [row["comparison"], row["at"]]
-        if "comparison" in row
-        else [row["cue"], row["goal_response"]]
-    )
-    return "_".join([*first, row["measure"], row["effect"], stat])
+    first = ("comparison", "at") if "comparison" in row else ("cue", "goal_response")
+    return "_".join([*(row[c] for c in first), row["measure"], row["effect"], stat])
 
 
 def _rests_on(rows, stats) -> tuple[str, ...]:
     """The rows' statistics that exist (a constant cell has no p, an identical difference no
     test), as what a claim rests on."""
-    return tuple(
-        f"readings.{stat_key(r, s)}"
-        for _, r in rows.iterrows()
-        for s in stats
-        if math.isfinite(r[s])
-    )
+    found = ((r, s) for _, r in rows.iterrows() for s in stats if math.isfinite(r[s]))
+    return tuple(f"readings.{stat_key(r, s)}" for r, s in found)
 
 
-def _listing(items: list[str], none: str) -> str:
-    if not items:
-        return none
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+def _listing(items, none: str) -> str:
+    items = list(items)
+    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else (items or [none])[0]
 
 
 def reading_claims(summary) -> dict[str, Claim]:
@@ -269,61 +235,50 @@ def reading_claims(summary) -> dict[str, Claim]:
     from icub_affordance.readings import direction
 
     out = {}
-    for measure, rows in summary[summary["measure"].map(is_hypothesis)].groupby(
-        "measure", sort=False
-    ):
-        found: dict[str, set[str]] = {}
-        for _, r in rows.iterrows():
-            found.setdefault(f"{CUE_LABELS[r['cue']]} · {r['goal_response']}", set())
-            if direction(r) == "paper":
-                found[f"{CUE_LABELS[r['cue']]} · {r['goal_response']}"].add(r["effect"])
-        for name, effects in (
-            ("congruency", {"congruency"}),
-            ("size", {"size"}),
-            ("both", {"congruency", "size"}),
-        ):
-            chosen = [reading for reading, shown in found.items() if effects <= shown]
-            words = "every reading" if len(chosen) == len(found) else _listing(chosen, "no reading")
-            key = f"both_{measure}" if name == "both" else f"paper_{measure}_{name}"
+    tested = summary[summary["measure"].map(is_hypothesis)]
+    for measure, rows in tested.groupby("measure", sort=False):
+        names = rows["cue"].map(CUE_LABELS) + " · " + rows["goal_response"]
+        paper = rows.apply(direction, axis=1) == "paper"
+        shown = rows["effect"][paper].groupby(names[paper]).agg(set)
+        for effects in (("congruency",), ("size",), ("congruency", "size")):
+            chosen = [n for n in names.unique() if set(effects) <= shown.get(n, set())]
+            every = len(chosen) == names.nunique()
+            words = "every reading" if every else _listing(chosen, "no reading")
+            key = f"paper_{measure}_{effects[0]}" if len(effects) == 1 else f"both_{measure}"
             out[key] = Claim(words, _rests_on(rows, ("diff", "p_holm")))
     return out
 
 
 def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | int]:
     """The effects a comparison of readings changes, from its tests
-    (``readings.difference_verdict``): ``<prefix>_changes`` (larger or smaller, Holm),
-    ``_larger``, ``_smaller``, naming the level of the other choice where only one shows it; and
-    how many of the ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the
-    margin, Holm), identical or not shown (``<prefix>_n_equivalent``, ...)."""
+    (``readings.difference_verdict``): ``<prefix>_larger``, ``_smaller`` and ``_changes``
+    (either), naming the level of the other choice where only one shows it; and how many of its
+    ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the margin, Holm),
+    identical or not shown (``<prefix>_n_equivalent``, ...)."""
     from icub_affordance.readings import difference_verdict
 
-    rows = differences[
-        (differences["comparison"] == comparison) & differences["measure"].map(is_hypothesis)
-    ]
+    rows = differences[differences["comparison"] == comparison]
+    rows = rows[rows["measure"].map(is_hypothesis)]
     words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
-    rests = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm"))
+    rests, levels = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm")), rows["at"].nunique()
 
-    def effects(chosen) -> str:
+    def effects(chosen) -> str:  # e.g. "congruency on RMSE (fixed only) and commitment; size ..."
+        found: dict = {}
+        for _, r in chosen.iterrows():
+            on = found.setdefault(r["effect"], {})
+            on.setdefault(MEASURE_LABELS[r["measure"]], []).append(CUE_LABELS.get(r["at"], r["at"]))
         parts = []
-        for effect, group in chosen.groupby("effect", sort=False):
-            measures = [
-                MEASURE_LABELS[m]
-                + (
-                    ""
-                    if len(at) == rows["at"].nunique()
-                    else f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)"
-                )
-                for m, at in group.groupby("measure", sort=False)["at"]
-            ]
-            parts.append(f"{effect} on {_listing(measures, '')}")
+        for effect, on in found.items():
+            named = [m if len(at) == levels else f"{m} ({at[0]} only)" for m, at in on.items()]
+            parts.append(f"{effect} on {_listing(named, '')}")
         return "; ".join(parts) or "no effect"
 
     out: dict[str, Claim | int] = {f"{prefix}_n": len(rows)}
+    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), rests)
     for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
         out[f"{prefix}_n_{word.replace(' ', '_')}"] = Claim(str((words == word).sum()), rests)
-    out[f"{prefix}_larger"] = Claim(effects(rows[words == "larger"]), rests)
-    out[f"{prefix}_smaller"] = Claim(effects(rows[words == "smaller"]), rests)
-    out[f"{prefix}_changes"] = Claim(effects(rows[words.isin(["larger", "smaller"])]), rests)
+        if word in ("larger", "smaller"):
+            out[f"{prefix}_{word}"] = Claim(effects(rows[words == word]), rests)
     return out
 
 
@@ -337,7 +292,7 @@ GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
 def size_verdict(term) -> str:
     """A size-study test (positive: large objects lower) by its Holm p: "in the paper's
     direction", "reversed", "not shown" (not "none": that needs an equivalence test)."""
-    word = verdict_word({"estimate": term["estimate"], "p": term["p"], "p_holm": term["p_holm"]})
+    word = verdict_word(term)
     return {"reproduced": "in the paper's direction"}.get(word, word)
 
 
@@ -349,27 +304,6 @@ def trend_phrase(term) -> str:
     return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
-def account_phrase(slopes) -> str:
-    """What more size delivered to the maps (the paper's mechanism) does, from every cue
-    timing's declared slope."""
-    words = {trend_phrase(s) for s in slopes}
-    if len(words) > 1:
-        return "moves the size effect differently under the two cue timings"
-    return {"away from the paper's direction": "pushes the size effect against the paper",
-            "towards the paper's direction": "pushes the size effect the paper's way"}.get(
-        words.pop(), "is not shown to move the size effect")  # fmt: skip
-
-
-def removal_phrase(removed) -> str:
-    """What the removal control (no size in the input) says of the motor side, from its rows."""
-    words = {size_verdict(r) for _, r in removed.iterrows()}
-    can = "reverse the" if "reversed" in words else "give the paper's"
-    if words & {"reversed", "in the paper's direction"}:
-        return f"the movements the networks learn can {can} size effect without size in the input"
-    return "this build cannot say whether the movements alone produce a size effect"
-
-
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
-    words = [f"the {GEOMETRY_SHORT[m]}" for m in measures] or ["none of the measures"]
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+    return _listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
