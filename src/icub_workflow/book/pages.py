@@ -168,16 +168,16 @@ def _tests(table: pd.DataFrame) -> pd.DataFrame:
     estimate [interval], p, Holm p (or why none) and ``cell``, the estimate with, for a
     hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``)."""
     compared = "comparison" in table
-    first, second = ("comparison", "at") if compared else ("cue", "goal_response")
+    named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
     test = readings_science.difference_verdict if compared else readings_science.direction
     words = table.apply(test, axis=1).map(lambda word: " " + text.WORDS.get(word, word))
     words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
     low, diff, high = (table[c].map(_estimate) for c in ("ci_low", "diff", "ci_high"))
     return pd.DataFrame(
         {
-            "comparison" if compared else "reading": table[first].map(text.CUE_LABELS.get)
-            + " · "
-            + table[second].map(lambda v: text.CUE_LABELS.get(v, v)),
+            "comparison" if compared else "reading": named.replace(text.CUE_LABELS).agg(
+                " · ".join, axis=1
+            ),
             "measure": table["measure"].map(text.MEASURE_LABELS),
             "effect": table["effect"],
             "estimate [95% interval]": diff + " [" + low + ", " + high + "]",
@@ -228,30 +228,28 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     if (summary["replications"] > 1).any():
         counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
         shown["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
-    compared[f"TOST Holm p (margin), “{values['family_equivalence']}”"] = [
-        "–"  # an identical difference had no TOST
-        if not np.isfinite(r["margin"])
-        else _holm(r, "p_equivalence_holm")
-        + (f" (±{r['margin']:g})" if np.isfinite(r["p_equivalence_holm"]) else "")
-        for _, r in diffs.iterrows()
-    ]
+    tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
+        diffs["margin"].notna(), "–"
+    )
+    tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
+    compared[f"TOST Holm p (margin), “{values['family_equivalence']}”"] = tost  # none: no TOST
     study = config["readings"]
-    margins = pd.DataFrame(
+    margins = pd.DataFrame(  # each margin shown, when it was declared, and whether blind
         {"measure": text.MEASURE_LABELS[m], "margin": f"±{study['equivalence_margin'][m]:g}"}
-        | study["margin_declared"][m]
-        for m in study["equivalence_margin"]
+        | {
+            "declared in": d["commit"],
+            "its results read before": ("no", "yes")[d["results_before"]],
+        }
+        for m, d in study["margin_declared"].items()
         if m in study["measures"]
     )
-    margins["results_before"] = margins["results_before"].map({True: "yes", False: "no"})
     hypotheses = diffs["measure"].map(readings_science.is_hypothesis)
     return values, {
         "readings_matrix": _matrix(shown),
         "readings_summary": shown.drop(columns="cell"),
         "readings_verdicts": _matrix(compared[hypotheses]),
         "readings_differences": compared.drop(columns="cell"),
-        "readings_margins": margins.rename(
-            columns={"commit": "declared in", "results_before": "its results read before"}
-        ),
+        "readings_margins": margins,
     }
 
 

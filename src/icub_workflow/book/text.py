@@ -184,12 +184,9 @@ def growth_phrase(growth: dict) -> str:
 
 
 def build_scale(scale: dict[str, dict[str, int]], config: dict) -> dict:
-    """What the default and the full scale (``robustness: true``) each build (``scale``'s "now"
-    and "other", runs.RunPlan.scale), and whether this build is the full one."""
-    full = bool(config["robustness"])
-    return {"full": full, "default": scale["other" if full else "now"]} | {
-        "full_scale": scale["now" if full else "other"]
-    }
+    """What this build (``now``) and the other scale build (runs.RunPlan.scale), and whether this
+    is the full scale (``robustness: true``): the reproduction notes' table."""
+    return scale | {"full": bool(config["robustness"])}
 
 
 # ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
@@ -262,15 +259,13 @@ def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Cl
     words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
     rests, levels = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm")), rows["at"].nunique()
 
-    def effects(chosen) -> str:  # e.g. "congruency on RMSE (fixed only) and commitment; size ..."
-        found: dict = {}
-        for _, r in chosen.iterrows():
-            on = found.setdefault(r["effect"], {})
-            on.setdefault(MEASURE_LABELS[r["measure"]], []).append(CUE_LABELS.get(r["at"], r["at"]))
-        parts = []
-        for effect, on in found.items():
-            named = [m if len(at) == levels else f"{m} ({at[0]} only)" for m, at in on.items()]
-            parts.append(f"{effect} on {_listing(named, '')}")
+    def effects(chosen) -> str:
+        """E.g. "congruency on RMSE (fixed only) and commitment; size on ..."."""
+        found: dict[str, list[str]] = {}
+        for (effect, m), at in chosen.groupby(["effect", "measure"], sort=False)["at"]:
+            only = f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)" * (len(at) < levels)
+            found.setdefault(effect, []).append(MEASURE_LABELS[m] + only)
+        parts = (f"{effect} on {_listing(named, '')}" for effect, named in found.items())
         return "; ".join(parts) or "no effect"
 
     out: dict[str, Claim | int] = {f"{prefix}_n": len(rows)}
