@@ -313,3 +313,11 @@ def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers(
     points *= len(sweep["categorisation_cue"])
     assert values["points"] == points
     assert values["networks"] == points * config["network"]["networks"]
+
+
+def test_the_reproduction_notes_say_which_scale_this_build_is():
+    from icub_workflow.book.text import build_scale
+
+    scale = {"now": {"sweep": 0, "variants": 3}, "other": {"sweep": 20, "variants": 95}}
+    assert build_scale(scale, {"robustness": False}) == scale | {"full": False}
+    assert build_scale(scale, {"robustness": True})["full"] is True

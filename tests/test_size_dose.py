@@ -588,13 +588,6 @@ def test_the_size_verdict_words_follow_their_holm_tests():
     assert text.trend_phrase(row) == "away from the paper's direction"
     assert text.trend_phrase(row | {"estimate": 0.03}) == "towards the paper's direction"
     assert text.trend_phrase(row | {"p_holm": 0.3}) == "by no amount its test shows"
-    against = text.account_phrase([row, row])
-    assert against == "pushes the size effect against the paper"
-    assert "differently" in text.account_phrase([row, row | {"p_holm": 0.3}])
-    assert "not shown" in text.account_phrase([row | {"p_holm": 0.3}] * 2)
-    removed = pd.DataFrame([row, row | {"p_holm": 0.3}])
-    assert "can reverse the size effect" in text.removal_phrase(removed)
-    assert "cannot say" in text.removal_phrase(removed.assign(p_holm=0.3))
     assert text.named_measures(["demo_path_length", "demo_grip_distance"]) == (
         "the path length and the grips' distance"
     )
@@ -626,7 +619,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
 
     found, tables = chapter()
     size = found["size"]
-    assert found["claims"]["size"]["slope_trend_all_steps"] == [
+    assert found["claims"]["size"]["slope_verdict_all_steps"] == [
         "size.slope_all_steps", "size.slope_p_holm_all_steps"]  # fmt: skip
     declared = tables["size_declared"]
     assert set(declared["verdict"]) <= {"in the paper's direction", "reversed", "not shown"}
@@ -649,12 +642,12 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
         if key in found["claims"]["size"] and word in turned:
             assert flipped["size"][key] == turned[word], key
     lifted, _ = chapter(
-        slope=lambda f: f.assign(p_holm=0.5), summary=lambda f: f.assign(p_holm=0.5)
+        **dict.fromkeys(("slope", "summary", "grips"), lambda f: f.assign(p_holm=0.5))
     )
-    assert lifted["size"]["slope_trend_first_step"] == "by no amount its test shows"
-    assert lifted["size"]["account"] == "is not shown to move the size effect"
-    assert lifted["size"]["none_verdict_first_step"] == "not shown"
-    assert "cannot say" in lifted["size"]["removal_source"]
+    assert lifted["size"]["slope_verdict_first_step"] == "by no amount its test shows"
+    assert lifted["size"]["grips_verdict_all_steps"] == "by no amount its test shows"
+    for key in ("none", "removed", "equal"):
+        assert lifted["size"][f"{key}_verdict_first_step"] == "not shown", key
     unmoved, _ = chapter(motor=lambda f: f.assign(p_holm=0.5))
     assert unmoved["size"]["motor_found"] == "none of the measures"
 

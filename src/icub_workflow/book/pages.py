@@ -147,14 +147,12 @@ def _estimate(d: float) -> str:
 
 
 def _holm(row, column: str = "p_holm") -> str:
-    """A Holm p (2 significant digits), or why the row has none: it is in no family."""
+    """A Holm p (2 significant digits), or why the row has none."""
     if np.isfinite(row[column]):
         return f"{row[column]:.2g}"
-    if not readings_science.is_hypothesis(row["measure"]):
-        return (
-            "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
-        )
-    return "identical" if str(row.get("identical")) == "True" else "no variation"
+    if readings_science.is_hypothesis(row["measure"]):
+        return "identical" if str(row.get("identical")) == "True" else "no variation"
+    return "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
 
 
 def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> str:
@@ -164,47 +162,36 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
     return family
 
 
-def _label(row) -> str:
-    """A reading (``first · fixed``), or a comparison at a level of the other choice."""
-    if "comparison" in row:
-        name = "cue" if row["comparison"] == "cue_timing" else "Goal"
-        return f"{name} · {text.CUE_LABELS.get(row['at'], row['at'])}"
-    return f"{text.CUE_LABELS[row['cue']]} · {row['goal_response']}"
-
-
-def _verdicts(table: pd.DataFrame) -> pd.DataFrame:
-    """Measure and effect (rows) by reading or comparison (columns): the estimate and, for a
+def _tests(table: pd.DataFrame) -> pd.DataFrame:
+    """The readings' summary or differences as the tables show them: the reading (``first ·
+    fixed``) or comparison at a level of the other choice (``cue · fixed``), measure, effect,
+    estimate [interval], p, Holm p (or why none) and ``cell``, the estimate with, for a
     hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``)."""
-    rows: dict = {}
-    for _, r in table.iterrows():
-        cell = _estimate(r["diff"])
-        if readings_science.is_hypothesis(r["measure"]):
-            test = (
-                readings_science.difference_verdict
-                if "comparison" in r
-                else readings_science.direction
-            )
-            cell += " " + text.WORDS.get(test(r), test(r))
-        label = {"measure": text.MEASURE_LABELS[r["measure"]], "effect": r["effect"]}
-        rows.setdefault((r["measure"], r["effect"]), label)[_label(r)] = cell
-    return pd.DataFrame(list(rows.values()))
-
-
-def _numbers(table: pd.DataFrame, name: str) -> pd.DataFrame:
-    """Every row's estimate, interval, raw p and Holm p, its family in the column's name."""
+    compared = "comparison" in table
+    named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
+    test = readings_science.difference_verdict if compared else readings_science.direction
+    words = table.apply(test, axis=1).map(lambda word: " " + text.WORDS.get(word, word))
+    words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
+    low, diff, high = (table[c].map(_estimate) for c in ("ci_low", "diff", "ci_high"))
     return pd.DataFrame(
         {
-            name: table.apply(_label, axis=1),
+            "comparison" if compared else "reading": named.replace(text.CUE_LABELS).agg(
+                " · ".join, axis=1
+            ),
             "measure": table["measure"].map(text.MEASURE_LABELS),
             "effect": table["effect"],
-            "estimate [95% interval]": [
-                f"{_estimate(d)} [{_estimate(a)}, {_estimate(b)}]"
-                for d, a, b in table[["diff", "ci_low", "ci_high"]].to_numpy()
-            ],
-            "p": table["p"].map(lambda p: f"{p:.2g}" if np.isfinite(p) else "–"),
+            "estimate [95% interval]": diff + " [" + low + ", " + high + "]",
+            "p": table["p"].map(_p),
             f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
+            "cell": diff + words,
         }
     )
+
+
+def _matrix(tests: pd.DataFrame) -> pd.DataFrame:
+    """Measure and effect (rows) by reading or comparison (columns): each estimate and verdict."""
+    cells = tests.pivot_table("cell", ["measure", "effect"], tests.columns[0], "first", sort=False)
+    return cells.reset_index().rename_axis(columns=None)
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -221,14 +208,10 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
             for o, obj in enumerate(soms["objects"].tolist()):
                 for t, task in enumerate(soms["tasks"].tolist()):
                     values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
-    for table, stats in (
-        (summary, ("diff", "p", "p_holm")),
-        (diffs, ("diff", "p", "p_holm", "margin", "p_equivalence_holm")),
-    ):  # a statistic, or None where there is none (a null control's Holm p, ...)
+    for table in (summary, diffs):  # the statistics the claims rest on (None: there is none)
         for _, row in table.iterrows():
-            values |= {
-                text.stat_key(row, s): row[s] if np.isfinite(row[s]) else None for s in stats
-            }
+            for stat in (s for s in ("diff", "p_holm", "p_equivalence_holm") if s in row):
+                values[text.stat_key(row, stat)] = row[stat] if np.isfinite(row[stat]) else None
     values |= {
         "n_readings": int(summary["reading"].nunique()),
         "replications": " to ".join(map(str, sorted(set(summary["replications"])))),
@@ -241,36 +224,32 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     }
     values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
     values |= text.difference_claims(diffs, "goal_response", "goal")
-    numbers = _numbers(summary, "reading")
+    shown, compared = _tests(summary), _tests(diffs)
     if (summary["replications"] > 1).any():
         counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
-        numbers["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
-    tost = [  # a TOST's Holm p with its margin; an identical difference had no TOST
-        "–"
-        if not np.isfinite(r["margin"])
-        else _holm(r, "p_equivalence_holm")
-        + (f" (±{r['margin']:g})" if np.isfinite(r["p_equivalence_holm"]) else "")
-        for _, r in diffs.iterrows()
-    ]
-    declared, margins = (config["readings"][k] for k in ("margin_declared", "equivalence_margin"))
-    shown = [m for m in margins if m in config["readings"]["measures"]]
+        shown["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
+    tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
+        diffs["margin"].notna(), "–"
+    )
+    tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
+    compared[f"TOST Holm p (margin), “{values['family_equivalence']}”"] = tost  # none: no TOST
+    study = config["readings"]
+    margins = pd.DataFrame(  # each margin shown, when it was declared, and whether blind
+        {"measure": text.MEASURE_LABELS[m], "margin": f"±{study['equivalence_margin'][m]:g}"}
+        | {
+            "declared in": d["commit"],
+            "its results read before": ("no", "yes")[d["results_before"]],
+        }
+        for m, d in study["margin_declared"].items()
+        if m in study["measures"]
+    )
+    hypotheses = diffs["measure"].map(readings_science.is_hypothesis)
     return values, {
-        "readings_matrix": _verdicts(summary),
-        "readings_summary": numbers,
-        "readings_verdicts": _verdicts(diffs[diffs["measure"].map(readings_science.is_hypothesis)]),
-        "readings_differences": _numbers(diffs, "comparison").assign(
-            **{f"TOST Holm p (margin), “{values['family_equivalence']}”": tost}
-        ),
-        "readings_margins": pd.DataFrame(
-            {
-                "measure": [text.MEASURE_LABELS[m] for m in shown],
-                "margin": [f"±{margins[m]:g}" for m in shown],
-                "declared in": [declared[m]["commit"] for m in shown],
-                "its results read before": [
-                    "yes" if declared[m]["results_before"] else "no" for m in shown
-                ],
-            }
-        ),
+        "readings_matrix": _matrix(shown),
+        "readings_summary": shown.drop(columns="cell"),
+        "readings_verdicts": _matrix(compared[hypotheses]),
+        "readings_differences": compared.drop(columns="cell"),
+        "readings_margins": margins,
     }
 
 
@@ -760,25 +739,18 @@ def _condition(dose) -> str:
     return SIZE_CONTROLS.get(str(dose)) or f"dose {float(dose):g}"
 
 
-def _p(value: float) -> str:
-    return f"{value:.2g}" if np.isfinite(value) else "–"
-
-
-def _size_rows(rows: pd.DataFrame, verdict: bool = False, **columns) -> pd.DataFrame:
-    """Size-study tests as shown: cue, ``columns``, estimate, interval, p, Holm p, family and
-    (``verdict``: tests of the RMSE) the verdict word; a dash: no test could be made."""
-    number = "{:+.4f}".format
-    out = pd.DataFrame({"cue": rows["cue"].map(SIZE_CUES)} | columns)
-    out["estimate"] = [number(v) if np.isfinite(v) else "–" for v in rows["estimate"]]
-    out["95% CI"] = [
-        f"[{number(lo)}, {number(hi)}]" if np.isfinite(lo) else "–"
-        for lo, hi in zip(rows["ci_low"], rows["ci_high"], strict=True)
-    ]
-    out["p"], out["Holm p"] = rows["p"].map(_p), rows["p_holm"].map(_p)
-    out["family"] = rows["family"]
-    if verdict:
-        out["verdict"] = [text.size_verdict(r) for _, r in rows.iterrows()]
-    return out
+def _size_rows(rows: pd.DataFrame, **columns) -> pd.DataFrame:
+    """Size-study tests as shown: cue, ``columns``, estimate, interval, p, Holm p and family; a
+    dash: no test could be made."""
+    number = rows[["estimate", "ci_low", "ci_high"]].astype(float)
+    number = number.map("{:+.4f}".format).where(np.isfinite(number), "–")
+    interval = "[" + number["ci_low"] + ", " + number["ci_high"] + "]"
+    return pd.DataFrame(
+        {"cue": rows["cue"].map(SIZE_CUES)}
+        | columns
+        | {"estimate": number["estimate"], "95% CI": interval.where(number["ci_low"] != "–", "–")}
+        | {"p": rows["p"].map(_p), "Holm p": rows["p_holm"].map(_p), "family": rows["family"]}
+    )
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -792,86 +764,63 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         motor = pd.read_csv(inputs["size_motor.csv"], dtype={"dose": str})
     except pd.errors.EmptyDataError:  # no removal control in this build
         motor = pd.DataFrame(columns=["dose", "cue", "geometry", "estimate", "p_holm"])
-    study, cues = config["size_dose"], config["size_dose"]["categorisation_cue"]
-    top = str(float(max(study["doses"])))
+    doses = config["size_dose"]["doses"]
+    none, top = str(float(min(doses))), str(float(max(doses)))
     rmse = summary[summary["measure"] == "rmse"]
-    at_top = checks[checks["dose"] == top]
     values: dict = {
-        "doses": ", ".join(f"{d:g}" for d in study["doses"]),
+        "doses": ", ".join(f"{d:g}" for d in doses),
         "top_dose": f"{float(top):g}",
         "replications": int(summary["replications"].max()),
         "delivered_top": float(rmse.loc[rmse["dose"] == top, "delivered_dose"].mean()),
     }
-    for (shape, name), ratios in at_top.groupby(["shape", "map"])["ratio"]:
+    for (shape, name), ratios in checks[checks["dose"] == top].groupby(["shape", "map"])["ratio"]:
         values[f"ratio_{name}_{shape}"] = float(ratios.min())
     for _, row in power[np.isclose(power["effect"], 0.02)].iterrows():
         values[f"power_{row['cue']}"] = float(row["power_holm_bound"])
     arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
     rests = ("size.ratio_goal_ball", "size.ratio_goal_cube")
-    claims: dict = {"check": text.Claim("arrived" if arrived else "did not fully arrive", rests)}
-
-    def tested(key: str, cue: str, row: Mapping) -> tuple[str, ...]:
-        values[f"{key}_{cue}"] = float(row["estimate"])
-        values[f"{key}_ci_low_{cue}"] = float(row["ci_low"])
-        values[f"{key}_ci_high_{cue}"] = float(row["ci_high"])
-        values[f"{key}_p_holm_{cue}"] = float(row["p_holm"])
-        return (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
-
-    slopes = []
-    doses = {"none": str(float(min(study["doses"]))), "top": top}
-    for cue in cues:
-        for key, dose in (doses | {"removed": "removed", "equal": "equal_grips"}).items():
-            for _, row in rmse[(rmse["cue"] == cue) & (rmse["dose"] == dose)].iterrows():
-                claims[f"{key}_verdict_{cue}"] = text.Claim(
-                    text.size_verdict(row), tested(key, cue, row)
-                )
-        fit = slope[(slope["cue"] == cue) & (slope["measure"] == "rmse")]
-        slopes.append(fit := fit[fit["axis"] == "delivered"].iloc[0])
-        claims[f"slope_trend_{cue}"] = text.Claim(text.trend_phrase(fit), tested("slope", cue, fit))
-        for _, row in grips[grips["cue"] == cue].iterrows():  # demonstrated minus equal grips:
-            rests = tested("grips", cue, row)  # less distance is the opposite change
-            less = text.trend_phrase(dict(row) | {"estimate": -row["estimate"]})
-            claims[f"grips_trend_{cue}"] = text.Claim(less, rests)
-    values["slope_df"] = float(slopes[0]["df"])
-    claims["account"] = text.Claim(
-        text.account_phrase(slopes), tuple(f"size.slope_p_holm_{cue}" for cue in cues)
-    )
-    if len(removed := rmse[rmse["dose"] == "removed"]):
-        claims["removal_source"] = text.Claim(
-            text.removal_phrase(removed), tuple(f"size.removed_p_holm_{c}" for c in removed["cue"])
-        )
+    values["check"] = text.Claim("arrived" if arrived else "did not fully arrive", rests)
+    at = {"none": none, "removed": "removed", "equal": "equal_grips"}  # no size, and the controls
+    tests = {key: rmse[rmse["dose"] == dose] for key, dose in at.items()} | {"grips": grips}
+    tests["slope"] = slope[(slope["measure"] == "rmse") & (slope["axis"] == "delivered")]
+    for key, rows in tests.items():  # each test's numbers, and its verdict or trend resting on them
+        for _, row in rows.iterrows():
+            cue, stats = row["cue"], ("estimate", "ci_low", "ci_high", "p_holm")
+            values |= {f"{key}_{stat}_{cue}".replace("_estimate", ""): row[stat] for stat in stats}
+            if key == "grips":  # demonstrated minus equal grips: less distance, the opposite change
+                row = dict(row) | {"estimate": -row["estimate"]}
+            phrase = text.trend_phrase if key in ("slope", "grips") else text.size_verdict
+            rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
+            values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
     keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
     values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
     if len(motor):
         found = motor.loc[motor["p_holm"] < science.ALPHA, "geometry"].unique()
-        claims["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
+        values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
     like_size = ranked_like_size(pd.read_csv(inputs["size_geometry.csv"]))
     values["like_size"] = text.named_measures(like_size)
-    motor["cell"] = [f"{r['estimate']:+.4f} ({_p(r['p_holm'])})" for _, r in motor.iterrows()]
+    motor["cell"] = [f"{e:+.4f} ({_p(p)})" for e, p in motor[["estimate", "p_holm"]].to_numpy()]
     motor["condition"], motor["cue"] = motor["dose"].map(_condition), motor["cue"].map(SIZE_CUES)
-    tests = pd.concat(
-        [
-            rmse.assign(test="effect, " + rmse["dose"].map(_condition)),
-            slope.assign(test="slope, delivered"),
-        ]
-    )
-    tests = tests[(tests["measure"] == "rmse") & (tests.get("axis", "delivered") != "nominal")]
-    tests = tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
-    conditions = {"condition": summary["dose"].map(_condition), "measure": summary["measure"]}
-    conditions["Goal ratio"] = summary["large_small_ratio_goal"].map("{:.2f}".format)
+    rmse = rmse.assign(test="effect, " + rmse["dose"].map(_condition))
+    declared = pd.concat([rmse, tests["slope"].assign(test="slope, delivered")], ignore_index=True)
+    declared = declared.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
     relative = summary["relative_to_mean"].where(summary["measure"].isin(["rmse", "rmse_correct"]))
-    tables = {
-        "size_declared": _size_rows(tests, True, test=tests["test"]),  # declared first
-        "size_summary": _size_rows(summary, **conditions).assign(  # of an error: the RMSEs
-            **{"rel. to mean": relative.map(lambda v: f"{v:+.3f}" if np.isfinite(v) else "–")}
+    return values, {
+        "size_declared": _size_rows(declared, test=declared["test"]).assign(  # declared first
+            verdict=declared.apply(text.size_verdict, axis=1)
         ),
+        "size_summary": _size_rows(
+            summary,
+            condition=summary["dose"].map(_condition),
+            measure=summary["measure"],
+            **{"Goal ratio": summary["large_small_ratio_goal"].map("{:.2f}".format)},
+        ).assign(**{"rel. to mean": relative.map("{:+.3f}".format).where(relative.notna(), "–")}),
         "size_slope": _size_rows(slope, dose=slope["axis"], measure=slope["measure"]),
         "size_power": power,  # formatted by the page
         "size_motor": motor.pivot(index=["condition", "cue"], columns="geometry", values="cell")
         .rename(columns=text.GEOMETRY_SHORT)
         .reset_index(),
     }
-    return values | claims, tables
 
 
 def page_findings(

@@ -164,8 +164,7 @@ def anova_or_undefined(anova: dict | None, effect: str) -> str:
     )
 
 
-# The robustness page (book/robustness.md): the sweep and its cost, or a plain note that this
-# build did not run them.
+# The robustness page (book/robustness.md) and the reproduction notes' scale.
 
 ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
@@ -184,45 +183,18 @@ def growth_phrase(growth: dict) -> str:
     return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
 
 
-def build_scale(scale: dict[str, dict[str, int]], config: dict) -> str:
-    """What this build trained and tested (``scale["now"]``, runs.RunPlan.scale), and what the
-    other scale does (``scale["other"]``), in MyST: the default build answers each of the
-    book's questions at the smallest scale that supports its claims, ``robustness: true`` at
-    full scale."""
-    network = config["network"]
-
-    def words(s: dict[str, int]) -> str:
-        return (
-            f"each of the {s['readings']} readings of the paper at "
-            f"{_count(s['reading_seeds'], 'seed')}; the size study's {s['size_runs']} runs "
-            f"({_count(s['size_replications'], 'replication')}); "
-            f"{_count(s['variants'], 'robot variant')} besides the config's own networks; "
-            f"{s['fresh']} fresh networks for the confirmation; "
-            + (f"the sweep's {s['sweep']} points" if s["sweep"] else "no sweep")
-        )
-
-    made = "`robustness: true`" if config["robustness"] else "`robustness: false` (the default)"
-    other = (
-        f"The full scale, `{ROBUSTNESS_COMMAND}`, builds {words(scale['other'])}."
-        if not config["robustness"]
-        else f"The default build makes {words(scale['other'])}."
-    )
-    return (
-        f"This book was built with {made}: the paper's model once ({network['networks']} "
-        f"networks at seed {config['seed']}) and its cue ablation; {words(scale['now'])}. " + other
-    )
-
-
-def _count(n: int, noun: str) -> str:
-    return f"{n} {noun}" + ("" if n == 1 else "s")
+def build_scale(scale: dict[str, dict[str, int]], config: dict) -> dict:
+    """What this build (``now``) and the other scale build (runs.RunPlan.scale), and whether this
+    is the full scale (``robustness: true``): the reproduction notes' table."""
+    return scale | {"full": bool(config["robustness"])}
 
 
 # ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
 # Short verdict phrases on the readings' tests, each a Claim resting on the page's statistics
 # (``stat_key``); the sentences around them are the page's own.
 
-#: The chapter's names of the measures and cue timings (its tables' legend), and of the verdicts
-#: (``readings.direction``, ``readings.difference_verdict``) where they differ from the verdict.
+#: The chapter's names of the measures, of the readings' choices (its tables' legend) and of the
+#: verdicts (``readings.direction``, ``readings.difference_verdict``) where they differ.
 MEASURE_LABELS = {
     "rmse": "RMSE",
     "rmse_correct": "correct-trial RMSE",
@@ -232,35 +204,26 @@ MEASURE_LABELS = {
     "rmse_per_grip_distance_null": "null control",
     "rmse_per_grip_distance_excess": "excess over null",
 }
-CUE_LABELS = {"first_step": "first", "all_steps": "every"}
+CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
 WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller"}
 
 
 def stat_key(row, stat: str) -> str:
     """The readings page's value of a statistic of one row of the summary or the differences."""
-    first = (
-        [row["comparison"], row["at"]]
-        if "comparison" in row
-        else [row["cue"], row["goal_response"]]
-    )
-    return "_".join([*first, row["measure"], row["effect"], stat])
+    first = ("comparison", "at") if "comparison" in row else ("cue", "goal_response")
+    return "_".join([*(row[c] for c in first), row["measure"], row["effect"], stat])
 
 
 def _rests_on(rows, stats) -> tuple[str, ...]:
     """The rows' statistics that exist (a constant cell has no p, an identical difference no
     test), as what a claim rests on."""
-    return tuple(
-        f"readings.{stat_key(r, s)}"
-        for _, r in rows.iterrows()
-        for s in stats
-        if math.isfinite(r[s])
-    )
+    found = ((r, s) for _, r in rows.iterrows() for s in stats if math.isfinite(r[s]))
+    return tuple(f"readings.{stat_key(r, s)}" for r, s in found)
 
 
-def _listing(items: list[str], none: str) -> str:
-    if not items:
-        return none
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+def _listing(items, none: str) -> str:
+    items = list(items)
+    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else (items or [none])[0]
 
 
 def reading_claims(summary) -> dict[str, Claim]:
@@ -269,22 +232,16 @@ def reading_claims(summary) -> dict[str, Claim]:
     from icub_affordance.readings import direction
 
     out = {}
-    for measure, rows in summary[summary["measure"].map(is_hypothesis)].groupby(
-        "measure", sort=False
-    ):
-        found: dict[str, set[str]] = {}
-        for _, r in rows.iterrows():
-            found.setdefault(f"{CUE_LABELS[r['cue']]} · {r['goal_response']}", set())
-            if direction(r) == "paper":
-                found[f"{CUE_LABELS[r['cue']]} · {r['goal_response']}"].add(r["effect"])
-        for name, effects in (
-            ("congruency", {"congruency"}),
-            ("size", {"size"}),
-            ("both", {"congruency", "size"}),
-        ):
-            chosen = [reading for reading, shown in found.items() if effects <= shown]
-            words = "every reading" if len(chosen) == len(found) else _listing(chosen, "no reading")
-            key = f"both_{measure}" if name == "both" else f"paper_{measure}_{name}"
+    tested = summary[summary["measure"].map(is_hypothesis)]
+    for measure, rows in tested.groupby("measure", sort=False):
+        names = rows["cue"].map(CUE_LABELS) + " · " + rows["goal_response"]
+        paper = rows.apply(direction, axis=1) == "paper"
+        shown = rows["effect"][paper].groupby(names[paper]).agg(set)
+        for effects in (("congruency",), ("size",), ("congruency", "size")):
+            chosen = [n for n in names.unique() if set(effects) <= shown.get(n, set())]
+            every = len(chosen) == names.nunique()
+            words = "every reading" if every else _listing(chosen, "no reading")
+            key = f"paper_{measure}_{effects[0]}" if len(effects) == 1 else f"both_{measure}"
             rests = _rests_on(rows, ("diff", "p_holm"))
             # a measure none of whose readings could be tested (too few correct trials at a
             # small scale) states no finding: it says so, and is no claim
@@ -294,42 +251,35 @@ def reading_claims(summary) -> dict[str, Claim]:
 
 def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | str | int]:
     """The effects a comparison of readings changes, from its tests
-    (``readings.difference_verdict``): ``<prefix>_changes`` (larger or smaller, Holm),
-    ``_larger``, ``_smaller``, naming the level of the other choice where only one shows it; and
-    how many of the ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the
-    margin, Holm), identical or not shown (``<prefix>_n_equivalent``, ...)."""
+    (``readings.difference_verdict``): ``<prefix>_larger``, ``_smaller`` and ``_changes``
+    (either), naming the level of the other choice where only one shows it; and how many of its
+    ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the margin, Holm),
+    identical or not shown (``<prefix>_n_equivalent``, ...)."""
     from icub_affordance.readings import difference_verdict
 
-    rows = differences[
-        (differences["comparison"] == comparison) & differences["measure"].map(is_hypothesis)
-    ]
+    rows = differences[differences["comparison"] == comparison]
+    rows = rows[rows["measure"].map(is_hypothesis)]
     words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
-    rests = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm"))
+    rests, levels = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm")), rows["at"].nunique()
 
     def effects(chosen) -> str:
-        parts = []
-        for effect, group in chosen.groupby("effect", sort=False):
-            measures = [
-                MEASURE_LABELS[m]
-                + (
-                    ""
-                    if len(at) == rows["at"].nunique()
-                    else f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)"
-                )
-                for m, at in group.groupby("measure", sort=False)["at"]
-            ]
-            parts.append(f"{effect} on {_listing(measures, '')}")
+        """E.g. "congruency on RMSE (fixed only) and commitment; size on ..."."""
+        found: dict[str, list[str]] = {}
+        for (effect, m), at in chosen.groupby(["effect", "measure"], sort=False)["at"]:
+            only = f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)" * (len(at) < levels)
+            found.setdefault(effect, []).append(MEASURE_LABELS[m] + only)
+        parts = (f"{effect} on {_listing(named, '')}" for effect, named in found.items())
         return "; ".join(parts) or "no effect"
 
     def claim(said: str) -> Claim | str:  # with no test behind it (all identical) no claim
         return Claim(said, rests) if rests else said
 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
+    out[f"{prefix}_changes"] = claim(effects(rows[words.isin(["larger", "smaller"])]))
     for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
         out[f"{prefix}_n_{word.replace(' ', '_')}"] = claim(str((words == word).sum()))
-    out[f"{prefix}_larger"] = claim(effects(rows[words == "larger"]))
-    out[f"{prefix}_smaller"] = claim(effects(rows[words == "smaller"]))
-    out[f"{prefix}_changes"] = claim(effects(rows[words.isin(["larger", "smaller"])]))
+        if word in ("larger", "smaller"):
+            out[f"{prefix}_{word}"] = claim(effects(rows[words == word]))
     return out
 
 
@@ -343,7 +293,7 @@ GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
 def size_verdict(term) -> str:
     """A size-study test (positive: large objects lower) by its Holm p: "in the paper's
     direction", "reversed", "not shown" (not "none": that needs an equivalence test)."""
-    word = verdict_word({"estimate": term["estimate"], "p": term["p"], "p_holm": term["p_holm"]})
+    word = verdict_word(term)
     return {"reproduced": "in the paper's direction"}.get(word, word)
 
 
@@ -355,27 +305,6 @@ def trend_phrase(term) -> str:
     return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
-def account_phrase(slopes) -> str:
-    """What more size delivered to the maps (the paper's mechanism) does, from every cue
-    timing's declared slope."""
-    words = {trend_phrase(s) for s in slopes}
-    if len(words) > 1:
-        return "moves the size effect differently under the two cue timings"
-    return {"away from the paper's direction": "pushes the size effect against the paper",
-            "towards the paper's direction": "pushes the size effect the paper's way"}.get(
-        words.pop(), "is not shown to move the size effect")  # fmt: skip
-
-
-def removal_phrase(removed) -> str:
-    """What the removal control (no size in the input) says of the motor side, from its rows."""
-    words = {size_verdict(r) for _, r in removed.iterrows()}
-    can = "reverse the" if "reversed" in words else "give the paper's"
-    if words & {"reversed", "in the paper's direction"}:
-        return f"the movements the networks learn can {can} size effect without size in the input"
-    return "this build cannot say whether the movements alone produce a size effect"
-
-
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
-    words = [f"the {GEOMETRY_SHORT[m]}" for m in measures] or ["none of the measures"]
-    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+    return _listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
