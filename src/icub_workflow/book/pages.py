@@ -792,6 +792,30 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
             phrase = text.trend_phrase if key in ("slope", "grips") else text.size_verdict
             rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
             values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
+
+    def by_cue(key: str, said) -> text.Claim | str:
+        """One phrase per cue timing this build ran (a config may run one), joined."""
+        ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
+        rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
+        said = " and ".join(said(cue) for cue in ran)
+        return text.Claim(said, rests) if ran else "not run in this build"
+
+    def verdict(key: str):
+        return lambda cue: f"{values[f'{key}_verdict_{cue}'].text} ({SIZE_CUES[cue]})"
+
+    values["slope_by_cue"] = by_cue("slope", lambda cue: (
+        f"{values[f'slope_verdict_{cue}'].text} with {text.CUES[cue]} (slope "
+        f"{values[f'slope_{cue}']:+.4f} per unit of delivered dose)"))  # fmt: skip
+    for key in ("none", "equal", "removed", "grips"):
+        values[f"{key}_by_cue"] = by_cue(key, verdict(key))
+    values["grips_tests_by_cue"] = by_cue("grips", lambda cue: (
+        f"{values[f'grips_{cue}']:+.4f} (95% interval [{values[f'grips_ci_low_{cue}']:+.4f}, "
+        f"{values[f'grips_ci_high_{cue}']:+.4f}], Holm p {values[f'grips_p_holm_{cue}']:.2g}) "
+        f"with {text.CUES[cue]}"))  # fmt: skip
+    values["power_by_cue"] = " and ".join(
+        f"{values[f'power_{cue}']:.2f} ({SIZE_CUES[cue]})" for cue in SIZE_CUES
+        if f"power_{cue}" in values
+    )  # fmt: skip
     keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
     values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
     if len(motor):
