@@ -269,7 +269,7 @@ def test_the_issues_size_effect_counted_once_is_not_significant():
 def test_a_contrast_verdict_follows_its_sign_and_its_adjusted_p():
     assert verdict(effects(), "best_success_congruency") == "as in the paper"  # congruent held more
     row = rows(effects())["held", "congruency"]
-    assert row["test"] == "t (12)" and approx(row, p=0.02, p_holm=0.04)
+    assert row["test"] == "t, 12 nets" and approx(row, p=0.02, p_holm=0.04)
     flipped = effects()
     flipped["v"]["success"]["tests"]["congruency"] = contrast(+0.25, 0.02)
     assert verdict(in_family(flipped), "best_success_congruency") == "reversed"

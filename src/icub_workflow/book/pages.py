@@ -336,6 +336,10 @@ def results(anova: dict, curve: dict, cue: str) -> dict:
         out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
         out |= {f"{mode}_wrong_{key}": 100 * v for key, v in m["wrong_grip_rate"].items()}
         out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
+        cells = m["correct_rt"]["congruency"].get("cells", {})
+        out[f"{mode}_correct_cells"] = ", ".join(
+            f"{cell.replace('_', ' ')} {n}" for cell, n in cells.items()
+        )
         for effect in ("congruency", "size", "congruency:size"):
             verdict = text.shown_word if effect == "congruency:size" else text.verdict_word
             term = anova["contrasts"][mode][effect]
@@ -358,13 +362,13 @@ def discussion(anova: dict, demos: dict, cue: str) -> dict:
     tests = {
         "rt_grip": loop["correct_rt"]["congruency:size"],
         "size_in_congruent": anova["simple"]["closed_loop"]["size_in_congruent"],
-        "forced_size": forced["size"],
         "forced_grip": forced["congruency:size"],
         "forced_size_in_congruent": anova["simple"]["teacher_forced"]["size_in_congruent"],
         "forced_size_in_incongruent": anova["simple"]["teacher_forced"]["size_in_incongruent"],
     }
     for prefix, term in tests.items():
         out |= text.test_values("discussion", prefix, term, text.shown_word)
+    out |= text.test_values("discussion", "forced_size", forced["size"])  # the paper's claim
     return out
 
 
@@ -552,7 +556,7 @@ def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]
             row = test | {"estimate": reads["estimate"], "p_reads": reads["p"], "variant": label}
             row |= {"measure": shown, "effect": EFFECT_NAMES[factor]}
             row["key"] = f"{measure}_{factor.replace(INTERACTION, 'interaction')}"
-            method = {"contrasts": f"t ({test.get('networks')})", "exact": "Fisher"}
+            method = {"contrasts": f"t, {test.get('networks')} nets", "exact": "Fisher"}
             row["test"] = method.get(test["method"], "none")
             rows.append(row | {"verdict": robot_verdict(effects[measure], measure, factor)})
     return rows, cells

@@ -52,6 +52,10 @@ def _test_verdict(values: Mapping, prefix: str) -> text.Claim:
     return text.Claim(word, (f"intro.{prefix}_estimate", f"intro.{prefix}_p_holm"))
 
 
+def _pct(share: float) -> str:
+    return f"{100 * share:.1f}%"
+
+
 def _bar_position(low: float, high: float, bar: float) -> str:
     return "above" if low > bar else "below" if high < bar else "includes"
 
@@ -93,9 +97,9 @@ def scorecard(
         "results",
     )
     claims = (
-        ("congruency", "contrasts", "Congruent categorised faster: all-trial RMSE"),
+        ("congruency", "contrasts", "Congruent lower: all-trial RMSE (the paper's measure)"),
         ("congruency", "correct_rt", "Congruent faster: correct-trial RMSE (reaction time)"),
-        ("size", "contrasts", "Large categorised faster: all-trial RMSE"),
+        ("size", "contrasts", "Large lower: all-trial RMSE (the paper's measure)"),
         ("size", "correct_rt", "Large faster: correct-trial RMSE (reaction time)"),
     )
     paper = {"congruency": "congruent lower, significant", "size": "large lower, significant"}
@@ -108,7 +112,11 @@ def scorecard(
         prefix = f"score_{effect}_{'all' if outcome == 'contrasts' else 'correct'}"
         values |= _term(prefix, term)
         values[f"{prefix}_verdict"] = _test_verdict(values, prefix)
-        add(claim, paper[effect], _result(values, prefix), prefix, own_scale, "results")
+        cells = term.get("cells", {})
+        scale = own_scale if not cells else (
+            f"{networks} networks; {min(cells.values())}-{max(cells.values())} with a correct "
+            "trial per cell")  # fmt: skip
+        add(claim, paper[effect], _result(values, prefix), prefix, scale, "results")
 
     # this project's questions
     other = readings[
@@ -130,7 +138,7 @@ def scorecard(
         )
     for dose, question in (
         ("0.0", "Size effect with the maps' size difference removed"),
-        ("equal_grips", "Size effect with the grips equally far apart"),
+        ("equal_grips", "Size effect with each object's grips moved towards one distance"),
     ):
         chosen = size[
             (size["dose"].astype(str) == dose)
@@ -165,8 +173,8 @@ def scorecard(
     add(
         "The paper's networks, driving the arm, hold the object",
         "not asked",
-        f"{text.pct(own['grasping_success'])} of grasping trials "
-        f"[{text.pct(low)}, {text.pct(high)}]; bar {text.pct(bar)}",
+        f"{_pct(own['grasping_success'])} of grasping trials "
+        f"[{_pct(low)}, {_pct(high)}] (exact interval); bar {text.pct(bar)}",
         "score_robot_own",
         f"{int(own['networks'])} networks × {int(own['grasping_trials'] // own['networks'])}"
         " grasping trials",
@@ -185,8 +193,8 @@ def scorecard(
         add(
             "A larger network, chosen then confirmed on fresh seeds, holds the object",
             "not asked",
-            f"{text.pct(row['share'])} of grasping trials [{text.pct(row['ci_low'])}, "
-            f"{text.pct(row['ci_high'])}]; bar {text.pct(bar)}",
+            f"{_pct(row['share'])} of grasping trials [{_pct(row['ci_low'])}, "
+            f"{_pct(row['ci_high'])}] (clustered interval); bar {text.pct(bar)}",
             "score_robot_best",
             f"{int(row['networks'])} fresh networks × {int(row['trials'] // row['networks'])}"
             " grasping trials",
