@@ -150,6 +150,8 @@ def _holm(row, column: str = "p_holm") -> str:
     """A Holm p (2 significant digits), or why the row has none."""
     if np.isfinite(row[column]):
         return f"{row[column]:.2g}"
+    if not np.isfinite(row["diff"]):
+        return "not estimable"
     if readings_science.is_hypothesis(row["measure"]):
         return "identical" if str(row.get("identical")) == "True" else "no variation"
     return "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
@@ -172,6 +174,9 @@ def _tests(table: pd.DataFrame) -> pd.DataFrame:
     test = readings_science.difference_verdict if compared else readings_science.direction
     words = table.apply(test, axis=1).map(lambda word: " " + text.WORDS.get(word, word))
     words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
+    # no estimate at all: too few replications (or networks) answered a cell for the model to
+    # estimate the term, so it was never tested, which is not "not shown"
+    words = words.where(table["diff"].notna(), " not estimable")
     low, diff, high = (table[c].map(_estimate) for c in ("ci_low", "diff", "ci_high"))
     return pd.DataFrame(
         {
@@ -227,7 +232,7 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     shown, compared = _tests(summary), _tests(diffs)
     if (summary["replications"] > 1).any():
         counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
-        shown["paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
+        shown["significant: paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
         diffs["margin"].notna(), "–"
     )
@@ -454,6 +459,11 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     return "as in the paper" if verdict.paper_direction else "reversed"
 
 
+#: The family of a test that is in none: the cue difference at one seed, when the readings
+#: replicate it over seeds (their chapter tests it over the replications, a family of its own).
+FAMILY_NONE = "none: one test at one seed, unadjusted; the readings replicate it"
+
+
 def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None = None) -> dict:
     """A test's numbers as written (NaN where untested), its family and ``<prefix>_verdict``:
     ``text.verdict_word`` (or its ``words``), a claim resting on the estimate and adjusted p."""
@@ -530,7 +540,8 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     query = "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
     table = pd.read_csv(inputs["readings_differences.csv"])
     row = table.query(f"{query} & at == @goal_response", local_dict=config["soms"])
-    difference |= (row[["p_holm", "family"]].to_dict("records") or [{}])[0]
+    same = row[row["replications"] == 1]  # the readings' row is this very test at one seed only
+    difference |= (same[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
     out |= {"cue_difference_df": difference["df"], "cue_difference_t": difference["t"]}
     words = {"reproduced": "larger with the cue at the first step only"}
     words |= {"reversed": "larger with the cue at every step"}
@@ -626,7 +637,8 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     confirmed, confirmation = _confirmation(pd.read_csv(inputs["robot_confirmation.csv"]))
     for p in (pairs := stats["schedule_pairs"]):  # paired by network and object: McNemar
         p["same"] = short_label(p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",))
-        p["verdict"] = "differ" if p["p"] < science.ALPHA else "not shown"
+        below = "p < 0.05, unadjusted" if len(pairs) > 1 else "differ"  # several: no family
+        p["verdict"] = below if p["p"] < science.ALPHA else "not shown"
     rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
     return out | confirmed | _best_effects(effects[best["run"]]), {
         "robot_variants": variants,
