@@ -258,11 +258,6 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     }
 
 
-def _term_values(prefix: str, term: dict) -> dict:
-    """A tested term's numbers as page values (what a claim rests on)."""
-    return {f"{prefix}_estimate": term["estimate"], f"{prefix}_p": term["p"]}
-
-
 def _measure_terms(anova: dict):
     """The closed-loop tests of the paper's two effects on its measure and its two parts, as
     (key prefix, effect, test): "" the all-trials RMSE, "errors_", "rt_" the correct trials."""

@@ -33,14 +33,6 @@ def fmt_p(p: float) -> str:
     return "p < 0.001" if p < 0.001 else f"p = {p:.3f}"
 
 
-def fmt_f(effect: dict) -> str:
-    """F(df1, df2) = x.xx, p ..., partial eta squared."""
-    return (
-        f"F({effect['df1']:.0f}, {effect['df2']:.0f}) = {effect['F']:.2f}, {fmt_p(effect['p'])}, "
-        f"partial η² = {effect['eta_p2']:.2f}"
-    )
-
-
 def fmt_ci(term: dict) -> str:
     return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
 
@@ -96,14 +88,6 @@ def simple_name(name: str) -> str:
     return f"{first.removeprefix('the ')} − {second.removeprefix('the ')}"
 
 
-def direction_word(term: dict) -> str:
-    """A test's direction against the paper without claiming a reproduction (a control's or a
-    slope's): "paper's direction", "against the paper", "not shown" or "not testable"."""
-    return {"reproduced": "paper's direction", "reversed": "against the paper"}.get(
-        verdict_word(term), verdict_word(term)
-    )
-
-
 def claim_verdict(term: dict, outcome: str, effect: str) -> str:
     """The front page's verdict on one test: "reproduced" or "reversed" for the two effects the
     paper claims, on its measure or the correct trials' (its reaction-time reading); the paper
@@ -156,12 +140,6 @@ def pct(x: float) -> str:
 
 
 # The main effects: the front page, the results, the discussion and the chapter beyond the paper.
-
-
-def anova_or_undefined(anova: dict | None, effect: str) -> str:
-    return (
-        fmt_f(anova[effect]) if anova else "undefined: every network scored the same in every cell"
-    )
 
 
 # The robustness page (book/robustness.md) and the reproduction notes' scale.
