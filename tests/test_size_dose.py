@@ -580,11 +580,11 @@ def test_the_size_verdict_words_follow_their_holm_tests():
     from icub_workflow.book import text
 
     row = {"estimate": -0.03, "p": 0.001, "p_holm": 0.01}
-    assert text.size_verdict(row) == "reversed"
-    assert text.size_verdict(row | {"estimate": 0.03}) == "in the paper's direction"
+    assert text.verdict_word(row) == "reversed"
+    assert text.verdict_word(row | {"estimate": 0.03}) == "reproduced"
     # a raw p under 0.05 that Holm lifts above it: not shown, whatever the raw interval
-    assert text.size_verdict(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
-    assert text.size_verdict(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
+    assert text.verdict_word(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
+    assert text.verdict_word(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
     assert text.trend_phrase(row) == "away from the paper's direction"
     assert text.trend_phrase(row | {"estimate": 0.03}) == "towards the paper's direction"
     assert text.trend_phrase(row | {"p_holm": 0.3}) == "by no amount its test shows"
@@ -622,7 +622,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     assert found["claims"]["size"]["slope_verdict_all_steps"] == [
         "size.slope_all_steps", "size.slope_p_holm_all_steps"]  # fmt: skip
     declared = tables["size_declared"]
-    assert set(declared["verdict"]) <= {"in the paper's direction", "reversed", "not shown"}
+    assert set(declared["verdict"]) <= {"reproduced", "reversed", "not shown"}
     # the slope's interval as the analysis wrote it
     low, high = size["slope_ci_low_all_steps"], size["slope_ci_high_all_steps"]
     assert low <= size["slope_all_steps"] <= high
@@ -637,7 +637,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     flipped, _ = chapter(slope=negate, summary=negate, grips=negate)
     turned = {"away from the paper's direction": "towards the paper's direction",
               "towards the paper's direction": "away from the paper's direction"}  # fmt: skip
-    turned |= {"reversed": "in the paper's direction", "in the paper's direction": "reversed"}
+    turned |= {"reversed": "reproduced", "reproduced": "reversed"}
     for key, word in size.items():
         if key in found["claims"]["size"] and word in turned:
             assert flipped["size"][key] == turned[word], key

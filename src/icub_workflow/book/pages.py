@@ -1,10 +1,6 @@
-"""What each page of the book shows: every number, verdict, sentence and table, from the outputs.
-
-``page_findings`` reads the pipeline's outputs (by their names in the book rule's ``BOOK_DATA``)
-and returns, per page, the values the page glues (``findings.json``), and the tables it shows.
-The verdicts and statistics are the package's (``icub_affordance.findings``, ``.som``), the
-words this package's (``text``); the pages only display the result.
-"""
+"""What each page of the book shows, from the pipeline's outputs: the values a page glues
+(``findings.json``, one entry per page) and the tables it shows. Statistics and verdicts are the
+package's (``icub_affordance``); the words are ``text``'s; the pages hold the prose."""
 
 from __future__ import annotations
 
@@ -33,27 +29,15 @@ from . import text
 from .scorecard import scorecard
 
 #: The three readings of the paper's measure (``stats.OUTCOMES``), as the tables name them.
-OUTCOME_LABELS = {
-    "contrasts": "RMSE, all trials",
-    "errors": "wrong-grip rate",
-    "correct_rt": "RMSE, correct trials",
-}
-
-ANALYSES = (("two_way", "two-way (trials)"), ("repeated_measures", "repeated measures (networks)"))
-
+OUTCOME_LABELS = {"contrasts": "RMSE, all trials", "errors": "wrong-grip rate",
+                  "correct_rt": "RMSE, correct trials"}  # fmt: skip
+ANALYSES = {"two_way": "two-way (trials)", "repeated_measures": "repeated measures (networks)"}
 #: What the paper reports, beside which the comparison page sets this run's numbers.
-PAPER = {
-    "start": "about 0.3",
-    "around_2000": "about 0.05",
-    "end": "stable around 0.05",
-    "congruency": "congruent lower; significant",
-    "size": "large lower; significant",
-    "networks": "12 (6 per mapping)",
-    "learning_rate": "0.075",
-    "iterations": "12,000 (6000 + 6000)",
-    "hidden": "10",
-    "sequences": "5 (4 + 1)",
-}
+PAPER = {"start": "about 0.3", "around_2000": "about 0.05", "end": "stable around 0.05",
+         "congruency": "congruent lower; significant", "size": "large lower; significant",
+         "networks": "12 (6 per mapping)", "learning_rate": "0.075",
+         "iterations": "12,000 (6000 + 6000)", "hidden": "10",
+         "sequences": "5 (4 + 1)"}  # fmt: skip
 
 
 def _json(path) -> dict:
@@ -62,88 +46,165 @@ def _json(path) -> dict:
 
 def _curves(inputs: Mapping[str, str]) -> tuple[np.ndarray, np.ndarray]:
     """The learning curves' RMSE (networks, rows) and the iteration of each row."""
-    names = sorted(name for name in inputs if name.startswith("curves/"))
-    tables = [pd.read_csv(inputs[name]) for name in names]
+    tables = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
     return np.array([t["rmse"].to_numpy() for t in tables]), tables[0]["iteration"].to_numpy()
 
 
 def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
     """Both ANOVAs of one test mode, one row per effect (results page)."""
-    rows = []
-    for analysis, label in ANALYSES:
-        for effect, r in anova[mode][analysis].items():
-            rows.append(
-                {
-                    "analysis": label,
-                    "effect": effect,
-                    "F": r["F"],
-                    "df": f"({r['df1']:.0f}, {r['df2']:.0f})",
-                    "p": r["p"],
-                    "partial η²": r["eta_p2"],
-                }
-            )
-    return pd.DataFrame(rows)
+    return pd.DataFrame(
+        {"analysis": label, "effect": effect, "F": r["F"],
+         "df": f"({r['df1']:.0f}, {r['df2']:.0f})",
+         "p": r["p"], "partial η²": r["eta_p2"]}
+        for analysis, label in ANALYSES.items() for effect, r in anova[mode][analysis].items()
+    )  # fmt: skip
 
 
 def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
-    """Every test of one test mode, one row per measure and term (results page): the all-trials
-    RMSE's per-network contrasts and simple effects, the wrong-grip rate's and the correct-trial
-    RMSE's within terms; each with its family and its p adjusted within it (the families are
-    whole across the two modes' tables)."""
+    """Every test of one test mode, one row per measure and term, with its family and its p
+    adjusted within it (the families are whole across the two modes' tables)."""
     rmse = OUTCOME_LABELS["contrasts"]
     sources = (
         [(rmse, anova["contrasts"][mode][t], text.term_name(t)) for t in TERMS]
-        + [
-            (OUTCOME_LABELS[o], anova[mode][o][t], text.term_name(t))
-            for o in ("errors", "correct_rt")
-            for t in WITHIN
-        ]
+        + [(OUTCOME_LABELS[o], anova[mode][o][t], text.term_name(t))
+           for o in ("errors", "correct_rt") for t in WITHIN]
         + [(rmse, term, text.simple_name(name)) for name, term in anova["simple"][mode].items()]
-    )
+    )  # fmt: skip
     return pd.DataFrame(
-        [
-            {
-                "measure": label,
-                "term": name,
-                "estimate": test["estimate"],
-                "95% interval": text.fmt_ci(test),
-                "t": test["t"],
-                "df": test["df"],
-                "p": test["p"],
-                "family": test["family"],
-                "p (Holm, within its family)": test["p_holm"],
-            }
-            for label, test, name in sources
-        ]
-    )
+        {"measure": label, "term": name, "estimate": t["estimate"],
+         "95% interval": text.fmt_ci(t), "t": t["t"], "df": t["df"], "p": t["p"],
+         "family": t["family"], "p (Holm, within its family)": t["p_holm"]}
+        for label, t, name in sources
+    )  # fmt: skip
 
 
 def object_means(measures: dict) -> pd.DataFrame:
-    """Per mapping and object: the mean RMSE over networks of categorisation trials, in both test
-    modes (``eval/measures.json``; results page)."""
+    """Per mapping and object: the mean RMSE over networks, in both test modes."""
     closed, forced = (measures[mode]["rmse"]["object_means"] for mode in MODES)
     return pd.DataFrame(
-        [
-            {
-                "mapping": key.split("_", 1)[0],
-                "object": key.split("_", 1)[1].replace("_", " "),
-                "congruency": row["congruency"],
-                "size": row["size"],
-                "networks": row["n_networks"],
-                "closed loop": f"{row['mean']:.4f} (sd {row['sd']:.4f})",
-                "teacher forced": f"{forced[key]['mean']:.4f} (sd {forced[key]['sd']:.4f})",
-            }
-            for key, row in closed.items()
-        ]
-    )
+        {"mapping": key.split("_", 1)[0], "object": key.split("_", 1)[1].replace("_", " "),
+         "congruency": row["congruency"], "size": row["size"], "networks": row["n_networks"],
+         "closed loop": f"{row['mean']:.4f} (sd {row['sd']:.4f})",
+         "teacher forced": f"{forced[key]['mean']:.4f} (sd {forced[key]['sd']:.4f})"}
+        for key, row in closed.items()
+    )  # fmt: skip
+
+
+def headline(anova: dict) -> pd.DataFrame:
+    """The front page's table: the paper's two effects and the required grip (closed loop) on
+    the paper's measure and its two parts, each with a verdict word (``text.claim_verdict``)."""
+    closed = {"contrasts": anova["contrasts"]["closed_loop"]}
+    closed |= {o: anova["closed_loop"][o] for o in ("errors", "correct_rt")}
+    return pd.DataFrame(
+        {"measure": OUTCOME_LABELS[o], "effect": text.term_name(e),
+         "estimate [95% interval]": f"{t['estimate']:+.4f} {text.fmt_ci(t)}", "df": t["df"],
+         "p": t["p"], "family": t["family"], "Holm p": t["p_holm"],
+         "verdict": text.claim_verdict(t, o, e)}
+        for o, tests in closed.items() for e in ("congruency", "size", "congruency:size")
+        for t in [tests[e]]
+    )  # fmt: skip
+
+
+def _main_effects(anova: dict, page: str, verdicts: Mapping[str, object]) -> dict:
+    """The closed-loop tests of the paper's two effects on its measure (``<effect>_``), the
+    wrong-grip rate (``errors_``) and the correct trials (``rt_``), with the verdicts named."""
+    out = {}
+    for effect in ("congruency", "size"):
+        for prefix, term in (("", anova["contrasts"]["closed_loop"][effect]),
+                             ("errors_", anova["closed_loop"]["errors"][effect]),
+                             ("rt_", anova["closed_loop"]["correct_rt"][effect])):  # fmt: skip
+            out |= text.test_values(page, f"{prefix}{effect}", term, verdicts[prefix])
+    return out
+
+
+def intro(anova: dict) -> dict:
+    wrong = science.wrong_grip_by_congruency(anova["closed_loop"]["wrong_grip_rate"])
+    out = {"n_networks": anova["closed_loop"]["n_networks"]}
+    out |= {f"wrong_{k}": v for k, v in wrong.items()}
+    verdicts = {prefix: lambda t, o=outcome: text.claim_verdict(t, o, "")
+                for prefix, outcome in (("", "contrasts"), ("errors_", "errors"),
+                                        ("rt_", "correct_rt"))}  # fmt: skip
+    return out | _main_effects(anova, "intro", verdicts)
+
+
+def results(anova: dict, curve: dict, cue: str) -> dict:
+    out = {"rmse_start": curve["start"], "rmse_2000": curve["around_at"], "at_2000": curve["at"],
+           "rmse_phase1_end": curve["phase1_end"], "rmse_end": curve["end"],
+           "n_networks": curve["n_networks"], "cue": text.CUES[cue],
+           "df": anova["contrasts"]["closed_loop"]["congruency"]["df"]}  # fmt: skip
+    for mode in MODES:
+        m = anova[mode]
+        out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
+        out |= {f"{mode}_wrong_{key}": 100 * v for key, v in m["wrong_grip_rate"].items()}
+        out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
+        cells = m["correct_rt"]["congruency"].get("cells", {}).items()
+        out[f"{mode}_correct_cells"] = ", ".join(f"{c.replace('_', ' ')} {n}" for c, n in cells)
+        for effect, name in (("congruency", "congruency"), ("size", "size"),
+                             ("congruency:size", "grip")):  # fmt: skip
+            verdict = text.shown_word if name == "grip" else text.verdict_word
+            out |= text.test_values("results", f"{mode}_{name}",
+                                    anova["contrasts"][mode][effect], verdict)  # fmt: skip
+    return out
+
+
+def discussion(anova: dict, demos: dict, cue: str) -> dict:
+    """The paper's two effects on its measure and its two parts (closed loop), the required
+    grip, the simple effects by cell, and the teacher-forced size terms."""
+    gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
+    loop, forced = anova["closed_loop"], anova["contrasts"]["teacher_forced"]
+    simple = {mode: anova["simple"][mode] for mode in MODES}
+    out = {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"], "cue": cue}
+    out |= {f"wrong_{k}": v for k, v in
+            science.wrong_grip_by_congruency(loop["wrong_grip_rate"]).items()}  # fmt: skip
+    verdicts = {"": text.verdict_word, "errors_": text.shown_word, "rt_": text.verdict_word}
+    out |= _main_effects(anova, "discussion", verdicts)
+    for prefix, term in (
+        ("rt_grip", loop["correct_rt"]["congruency:size"]),
+        ("size_in_congruent", simple["closed_loop"]["size_in_congruent"]),
+        ("forced_grip", forced["congruency:size"]),
+        ("forced_size_in_congruent", simple["teacher_forced"]["size_in_congruent"]),
+        ("forced_size_in_incongruent", simple["teacher_forced"]["size_in_incongruent"]),
+    ):
+        out |= text.test_values("discussion", prefix, term, text.shown_word)
+    return out | text.test_values("discussion", "forced_size", forced["size"])  # the paper's
+
+
+def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
+    """The paper's numbers beside this run's (closed loop, per-network contrasts)."""
+    net, m, n = config["network"], anova["closed_loop"]["means"], anova["closed_loop"]["n_networks"]
+
+    def effect(name: str) -> str:
+        first, second = science.PAPER_ORDER[name]
+        lower = first if m[first] < m[second] else second
+        return (
+            f"closed loop, {lower} lower: {first} {m[first]:.4f}, {second} {m[second]:.4f}; "
+            f"per-network contrast {text.fmt_term(anova['contrasts']['closed_loop'][name])}"
+        )
+
+    at, seqs, first = curve["at"], config["demos"]["sequences"], net["phase1_iterations"]
+    rows = [
+        ("RMSE at the start of training", "start", f"{curve['start']:.3f} (first 10 iterations)"),
+        ("RMSE after about 2000 iterations", "around_2000",
+         f"{curve['around_at']:.3f} (iterations {at - 100}-{at + 100})"),
+        ("RMSE afterwards", "end", f"{curve['end']:.3f} (last 500 iterations)"),
+        ("congruent vs incongruent", "congruency", effect("congruency")),
+        ("large vs small objects", "size", effect("size")),
+        ("networks", "networks", f"{n} ({n // 2} per mapping)"),
+        ("learning rate", "learning_rate", f"{net['learning_rate']}"),
+        ("iterations", "iterations",
+         f"{net['iterations']:,} ({first} + {net['iterations'] - first})"),
+        ("hidden units", "hidden", f"{net['hidden']}"),
+        ("sequences per object (train + test)", "sequences", f"{seqs} ({seqs - 1} + 1)"),
+    ]  # fmt: skip
+    return pd.DataFrame([(quantity, PAPER[key], run) for quantity, key, run in rows],
+                        columns=["quantity", "paper", "this run"])  # fmt: skip
+
+
+# -- which reading reproduces the paper ---------------------------------------------------------
 
 
 def _p(p: float) -> str:
     return f"{p:.2g}" if np.isfinite(p) else "–"
-
-
-def _estimate(d: float) -> str:
-    return np.format_float_positional(d, 3, fractional=False, sign=True) if d else "0"
 
 
 def _holm(row, column: str = "p_holm") -> str:
@@ -165,32 +226,28 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
 
 
 def _tests(table: pd.DataFrame) -> pd.DataFrame:
-    """The readings' summary or differences as the tables show them: the reading (``first ·
-    fixed``) or comparison at a level of the other choice (``cue · fixed``), measure, effect,
-    estimate [interval], p, Holm p (or why none) and ``cell``, the estimate with, for a
-    hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``)."""
+    """The readings' summary or differences as the tables show them, with ``cell``: the estimate
+    and, for a hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``);
+    no estimate: too few replications answered the cell, never tested, which is not "not shown"."""
     compared = "comparison" in table
-    named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
     test = readings_science.difference_verdict if compared else readings_science.direction
     words = table.apply(test, axis=1).map(lambda word: " " + text.WORDS.get(word, word))
     words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
-    # no estimate at all: too few replications (or networks) answered a cell for the model to
-    # estimate the term, so it was never tested, which is not "not shown"
     words = words.where(table["diff"].notna(), " not estimable")
-    low, diff, high = (table[c].map(_estimate) for c in ("ci_low", "diff", "ci_high"))
-    return pd.DataFrame(
-        {
-            "comparison" if compared else "reading": named.replace(text.CUE_LABELS).agg(
-                " · ".join, axis=1
-            ),
-            "measure": table["measure"].map(text.MEASURE_LABELS),
-            "effect": table["effect"],
-            "estimate [95% interval]": diff + " [" + low + ", " + high + "]",
-            "p": table["p"].map(_p),
-            f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
-            "cell": diff + words,
-        }
+    low, diff, high = (
+        table[c].map(
+            lambda d: np.format_float_positional(d, 3, fractional=False, sign=True) if d else "0"
+        )
+        for c in ("ci_low", "diff", "ci_high")
     )
+    named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
+    return pd.DataFrame({
+        "comparison" if compared else "reading": named.replace(text.CUE_LABELS).agg(
+            " · ".join, axis=1),
+        "measure": table["measure"].map(text.MEASURE_LABELS), "effect": table["effect"],
+        "estimate [95% interval]": diff + " [" + low + ", " + high + "]",
+        "p": table["p"].map(_p), f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
+        "cell": diff + words})  # fmt: skip
 
 
 def _matrix(tests: pd.DataFrame) -> pd.DataFrame:
@@ -201,18 +258,15 @@ def _matrix(tests: pd.DataFrame) -> pd.DataFrame:
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The readings chapter: the Goal map's clusters under each response, the statistics of the
-    readings x measures matrix and of the differences between readings, the verdict phrases on
-    them (``text.reading_claims``, ``text.difference_claims``), and the tables: the matrix and
-    the differences with their verdicts, every number of both (folded), the margins."""
+    readings and of their differences, the verdict phrases on them, and the tables."""
     summary = pd.read_csv(inputs["readings_summary.csv"])
     diffs = pd.read_csv(inputs["readings_differences.csv"], keep_default_na=False, na_values=[""])
     values = {}
     for response, name in (("fixed", "soms.npz"), ("grows", "readings_grows_soms.npz")):
-        if name in inputs:
-            soms = load_npz(inputs[name])
-            for o, obj in enumerate(soms["objects"].tolist()):
-                for t, task in enumerate(soms["tasks"].tolist()):
-                    values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
+        soms = load_npz(inputs[name]) if name in inputs else None
+        for o, obj in enumerate([] if soms is None else soms["objects"].tolist()):
+            for t, task in enumerate(soms["tasks"].tolist()):
+                values[f"goal_{response}_{obj}_{task}"] = active_units(soms["goal_act"][o, t])
     for table in (summary, diffs):  # the statistics the claims rest on (None: there is none)
         for _, row in table.iterrows():
             for stat in (s for s in ("diff", "p_holm", "p_equivalence_holm") if s in row):
@@ -223,10 +277,9 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "n_hypotheses": int(np.isfinite(summary["p_holm"]).sum()),
         "n_differences": int(np.isfinite(diffs["p_holm"]).sum()),
         "n_equivalence": int(np.isfinite(diffs["p_equivalence_holm"]).sum()),
-        "family": _family(summary),
-        "family_differences": _family(diffs),
+        "family": _family(summary), "family_differences": _family(diffs),
         "family_equivalence": _family(diffs, "family_equivalence", "p_equivalence_holm"),
-    }
+    }  # fmt: skip
     values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
     values |= text.difference_claims(diffs, "goal_response", "goal")
     shown, compared = _tests(summary), _tests(diffs)
@@ -234,197 +287,33 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
         shown["significant: paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
-        diffs["margin"].notna(), "–"
-    )
+        diffs["margin"].notna(), "–")  # fmt: skip
     tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
     compared[f"TOST Holm p (margin), “{values['family_equivalence']}”"] = tost  # none: no TOST
     study = config["readings"]
     margins = pd.DataFrame(  # each margin shown, when it was declared, and whether blind
-        {"measure": text.MEASURE_LABELS[m], "margin": f"±{study['equivalence_margin'][m]:g}"}
-        | {
-            "declared in": d["commit"],
-            "its results read before": ("no", "yes")[d["results_before"]],
-        }
-        for m, d in study["margin_declared"].items()
-        if m in study["measures"]
-    )
+        {"measure": text.MEASURE_LABELS[m], "margin": f"±{study['equivalence_margin'][m]:g}",
+         "declared in": d["commit"], "its results read before": ("no", "yes")[d["results_before"]]}
+        for m, d in study["margin_declared"].items() if m in study["measures"]
+    )  # fmt: skip
     hypotheses = diffs["measure"].map(readings_science.is_hypothesis)
     return values, {
-        "readings_matrix": _matrix(shown),
-        "readings_summary": shown.drop(columns="cell"),
+        "readings_matrix": _matrix(shown), "readings_summary": shown.drop(columns="cell"),
         "readings_verdicts": _matrix(compared[hypotheses]),
-        "readings_differences": compared.drop(columns="cell"),
-        "readings_margins": margins,
-    }
-
-
-def _measure_terms(anova: dict):
-    """The closed-loop tests of the paper's two effects on its measure and its two parts, as
-    (key prefix, effect, test): "" the all-trials RMSE, "errors_", "rt_" the correct trials."""
-    loop = anova["closed_loop"]
-    for effect in ("congruency", "size"):
-        yield "", effect, anova["contrasts"]["closed_loop"][effect]
-        yield "errors_", effect, loop["errors"][effect]
-        yield "rt_", effect, loop["correct_rt"][effect]
-
-
-def headline(anova: dict) -> pd.DataFrame:
-    """The front page's table: the paper's two effects (closed loop) on the paper's measure and
-    its two parts, each with its test, its family, its p adjusted within it and a verdict word
-    (``text.verdict_word``)."""
-    closed = anova["closed_loop"]
-    sources = {"contrasts": anova["contrasts"]["closed_loop"]} | {
-        o: closed[o] for o in ("errors", "correct_rt")
-    }
-    rows = []
-    for outcome, tests in sources.items():
-        for effect in ("congruency", "size", "congruency:size"):
-            term = tests[effect]
-            rows.append(
-                {
-                    "measure": OUTCOME_LABELS[outcome],
-                    "effect": text.term_name(effect),
-                    "estimate [95% interval]": f"{term['estimate']:+.4f} {text.fmt_ci(term)}",
-                    "df": term["df"],
-                    "p": term["p"],
-                    "family": term["family"],
-                    "Holm p": term["p_holm"],
-                    "verdict": text.claim_verdict(term, outcome, effect),
-                }
-            )
-    return pd.DataFrame(rows)
-
-
-def intro(anova: dict) -> dict:
-    closed = anova["closed_loop"]
-    means = closed["means"]
-    wrong = science.wrong_grip_by_congruency(closed["wrong_grip_rate"])
-    out = {
-        "n_networks": closed["n_networks"],
-        "cong": means["congruent"],
-        "incong": means["incongruent"],
-        "large": means["large"],
-        "small": means["small"],
-        "wrong_congruent": wrong["congruent"],
-        "wrong_incongruent": wrong["incongruent"],
-    }
-    for prefix, effect, term in _measure_terms(anova):
-        outcome = {"": "contrasts", "errors_": "errors", "rt_": "correct_rt"}[prefix]
-        out |= text.test_values(
-            "intro",
-            f"{prefix}{effect}",
-            term,
-            lambda t, o=outcome, e=effect: text.claim_verdict(t, o, e),
-        )
-    return out
-
-
-def results(anova: dict, curve: dict, cue: str) -> dict:
-    out = {
-        "rmse_start": curve["start"],
-        "rmse_2000": curve["around_at"],
-        "at_2000": curve["at"],
-        "rmse_phase1_end": curve["phase1_end"],
-        "rmse_end": curve["end"],
-        "n_networks": curve["n_networks"],
-        "n_trials": anova["closed_loop"]["n_trials"],
-        "df": anova["contrasts"]["closed_loop"]["congruency"]["df"],
-        "cue": text.CUES[cue],
-    }
-    for mode in MODES:
-        m = anova[mode]
-        out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
-        out |= {f"{mode}_wrong_{key}": 100 * v for key, v in m["wrong_grip_rate"].items()}
-        out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
-        cells = m["correct_rt"]["congruency"].get("cells", {})
-        out[f"{mode}_correct_cells"] = ", ".join(
-            f"{cell.replace('_', ' ')} {n}" for cell, n in cells.items()
-        )
-        for effect in ("congruency", "size", "congruency:size"):
-            verdict = text.shown_word if effect == "congruency:size" else text.verdict_word
-            term = anova["contrasts"][mode][effect]
-            name = f"{mode}_{effect.replace('congruency:size', 'grip')}"
-            out |= text.test_values("results", name, term, verdict)
-    return out
-
-
-def discussion(anova: dict, demos: dict, cue: str) -> dict:
-    """The discussion's tests: the paper's two effects on its measure and its two parts (closed
-    loop), the required grip, the simple effects by cell, and the teacher-forced size terms."""
-    gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
-    loop, forced = anova["closed_loop"], anova["contrasts"]["teacher_forced"]
-    wrong = science.wrong_grip_by_congruency(loop["wrong_grip_rate"])
-    out = {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"], "cue": cue}
-    out |= {f"wrong_{k}": v for k, v in wrong.items()}
-    for prefix, effect, term in _measure_terms(anova):
-        verdict = text.verdict_word if prefix != "errors_" else text.shown_word
-        out |= text.test_values("discussion", f"{prefix}{effect}", term, verdict)
-    tests = {
-        "rt_grip": loop["correct_rt"]["congruency:size"],
-        "size_in_congruent": anova["simple"]["closed_loop"]["size_in_congruent"],
-        "forced_grip": forced["congruency:size"],
-        "forced_size_in_congruent": anova["simple"]["teacher_forced"]["size_in_congruent"],
-        "forced_size_in_incongruent": anova["simple"]["teacher_forced"]["size_in_incongruent"],
-    }
-    for prefix, term in tests.items():
-        out |= text.test_values("discussion", prefix, term, text.shown_word)
-    out |= text.test_values("discussion", "forced_size", forced["size"])  # the paper's claim
-    return out
-
-
-def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
-    """The paper's numbers beside this run's (closed loop, repeated-measures ANOVA)."""
-    net, closed = config["network"], anova["closed_loop"]
-    m = closed["means"]
-
-    def effect(name: str) -> str:
-        first, second = science.PAPER_ORDER[name]
-        lower = first if m[first] < m[second] else second
-        return (
-            f"closed loop, {lower} lower: {first} {m[first]:.4f}, {second} {m[second]:.4f}; "
-            "per-network contrast "
-            f"{text.fmt_term(anova['contrasts']['closed_loop'][name])}"
-        )
-
-    at, n = curve["at"], closed["n_networks"]
-    sequences = config["demos"]["sequences"]
-    rows = [
-        ("RMSE at the start of training", "start", f"{curve['start']:.3f} (first 10 iterations)"),
-        (
-            "RMSE after about 2000 iterations",
-            "around_2000",
-            f"{curve['around_at']:.3f} (iterations {at - 100}-{at + 100})",
-        ),
-        ("RMSE afterwards", "end", f"{curve['end']:.3f} (last 500 iterations)"),
-        ("congruent vs incongruent", "congruency", effect("congruency")),
-        ("large vs small objects", "size", effect("size")),
-        ("networks", "networks", f"{n} ({n // 2} per mapping)"),
-        ("learning rate", "learning_rate", f"{net['learning_rate']}"),
-        (
-            "iterations",
-            "iterations",
-            f"{net['iterations']:,} ({net['phase1_iterations']} + "
-            f"{net['iterations'] - net['phase1_iterations']})",
-        ),
-        ("hidden units", "hidden", f"{net['hidden']}"),
-        ("sequences per object (train + test)", "sequences", f"{sequences} ({sequences - 1} + 1)"),
-    ]
-    return pd.DataFrame(
-        [(quantity, PAPER[key], run) for quantity, key, run in rows],
-        columns=["quantity", "paper", "this run"],
-    )
+        "readings_differences": compared.drop(columns="cell"), "readings_margins": margins,
+    }  # fmt: skip
 
 
 # -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------
 
 #: A variant's settings in the robot tables' short words (the grasping chapter's legend).
-SHORT = {
-    "categorisation_cue": {"first_step": "first", "all_steps": "all"},
-    "target": {"sensed": "sens", "commands": "cmd"},
-    "learning_rate_schedule": {"constant": "const", "anneal": "anneal"},
-}
+SHORT = {"categorisation_cue": {"first_step": "first", "all_steps": "all"},
+         "target": {"sensed": "sens", "commands": "cmd"},
+         "learning_rate_schedule": {"constant": "const", "anneal": "anneal"}}  # fmt: skip
 ROBOT_MEASURES = (("success", "held", "held"), ("contact_time", "touched", "contact, s"))
 EFFECT_NAMES = {"congruency": "congruency", "size": "size", INTERACTION: "cong. × size"}
+#: The family of the cue difference at one seed, when the readings replicate it over seeds.
+FAMILY_NONE = "none: one test at one seed, unadjusted; the readings replicate it"
 
 
 def short_label(row: Mapping, leave_out: tuple[str, ...] = ()) -> str:
@@ -445,22 +334,18 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     """One robot effect against the paper (``findings.robot_effect_verdict``, Holm within the
     robot's family); the congruency x size term, with no paper direction, is "shown" or not."""
     test = effect["tests"][factor]
-    if factor == INTERACTION:  # no paper direction: shown or not, where a contrast tests it
-        shown = test["method"] == "contrasts" and test["p_holm"] < science.ALPHA
-        return "not tested" if test["method"] != "contrasts" else "shown" if shown else "not shown"
+    if factor == INTERACTION:
+        if test["method"] != "contrasts":
+            return "not tested"
+        return "shown" if test["p_holm"] < science.ALPHA else "not shown"
     verdict = science.robot_effect_verdict(effect, measure, factor)
     if verdict is None or not verdict.significant:
         return "not estimable" if verdict is None else "not shown"
-    return "as in the paper" if verdict.paper_direction else "reversed"
-
-
-#: The family of a test that is in none: the cue difference at one seed, when the readings
-#: replicate it over seeds (their chapter tests it over the replications, a family of its own).
-FAMILY_NONE = "none: one test at one seed, unadjusted; the readings replicate it"
+    return "reproduced" if verdict.paper_direction else "reversed"
 
 
 def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None = None) -> dict:
-    """A test's numbers as written (NaN where untested), its family and ``<prefix>_verdict``:
+    """A test's numbers (NaN where untested), its family and ``<prefix>_verdict``:
     ``text.verdict_word`` (or its ``words``), a claim resting on the estimate and adjusted p."""
     out = {f"{prefix}_{k}": term.get(k, np.nan) for k in ("estimate", "ci_low", "ci_high", "p")}
     out[f"{prefix}_p_holm"] = term.get("p_holm", out[f"{prefix}_p"])
@@ -486,22 +371,20 @@ def _robot_values(emb: dict, own: dict) -> dict:
     records |= {"suc": suc["means"], "err": err["means"]}
     records["suc_diff"] = suc["incongruent_minus_congruent"]
     out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
-    success = own["success"]
-    stats = science.robot_effect_statistics(success, "congruency")
+    stats = science.robot_effect_statistics(own["success"], "congruency")
     out |= {f"emb_success_{k}": v for k, v in stats.items()}
-    out["emb_success_family"] = success["tests"]["congruency"].get("family", "none")
-    rests = ("beyond.emb_success_estimate", "beyond.emb_success_p")
-    out["emb_success_verdict"] = text.Claim(robot_verdict(success, "success", "congruency"), rests)
-    floor = "near the floor, so it can say little about congruency"
-    floor = floor if science.robot_verdicts(emb)["at_floor"] else "clear of the floor"
-    out["emb_floor"] = text.Claim(floor, ("beyond.emb_categorisation_success",))
-    ceiling = "below" if science.robot_verdicts(emb)["below_ceiling"] else "at or above"
-    rests = ("beyond.emb_success_rate", "beyond.replay_success_sensed_postures")
-    out["emb_ceiling"] = text.Claim(ceiling, rests)
+    out["emb_success_family"] = own["success"]["tests"]["congruency"].get("family", "none")
+    out["emb_success_verdict"] = text.Claim(
+        robot_verdict(own["success"], "success", "congruency"),
+        ("beyond.emb_success_estimate", "beyond.emb_success_p"))  # fmt: skip
+    floor = science.robot_verdicts(emb)["at_floor"]
+    out["emb_floor"] = text.Claim(
+        "near the floor, so it can say little about congruency" if floor else "clear of the floor",
+        ("beyond.emb_categorisation_success",))  # fmt: skip
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
+        words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
+                 "not shown": "not shown to differ"}  # fmt: skip
         term = (err["contrasts"] or {}).get(effect) or {}
-        words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}"}
-        words["not shown"] = "not shown to differ"
         out |= tested("beyond", f"emb_final_error_{effect}", term, words)
     return out
 
@@ -511,44 +394,43 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     cues = {"main": config["network"]["categorisation_cue"], "ablation": ablation_cue}
     first = _json(inputs["divergence.json"])["first_divergent_step"]
     out = {f"{name}_cue_phrase": text.CUES[cue] for name, cue in cues.items()} | {
-        "n_predicted": config["demos"]["steps"] - 1,
-        "n_hidden": config["network"]["hidden"],
+        "n_predicted": config["demos"]["steps"] - 1, "n_hidden": config["network"]["hidden"],
         "pca_explained": science.explained_by_two_axes(pd.read_csv(inputs["hidden_explained.csv"])),
         "div_first_step": np.nan if first is None else first,
         "div_verdict": divergence_verdict(first),
-    }
-    own = _json(inputs["robot_effects.json"])[OWN]
-    out |= _robot_values(_json(inputs["embodied_analysis.json"]), own)
+    }  # fmt: skip
+    out |= _robot_values(_json(inputs["embodied_analysis.json"]),
+                         _json(inputs["robot_effects.json"])[OWN])  # fmt: skip
     anova, effects = [], []
     for name, cue in cues.items():
         result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])
-        for mode in MODES:
-            terms = result[mode]["repeated_measures"].items()
-            anova += [{"cue": cue, "test": mode, "effect": e} | term for e, term in terms]
-        out |= tested("beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"])
-        out |= {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
-        mine = {k.removeprefix(f"cue_{name}_"): v for k, v in out.items() if f"cue_{name}_" in k}
+        anova += [{"cue": cue, "test": mode, "effect": e} | term for mode in MODES
+                  for e, term in result[mode]["repeated_measures"].items()]  # fmt: skip
+        mine = tested("beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"])
+        mine |= {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
+        out |= mine
+        mine = {k.removeprefix(f"cue_{name}_"): v for k, v in mine.items()}
         effects.append({"run": name, "cue": cue} | mine | {"verdict": mine["verdict"].text})
     # the test of the difference, first step only minus every step, paired by network; its
-    # adjusted p is the readings' table's, within that table's family
+    # adjusted p is the readings' table's where that row is this very test (one replication)
     difference = _json(inputs["cue_difference.json"])["congruency"]
-    query = "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
     table = pd.read_csv(inputs["readings_differences.csv"])
-    row = table.query(f"{query} & at == @goal_response", local_dict=config["soms"])
-    same = row[row["replications"] == 1]  # the readings' row is this very test at one seed only
-    difference |= (same[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
+    row = table.query(
+        "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
+        " & at == @goal_response & replications == 1",
+        local_dict=config["soms"],
+    )
+    difference |= (row[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
     out |= {"cue_difference_df": difference["df"], "cue_difference_t": difference["t"]}
-    words = {"reproduced": "larger with the cue at the first step only"}
-    words |= {"reversed": "larger with the cue at every step"}
-    words["not shown"] = "not shown to differ between the timings"
+    words = {"reproduced": "larger with the cue at the first step only",
+             "reversed": "larger with the cue at every step",
+             "not shown": "not shown to differ between the timings"}  # fmt: skip
     out |= tested("beyond", "cue_difference", difference, words)
     p, family = out["cue_difference_p_holm"], out["cue_difference_family"]
     out["cue_difference_p_words"] = (
-        f"Holm p {p:.2g} within “{family}”"
-        if family != FAMILY_NONE
+        f"Holm p {p:.2g} within “{family}”" if family != FAMILY_NONE
         else f"p {p:.2g}, one test at one seed in no family (the readings' chapter tests the "
-        "difference over the replications)"
-    )
+        "difference over the replications)")  # fmt: skip
     return out, {"cue_anova": pd.DataFrame(anova), "cue_effects": pd.DataFrame(effects)}
 
 
@@ -558,20 +440,21 @@ def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]
     rows, cells = [], []
     for measure, counted, shown in ROBOT_MEASURES:
         named = {k.replace("ongruent_", "ong. "): c for k, c in effects[measure]["cells"].items()}
-        cells.append({"variant": label, "measure": counted})
-        cells[-1] |= {k: f"{c[counted]}/{c['trials']}" for k, c in named.items()}
+        cells.append({"variant": label, "measure": counted}
+                     | {k: f"{c[counted]}/{c['trials']}" for k, c in named.items()})  # fmt: skip
         for factor in (*FACTOR_LEVELS, INTERACTION):
             test = dict.fromkeys(("estimate", "ci_low", "ci_high", "p", "p_holm"), np.nan)
             test |= effects[measure]["tests"][factor]
             reads = {"estimate": test["estimate"], "p": test["p_holm"]}  # the interaction's
             if factor != INTERACTION:
                 reads = science.robot_effect_statistics(effects[measure], factor)
-            row = test | {"estimate": reads["estimate"], "p_reads": reads["p"], "variant": label}
-            row |= {"measure": shown, "effect": EFFECT_NAMES[factor]}
-            row["key"] = f"{measure}_{factor.replace(INTERACTION, 'interaction')}"
             method = {"contrasts": f"t, {test.get('networks')} nets", "exact": "Fisher"}
-            row["test"] = method.get(test["method"], "none")
-            rows.append(row | {"verdict": robot_verdict(effects[measure], measure, factor)})
+            rows.append(test | {
+                "estimate": reads["estimate"], "p_reads": reads["p"], "variant": label,
+                "measure": shown, "effect": EFFECT_NAMES[factor],
+                "key": f"{measure}_{factor.replace(INTERACTION, 'interaction')}",
+                "test": method.get(test["method"], "none"),
+                "verdict": robot_verdict(effects[measure], measure, factor)})  # fmt: skip
     return rows, cells
 
 
@@ -590,10 +473,10 @@ def _best_effects(effects: dict) -> dict:
 
 
 def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
-    """Explore, then confirm (``embodied/confirmation.csv``): the first confirmed variant's counts
-    on the networks it was chosen on and fresh ones, the bar set against the fresh ones only."""
+    """Explore, then confirm: the first confirmed variant's counts on the networks it was chosen
+    on and on fresh ones, the bar set against the fresh ones only."""
     rows = confirmation.to_dict("records")
-    for r in rows:  # the bar is set against the fresh networks only
+    for r in rows:
         bar = confirmation_science.bar_verdict(r["ci_low"], r["ci_high"], science.GRASPS)
         r |= {"variant": short_label(r), "vs_bar": bar if r["seed_set"] == "confirmation" else ""}
     out = {"bar": science.GRASPS, "confirmed_label": "none"}
@@ -604,9 +487,9 @@ def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     out |= {f"{seeds}_{k}": r[k] for seeds, r in first.items() for k in keys}
     fresh = first["confirmation"]
     out |= {"confirmed_label": fresh["variant"], "confirmation_verdict": fresh["vs_bar"]}
-    rests = ("grasping.bar", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high")
     bar = "includes it" if fresh["vs_bar"] == "includes" else f"lies {fresh['vs_bar']} it"
-    out["confirmation_bar"] = text.Claim(bar, rests)
+    out["confirmation_bar"] = text.Claim(bar, ("grasping.bar", "grasping.confirmation_ci_low",
+                                               "grasping.confirmation_ci_high"))  # fmt: skip
     held = {k.removesuffix("_held"): v for k, v in fresh.items() if k.endswith("_held")}
     out["confirmation_misses"] = _misses({k: (v, fresh[f"{k}_trials"]) for k, v in held.items()})
     return out, pd.DataFrame(rows)
@@ -622,17 +505,16 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     animated = {k: config["network"][k] for k in ("categorisation_cue", "learning_rate_schedule")}
     out = {
         "n_variants": len(variants),
-        "grid_scope": "the whole grid (robustness=True)"
-        if config["robustness"]
+        "grid_scope": "the whole grid (robustness=True)" if config["robustness"]
         else "the config's own networks and the variants config robot.default lists",
         "animated_label": short_label(animated | config["robot"]["animation"]["variant"]),
         "smallest_label": "none" if smallest is None else smallest["variant"],
         "tolerated_noise": "none tested" if tolerated is None else f"{tolerated['noise']:g}",
         "tolerated_palm_mm": np.nan if tolerated is None else tolerated["palm_error_mm"],
-    }
-    own = variants[variants["run"] == OWN].to_dict("records")[0]
-    exact = tolerance[tolerance["noise"] == 0].to_dict("records")[0]  # config: noise 0 is listed
-    records = {"own": own, "best": best, "replay": stats["replay"], "exact": exact}
+    }  # fmt: skip
+    records = {"own": variants[variants["run"] == OWN].to_dict("records")[0], "best": best,
+               "replay": stats["replay"],  # the config lists noise 0 for the exact postures
+               "exact": tolerance[tolerance["noise"] == 0].to_dict("records")[0]}  # fmt: skip
     out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
     for key in ("grasping_wrong_grip_hold", "categorisation_wrong_grip_hold", "trials"):
         out[f"wrong_grip_{key.split('_')[0]}"] = int(variants[key].sum())
@@ -643,21 +525,24 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         p["verdict"] = below if p["p"] < science.ALPHA else "not shown"
     rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
     return out | confirmed | _best_effects(effects[best["run"]]), {
-        "robot_variants": variants,
-        "robot_pairs": pd.DataFrame(pairs),
+        "robot_variants": variants, "robot_pairs": pd.DataFrame(pairs),
         "robot_confirmation": confirmation,
         "robot_effects": pd.DataFrame([r for effect, _ in rows for r in effect]),
         "robot_cells": pd.DataFrame([c for _, cells in rows for c in cells]),
-    }
+    }  # fmt: skip
+
+
+# -- the sweep, the method pages, the size study --------------------------------------------------
 
 
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
     """The sweep's values, table (each effect's direction) and cost, or what it would train."""
     sweep = config["sweep"]
-    points = int(np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))
-    points *= len(sweep["categorisation_cue"])
-    values: dict = {"ran": bool(config["robustness"]), "command": text.ROBUSTNESS_COMMAND}
-    values |= {"points": points, "networks": points * config["network"]["networks"]}
+    points = len(sweep["categorisation_cue"]) * int(
+        np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))  # fmt: skip
+    values: dict = {"ran": bool(config["robustness"]), "command": text.ROBUSTNESS_COMMAND,
+                    "points": points,
+                    "networks": points * config["network"]["networks"]}  # fmt: skip
     if not config["robustness"]:
         return values, None
     from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
@@ -665,9 +550,10 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     summary = pd.read_csv(inputs["sweep_summary.csv"])
     cost = read_cost_table(inputs["sweep_cost.csv"])
     growth = cost_growth(cost["replications"], cost["seconds"])
-    values |= {"seeds": ", ".join(map(str, sweep["seeds"])), "settings": len(summary)}
-    values["cost_change"] = float(growth["change"])
-    values["cost_shape"] = text.Claim(text.growth_phrase(growth), ("robustness.cost_change",))
+    values |= {"seeds": ", ".join(map(str, sweep["seeds"])), "settings": len(summary),
+               "cost_change": float(growth["change"]),
+               "cost_shape": text.Claim(text.growth_phrase(growth),
+                                        ("robustness.cost_change",))}  # fmt: skip
     rows = []
     for (_, r), effect in ((row, e) for row in summary.iterrows() for e in ("congruency", "size")):
         n = r["replications"]
@@ -683,69 +569,40 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     return values, pd.DataFrame(rows)
 
 
-def training(inputs: Mapping[str, str], config: dict) -> dict:
-    net, dem = config["network"], config["demos"]
+def methods(inputs: Mapping[str, str], config: dict) -> dict[str, dict]:
+    """The method pages' numbers: the demonstrations and training, the vision, the body, the
+    maps and the reproduction notes' settings."""
+    net, dem, sizes = config["network"], config["demos"], config["object_sizes_m"]
     demos = science.demo_counts(pd.read_csv(inputs["demo_summary.csv"]))
-    return {
-        "n_demos": demos["n_demos"],
-        "n_attempts": demos["n_attempts"],
-        "n_retried": demos["n_retried"],
-        "lift_min": demos["lift_min_cm"],
-        "lift_check": dem["lift_m"] * 100,
-        "yaw": dem["yaw_deg"],
-        "tilt": dem["tilt_deg"],
-        "shift": dem["shift_m"] * 1000,
-        "lr": net["learning_rate"],
-        "iterations": net["iterations"],
-        "phase1": net["phase1_iterations"],
-        "phase2_start": net["phase1_iterations"] + 1,
-        "phase2_half": (net["iterations"] - net["phase1_iterations"]) // 2,
-        "networks": net["networks"],
-        "half_networks": net["networks"] // 2,
-        "cue": net["categorisation_cue"].replace("_", " "),
-        "n_sequences": dem["sequences"],
-        "n_train_sequences": dem["sequences"] - 1,
-        "n_steps": dem["steps"],
-        "last_step": dem["steps"] - 1,
-    }
-
-
-def vision(inputs: Mapping[str, str], config: dict) -> dict:
-    cells = science.edge_cells(load_npz(inputs["visual_maps.npz"]))
-    return {f"cells_{name}": n for name, n in cells.items()} | {
-        "window": config["vision"]["window"],
-        "threshold": config["vision"]["edge_threshold"],
-    }
-
-
-def robot(inputs: Mapping[str, str]) -> dict:
-    return science.joint_counts(pd.read_csv(inputs["joint_table.csv"]))
-
-
-def architecture(inputs: Mapping[str, str], config: dict) -> dict:
     soms = load_npz(inputs["soms.npz"])
-    units = {
-        f"units_{obj}": active_units(act)
-        for obj, act in zip(soms["objects"].tolist(), soms["object_act"], strict=True)
-    }
-    return units | {
-        "width_per_edge": config["soms"]["object_width_per_edge"],
-        "bump_sigma": config["soms"]["bump_sigma"],
-        "hidden": config["network"]["hidden"],
-    }
-
-
-def notes(config: dict) -> dict:
-    sizes = config["object_sizes_m"]
+    units = zip(soms["objects"].tolist(), soms["object_act"], strict=True)
     return {
-        "seed": config["seed"],
-        "init_scale": config["network"]["init_scale"],
-        "som_iterations": config["soms"]["iterations"],
-        "big_cm": 100 * sizes["big_ball"],
-        "small_cm": 100 * sizes["small_ball"],
-        "big_cube_cm": 100 * sizes["big_cube"],
-        "small_cube_cm": 100 * sizes["small_cube"],
-    }
+        "training": {
+            "n_demos": demos["n_demos"], "n_attempts": demos["n_attempts"],
+            "n_retried": demos["n_retried"], "lift_min": demos["lift_min_cm"],
+            "lift_check": dem["lift_m"] * 100, "yaw": dem["yaw_deg"], "tilt": dem["tilt_deg"],
+            "shift": dem["shift_m"] * 1000, "lr": net["learning_rate"],
+            "iterations": net["iterations"], "phase1": net["phase1_iterations"],
+            "phase2_start": net["phase1_iterations"] + 1,
+            "phase2_half": (net["iterations"] - net["phase1_iterations"]) // 2,
+            "networks": net["networks"], "half_networks": net["networks"] // 2,
+            "cue": net["categorisation_cue"].replace("_", " "), "n_sequences": dem["sequences"],
+            "n_train_sequences": dem["sequences"] - 1, "n_steps": dem["steps"],
+            "last_step": dem["steps"] - 1,
+        },
+        "vision": {f"cells_{name}": n for name, n in
+                   science.edge_cells(load_npz(inputs["visual_maps.npz"])).items()}
+        | {"window": config["vision"]["window"], "threshold": config["vision"]["edge_threshold"]},
+        "robot": science.joint_counts(pd.read_csv(inputs["joint_table.csv"])),
+        "architecture": {f"units_{obj}": active_units(act) for obj, act in units}
+        | {"width_per_edge": config["soms"]["object_width_per_edge"],
+           "bump_sigma": config["soms"]["bump_sigma"], "hidden": net["hidden"]},
+        "notes": {"seed": config["seed"], "init_scale": net["init_scale"],
+                  "som_iterations": config["soms"]["iterations"]}
+        | {f"{k}_cm": 100 * sizes[o] for k, o in (("big", "big_ball"), ("small", "small_ball"),
+                                                  ("big_cube", "big_cube"),
+                                                  ("small_cube", "small_cube"))},
+    }  # fmt: skip
 
 
 #: The size study's cue timings and controls, in short.
@@ -762,13 +619,43 @@ def _size_rows(rows: pd.DataFrame, **columns) -> pd.DataFrame:
     dash: no test could be made."""
     number = rows[["estimate", "ci_low", "ci_high"]].astype(float)
     number = number.map("{:+.4f}".format).where(np.isfinite(number), "–")
-    interval = "[" + number["ci_low"] + ", " + number["ci_high"] + "]"
+    interval = ("[" + number["ci_low"] + ", " + number["ci_high"] + "]").where(
+        number["ci_low"] != "–", "–")  # fmt: skip
     return pd.DataFrame(
-        {"cue": rows["cue"].map(SIZE_CUES)}
-        | columns
-        | {"estimate": number["estimate"], "95% CI": interval.where(number["ci_low"] != "–", "–")}
-        | {"p": rows["p"].map(_p), "Holm p": rows["p_holm"].map(_p), "family": rows["family"]}
-    )
+        {"cue": rows["cue"].map(SIZE_CUES)} | columns
+        | {"estimate": number["estimate"], "95% CI": interval, "p": rows["p"].map(_p),
+           "Holm p": rows["p_holm"].map(_p), "family": rows["family"]})  # fmt: skip
+
+
+def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
+    """Each test's numbers (``<key>_<stat>_<cue>``), its verdict or trend resting on them, and per
+    key one phrase over the cue timings this build ran (a config may run one)."""
+    for key, rows in tests.items():
+        for _, row in rows.iterrows():
+            cue = row["cue"]
+            for stat in ("estimate", "ci_low", "ci_high", "p_holm"):
+                values[f"{key}_{stat}_{cue}".replace("_estimate", "")] = row[stat]
+            if key == "grips":  # demonstrated minus equal grips: less distance, the opposite
+                row = dict(row) | {"estimate": -row["estimate"]}
+            phrase = text.trend_phrase if key in ("slope", "grips") else text.verdict_word
+            rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
+            values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
+    for key in tests:
+        ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
+        rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
+        said = {cue: (values[f"{key}_verdict_{cue}"].text, values[f"{key}_{cue}"],
+                      values[f"{key}_ci_low_{cue}"], values[f"{key}_ci_high_{cue}"],
+                      values[f"{key}_p_holm_{cue}"]) for cue in ran}  # fmt: skip
+        phrases = {
+            "slope": lambda w, x, *_, c: f"{w} with {text.CUES[c]} (slope {x:+.4f} per unit of "
+            "delivered dose)",
+            "grips_tests": lambda w, x, lo, hi, p, c: f"{x:+.4f} (95% interval [{lo:+.4f}, "
+            f"{hi:+.4f}], Holm p {p:.2g}) with {text.CUES[c]}",
+        }  # fmt: skip
+        for name in [key, "grips_tests"] if key == "grips" else [key]:
+            say = phrases.get(name, lambda w, *_, c: f"{w} ({SIZE_CUES[c]})")
+            joined = " and ".join(say(*said[cue], c=cue) for cue in ran)
+            values[f"{name}_by_cue"] = text.Claim(joined, rests) if ran else "not run in this build"
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -776,8 +663,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     read = {"diff": "estimate", "slope": "estimate"}
     summary, slope, grips, checks, power = (
         pd.read_csv(inputs[f"size_{name}.csv"], dtype={"dose": str}).rename(columns=read)
-        for name in ("summary", "slope", "grips", "manipulation", "power")
-    )
+        for name in ("summary", "slope", "grips", "manipulation", "power"))  # fmt: skip
     try:
         motor = pd.read_csv(inputs["size_motor.csv"], dtype={"dose": str})
     except pd.errors.EmptyDataError:  # no removal control in this build
@@ -785,84 +671,47 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     doses = config["size_dose"]["doses"]
     none, top = str(float(min(doses))), str(float(max(doses)))
     rmse = summary[summary["measure"] == "rmse"]
-    values: dict = {
-        "doses": ", ".join(f"{d:g}" for d in doses),
-        "top_dose": f"{float(top):g}",
-        "replications": int(summary["replications"].max()),
-        "delivered_top": float(rmse.loc[rmse["dose"] == top, "delivered_dose"].mean()),
-    }
+    values: dict = {"doses": ", ".join(f"{d:g}" for d in doses), "top_dose": f"{float(top):g}",
+                    "replications": int(summary["replications"].max()),
+                    "delivered_top": float(
+                        rmse.loc[rmse["dose"] == top, "delivered_dose"].mean())}  # fmt: skip
     for (shape, name), ratios in checks[checks["dose"] == top].groupby(["shape", "map"])["ratio"]:
         values[f"ratio_{name}_{shape}"] = float(ratios.min())
-    for _, row in power[np.isclose(power["effect"], 0.02)].iterrows():
-        values[f"power_{row['cue']}"] = float(row["power_holm_bound"])
-    arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
-    rests = ("size.ratio_goal_ball", "size.ratio_goal_cube")
-    values["check"] = text.Claim("arrived" if arrived else "did not fully arrive", rests)
-    at = {"none": none, "removed": "removed", "equal": "equal_grips"}  # no size, and the controls
-    tests = {key: rmse[rmse["dose"] == dose] for key, dose in at.items()} | {"grips": grips}
-    tests["slope"] = slope[(slope["measure"] == "rmse") & (slope["axis"] == "delivered")]
-    for key, rows in tests.items():  # each test's numbers, and its verdict or trend resting on them
-        for _, row in rows.iterrows():
-            cue, stats = row["cue"], ("estimate", "ci_low", "ci_high", "p_holm")
-            values |= {f"{key}_{stat}_{cue}".replace("_estimate", ""): row[stat] for stat in stats}
-            if key == "grips":  # demonstrated minus equal grips: less distance, the opposite change
-                row = dict(row) | {"estimate": -row["estimate"]}
-            phrase = text.trend_phrase if key in ("slope", "grips") else text.size_verdict
-            rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
-            values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
-
-    def by_cue(key: str, said) -> text.Claim | str:
-        """One phrase per cue timing this build ran (a config may run one), joined."""
-        ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
-        rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
-        said = " and ".join(said(cue) for cue in ran)
-        return text.Claim(said, rests) if ran else "not run in this build"
-
-    def verdict(key: str):
-        return lambda cue: f"{values[f'{key}_verdict_{cue}'].text} ({SIZE_CUES[cue]})"
-
-    values["slope_by_cue"] = by_cue("slope", lambda cue: (
-        f"{values[f'slope_verdict_{cue}'].text} with {text.CUES[cue]} (slope "
-        f"{values[f'slope_{cue}']:+.4f} per unit of delivered dose)"))  # fmt: skip
-    for key in ("none", "equal", "removed", "grips"):
-        values[f"{key}_by_cue"] = by_cue(key, verdict(key))
-    values["grips_tests_by_cue"] = by_cue("grips", lambda cue: (
-        f"{values[f'grips_{cue}']:+.4f} (95% interval [{values[f'grips_ci_low_{cue}']:+.4f}, "
-        f"{values[f'grips_ci_high_{cue}']:+.4f}], Holm p {values[f'grips_p_holm_{cue}']:.2g}) "
-        f"with {text.CUES[cue]}"))  # fmt: skip
+    powers = power[np.isclose(power["effect"], 0.02)].set_index("cue")["power_holm_bound"]
     values["power_by_cue"] = " and ".join(
-        f"{values[f'power_{cue}']:.2f} ({SIZE_CUES[cue]})" for cue in SIZE_CUES
-        if f"power_{cue}" in values
-    )  # fmt: skip
+        f"{powers[cue]:.2f} ({SIZE_CUES[cue]})" for cue in SIZE_CUES if cue in powers)  # fmt: skip
+    arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
+    values["check"] = text.Claim("arrived" if arrived else "did not fully arrive",
+                                 ("size.ratio_goal_ball", "size.ratio_goal_cube"))  # fmt: skip
+    at = {"none": none, "removed": "removed", "equal": "equal_grips"}  # no size, the controls
+    slopes = slope[(slope["measure"] == "rmse") & (slope["axis"] == "delivered")]
+    _size_tests(values, {"slope": slopes} | {k: rmse[rmse["dose"] == d] for k, d in at.items()}
+                | {"grips": grips})  # fmt: skip
     keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
     values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
     if len(motor):
         found = motor.loc[motor["p_holm"] < science.ALPHA, "geometry"].unique()
         values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
-    like_size = ranked_like_size(pd.read_csv(inputs["size_geometry.csv"]))
-    values["like_size"] = text.named_measures(like_size)
+    values["like_size"] = text.named_measures(
+        ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
     motor["cell"] = [f"{e:+.4f} ({_p(p)})" for e, p in motor[["estimate", "p_holm"]].to_numpy()]
     motor["condition"], motor["cue"] = motor["dose"].map(_condition), motor["cue"].map(SIZE_CUES)
     rmse = rmse.assign(test="effect, " + rmse["dose"].map(_condition))
-    declared = pd.concat([rmse, tests["slope"].assign(test="slope, delivered")], ignore_index=True)
+    declared = pd.concat([rmse, slopes.assign(test="slope, delivered")], ignore_index=True)
     declared = declared.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
     relative = summary["relative_to_mean"].where(summary["measure"].isin(["rmse", "rmse_correct"]))
     return values, {
-        "size_declared": _size_rows(declared, test=declared["test"]).assign(  # declared first
-            verdict=declared.apply(text.size_verdict, axis=1)
-        ),
+        "size_declared": _size_rows(declared, test=declared["test"]).assign(
+            verdict=declared.apply(text.verdict_word, axis=1)),  # declared first
         "size_summary": _size_rows(
-            summary,
-            condition=summary["dose"].map(_condition),
-            measure=summary["measure"],
+            summary, condition=summary["dose"].map(_condition), measure=summary["measure"],
             **{"Goal ratio": summary["large_small_ratio_goal"].map("{:.2f}".format)},
         ).assign(**{"rel. to mean": relative.map("{:+.3f}".format).where(relative.notna(), "–")}),
         "size_slope": _size_rows(slope, dose=slope["axis"], measure=slope["measure"]),
         "size_power": power,  # formatted by the page
         "size_motor": motor.pivot(index=["condition", "cue"], columns="geometry", values="cell")
-        .rename(columns=text.GEOMETRY_SHORT)
-        .reset_index(),
-    }
+        .rename(columns=text.GEOMETRY_SHORT).reset_index(),
+    }  # fmt: skip
 
 
 def page_findings(
@@ -872,58 +721,32 @@ def page_findings(
 
     ``inputs`` maps the book's names of the outputs (``BOOK_DATA``'s keys, the learning curves
     as ``curves/netNN.csv``) to their files; ``config`` is the run's, ``ablation_cue`` the cue
-    timing the ablation trained with, ``scale`` this build's and the other scale's counts
-    (``{"now": ..., "other": ...}``, runs.RunPlan.scale).
-    """
-    anova = _json(inputs["anova.json"])
+    timing the ablation trained with, ``scale`` this build's and the other scale's counts."""
+    anova, cue = _json(inputs["anova.json"]), config["network"]["categorisation_cue"]
     rmse, iterations = _curves(inputs)
     curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
-    demos = load_npz(inputs["demos.npz"])
-    beyond_values, beyond_tables = beyond(inputs, config, ablation_cue)
-    robustness_values, sweep_table = robustness(inputs, config)
-    readings_values, readings_tables = readings(inputs, config)
-    grasping_values, grasping_tables = grasping(inputs, config)
-    size_values, size_tables = size_study(inputs, config)
-    score_values, score_table = scorecard(
-        anova,
-        curve,
-        pd.read_csv(inputs["readings_summary.csv"]),
-        pd.read_csv(inputs["size_summary.csv"]),
-        pd.read_csv(inputs["robot_variants.csv"]),
-        pd.read_csv(inputs["robot_confirmation.csv"]),
-    )
-    pages = {
-        "intro": intro(anova) | score_values,
-        "results": results(anova, curve, config["network"]["categorisation_cue"]),
-        "discussion": discussion(anova, demos, config["network"]["categorisation_cue"]),
-        "beyond": beyond_values,
-        "grasping": grasping_values,
-        "robustness": robustness_values,
-        "readings": readings_values,
-        "training": training(inputs, config),
-        "vision": vision(inputs, config),
-        "robot": robot(inputs),
-        "architecture": architecture(inputs, config),
-        "notes": notes(config),
-        "size": size_values,
-        "reproduce": {"scale": text.build_scale(scale, config)},
-    }
-    tables = (
-        {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
-        | {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
-        | {
-            "object_means": object_means(_json(inputs["measures.json"])),
-            "headline": headline(anova),
-            "scorecard": score_table,
-            "comparison": comparison(anova, curve, config),
-        }
-        | beyond_tables
-        | readings_tables
-        | grasping_tables
-        | size_tables
-    )
-    if sweep_table is not None:
-        tables["sweep"] = sweep_table
+    read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
+        "readings_summary", "size_summary", "robot_variants", "robot_confirmation")}  # fmt: skip
+    score_values, score_table = scorecard(anova, curve, *read.values())
+    pages, tables = {}, {}
+    for page, (values, shown) in {
+        "beyond": beyond(inputs, config, ablation_cue), "readings": readings(inputs, config),
+        "grasping": grasping(inputs, config), "size": size_study(inputs, config),
+    }.items():  # fmt: skip
+        pages[page], tables = values, tables | shown
+    pages["robustness"], sweep = robustness(inputs, config)
+    pages |= {
+        "intro": intro(anova) | score_values, "results": results(anova, curve, cue),
+        "discussion": discussion(anova, load_npz(inputs["demos.npz"]), cue),
+        "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
+    } | methods(inputs, config)  # fmt: skip
+    tables |= {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
+    tables |= {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
+    tables |= {"object_means": object_means(_json(inputs["measures.json"])),
+               "headline": headline(anova), "scorecard": score_table,
+               "comparison": comparison(anova, curve, config)}  # fmt: skip
+    if sweep is not None:
+        tables["sweep"] = sweep
     return traced(pages), tables
 
 
@@ -931,15 +754,11 @@ def traced(pages: dict[str, dict]) -> dict[str, dict]:
     """The pages' values with every ``text.Claim`` replaced by its sentence, and under ``claims``
     ({page: {key: [entries]}}) the findings each rests on. An entry that names no value of
     ``pages`` is refused: a claim must rest on numbers the book has."""
-    out: dict[str, dict] = {}
-    claims: dict[str, dict[str, list[str]]] = {}
-    for page, values in pages.items():
-        out[page] = {}
-        for key, value in values.items():
-            if isinstance(value, text.Claim):
-                claims.setdefault(page, {})[key] = list(value.rests_on)
-                value = value.text
-            out[page][key] = value
+    out = {page: {k: v.text if isinstance(v, text.Claim) else v for k, v in values.items()}
+           for page, values in pages.items()}  # fmt: skip
+    claims = {page: {k: list(v.rests_on) for k, v in values.items() if isinstance(v, text.Claim)}
+              for page, values in pages.items()}  # fmt: skip
+    claims = {page: found for page, found in claims.items() if found}
     for page, keys in claims.items():
         for key, entries in keys.items():
             missing = [e for e in entries if e.split(".", 1)[1] not in out.get(e.split(".")[0], {})]

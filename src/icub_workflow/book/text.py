@@ -268,16 +268,9 @@ GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread"}
 GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
 
 
-def size_verdict(term) -> str:
-    """A size-study test (positive: large objects lower) by its Holm p: "in the paper's
-    direction", "reversed", "not shown" (not "none": that needs an equivalence test)."""
-    word = verdict_word(term)
-    return {"reproduced": "in the paper's direction"}.get(word, word)
-
-
 def trend_phrase(term) -> str:
     """Where a tested change moves the size effect (positive: towards the paper's direction)."""
-    word = size_verdict(term)
+    word = verdict_word(term)
     if word in ("not shown", "not testable"):
         return "by no amount its test shows"
     return ("away from" if word == "reversed" else "towards") + " the paper's direction"
