@@ -218,28 +218,44 @@ def test_a_difference_the_paper_does_not_predict_is_shown_or_not_without_a_direc
     assert values["grip_verdict"].text == "not shown"
 
 
-def test_the_front_pages_verdicts_keep_errors_apart():
+def test_the_main_runs_verdicts_keep_errors_apart():
     from icub_workflow.book import pages
 
-    anova = {
-        "closed_loop": {
-            "n_networks": 12,
-            "means": {"congruent": 0.07, "incongruent": 0.11, "large": 0.1, "small": 0.08},
-            "wrong_grip_rate": {"congruent_large": 0.0, "congruent_small": 0.0,
-                                "incongruent_large": 0.5, "incongruent_small": 0.7},
-            "errors": {"congruency": term(0.6, 0.001), "size": term(-0.1, 0.5)},
-            "correct_rt": {"congruency": term(-0.01, 0.001), "size": term(0.0, 1.0)},
-        },
-        "contrasts": {"closed_loop": {"congruency": term(0.04, 0.001),
-                                      "size": term(-0.026, 0.01)}},
+    wrong = {"congruent_large": 0.0, "congruent_small": 0.0, "incongruent_large": 0.5,
+             "incongruent_small": 0.7}  # fmt: skip
+    loop = {
+        "means": {"congruent": 0.07, "incongruent": 0.11, "large": 0.1, "small": 0.08},
+        "means_correct": {}, "wrong_grip_rate": wrong,
+        "errors": {"congruency": term(0.6, 0.001), "size": term(-0.1, 0.5),
+                   "congruency:size": term(0.1, 0.5)},
+        "correct_rt": {"congruency": term(-0.01, 0.001), "size": term(0.0, 1.0),
+                       "congruency:size": term(0.01, 0.001)},
     }  # fmt: skip
-    values = pages.intro(anova)
-    assert values["congruency_verdict"].text == "reproduced"
-    assert values["size_verdict"].text == "reversed"
+    rmse = {"congruency": term(0.04, 0.001), "size": term(-0.026, 0.01),
+            "congruency:size": term(0.02, 0.001)}  # fmt: skip
+    anova = {mode: loop for mode in ("closed_loop", "teacher_forced")}
+    anova |= {"contrasts": dict.fromkeys(("closed_loop", "teacher_forced"), rmse),
+              "simple": dict.fromkeys(("closed_loop", "teacher_forced"),
+                                      {"size_in_congruent": term(-0.02, 0.001)})}  # fmt: skip
+    curve = dict.fromkeys(("start", "around_at", "at", "phase1_end", "end", "n_networks"), 1)
+    demos = {"angles": np.zeros((4, 2, 5, 3, 2)),
+             "objects": np.array(["big_ball", "small_ball", "big_cube", "small_cube"])}  # fmt: skip
+    values = pages.main_tests(anova, curve, demos, "first_step")
+    said = {k: v.text for k, v in values.items() if k.endswith("_verdict")}
+    assert said["closed_loop_congruency_verdict"] == "reproduced"
+    assert said["closed_loop_size_verdict"] == "reversed"
     # the paper claims nothing of errors: a difference there is "shown", not "reproduced"
-    assert values["errors_congruency_verdict"].text == "shown"
-    assert values["rt_congruency_verdict"].text == "reversed"
-    assert values["errors_size_verdict"].text == values["rt_size_verdict"].text == "not shown"
+    assert said["closed_loop_errors_congruency_verdict"] == "shown"
+    assert said["closed_loop_rt_congruency_verdict"] == "reversed"
+    assert (
+        said["closed_loop_errors_size_verdict"]
+        == said["closed_loop_rt_size_verdict"]
+        == ("not shown")
+    )
+    # nor of the required grip, nor of a simple effect: shown or not, in either direction
+    assert said["closed_loop_grip_verdict"] == said["closed_loop_rt_grip_verdict"] == "shown"
+    assert said["closed_loop_size_in_congruent_verdict"] == "shown"
+    assert values["closed_loop_wrong_incongruent"] == pytest.approx(0.6)
 
 
 def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
@@ -281,13 +297,15 @@ def found(built):
 
 
 def test_the_rule_writes_a_section_for_every_page_that_glues(found):
-    # comparison and reproduce show only tables; "claims" traces the sentences
-    assert set(found) == set(PAGES) - {"comparison"} | {"claims"}
+    # the main run's tests are one entry ("tests") that several pages glue; "claims" traces
+    # the sentences; the other pages glue their own entry
+    glued = {p for p in PAGES if "findings.json" in (REPO / "book" / f"{p}.md").read_text()}
+    assert set(found) == glued - {"results", "discussion", "comparison"} | {"tests", "claims"}
 
 
 def test_every_claim_rests_on_numbers_the_book_has(found):
     claims = found["claims"]
-    for page in ("intro", "results", "discussion", "beyond"):
+    for page in ("intro", "tests", "beyond"):
         assert claims.get(page), page
     for page, keys in claims.items():
         for key, entries in keys.items():
@@ -302,7 +320,7 @@ def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, f
         angles, objects = demos["angles"], demos["objects"].tolist()
     for size in ("large", "small"):
         expected = grip_distance_by_hand(angles, objects, size)
-        assert found["discussion"][f"grip_distance_{size}"] == pytest.approx(expected, rel=1e-9)
+        assert found["tests"][f"grip_distance_{size}"] == pytest.approx(expected, rel=1e-9)
 
 
 def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
@@ -317,28 +335,22 @@ def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
     for test, p in zip(tests, holm([t["p"] for t in tests]), strict=True):
         assert test["family"] == "confirmatory" and test["p_holm"] == pytest.approx(p, rel=1e-12)
     p_holm = closed["congruency"]["p_holm"]
-    assert found["intro"]["congruency_p_holm"] == p_holm
+    assert found["tests"]["closed_loop_congruency_p_holm"] == p_holm
     estimate = closed["congruency"]["estimate"]
-    assert found["intro"]["congruency_verdict"] == (
+    verdict = found["tests"]["closed_loop_congruency_verdict"]
+    assert verdict == (
         "not shown" if p_holm >= 0.05 else "reproduced" if estimate > 0 else "reversed"
     )
-    assert (
-        found["results"]["closed_loop_congruency_verdict"] == found["intro"]["congruency_verdict"]
-    )
-    assert found["beyond"]["cue_main_verdict"] == found["intro"]["congruency_verdict"]
+    assert found["beyond"]["cue_main_verdict"] == verdict
+    assert found["intro"]["score_congruency_all_verdict"] == verdict
 
 
-def test_the_rules_tables_are_the_ones_the_book_shows(built):
-    tables = built / "data" / "book" / "tables"
-    anova = pd.read_csv(tables / "anova_closed_loop.csv")
-    assert (
-        anova["analysis"].tolist()
-        == ["two-way (trials)"] * 3 + ["repeated measures (networks)"] * 3
-    )
-    comparison = pd.read_csv(tables / "comparison.csv", dtype=str)
+def test_the_comparison_page_shows_the_main_runs_numbers(built, found):
     html = (built / "book" / "_build" / "html" / "comparison.html").read_text()
-    for value in comparison["this run"]:
-        assert value in html or escape(value) in html, value
+    tests = found["tests"]  # the comparison page glues the main run's tests
+    for key in ("closed_loop_congruency_stats", "closed_loop_size_stats"):
+        assert escape(tests[key]) in html or tests[key] in html, key
+    assert f"{tests['rmse_end']:.3f}" in html and f"{tests['closed_loop_congruent']:.4f}" in html
 
 
 def holm_by_family(table: pd.DataFrame, p: str, adjusted: str, family: str) -> None:

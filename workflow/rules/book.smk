@@ -92,7 +92,6 @@ FINDINGS_READS = [
     "soms.npz",
     "readings_summary.csv",
     "readings_differences.csv",
-    "measures.json",
     "robot_variants.csv",
     "robot_effects.json",
     "robot_statistics.json",
@@ -108,14 +107,10 @@ FINDINGS_READS = [
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
 FINDINGS_TABLES = [
-    "anova_closed_loop",
-    "anova_teacher_forced",
     "contrasts_closed_loop",
     "contrasts_teacher_forced",
-    "object_means",
     "headline",
     "scorecard",
-    "comparison",
     "cue_anova",
     "cue_effects",
     "readings_matrix",

@@ -31,13 +31,6 @@ from .scorecard import scorecard
 #: The three readings of the paper's measure (``stats.OUTCOMES``), as the tables name them.
 OUTCOME_LABELS = {"contrasts": "RMSE, all trials", "errors": "wrong-grip rate",
                   "correct_rt": "RMSE, correct trials"}  # fmt: skip
-ANALYSES = {"two_way": "two-way (trials)", "repeated_measures": "repeated measures (networks)"}
-#: What the paper reports, beside which the comparison page sets this run's numbers.
-PAPER = {"start": "about 0.3", "around_2000": "about 0.05", "end": "stable around 0.05",
-         "congruency": "congruent lower; significant", "size": "large lower; significant",
-         "networks": "12 (6 per mapping)", "learning_rate": "0.075",
-         "iterations": "12,000 (6000 + 6000)", "hidden": "10",
-         "sequences": "5 (4 + 1)"}  # fmt: skip
 
 
 def _json(path) -> dict:
@@ -48,16 +41,6 @@ def _curves(inputs: Mapping[str, str]) -> tuple[np.ndarray, np.ndarray]:
     """The learning curves' RMSE (networks, rows) and the iteration of each row."""
     tables = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
     return np.array([t["rmse"].to_numpy() for t in tables]), tables[0]["iteration"].to_numpy()
-
-
-def anova_rows(anova: dict, mode: str) -> pd.DataFrame:
-    """Both ANOVAs of one test mode, one row per effect (results page)."""
-    return pd.DataFrame(
-        {"analysis": label, "effect": effect, "F": r["F"],
-         "df": f"({r['df1']:.0f}, {r['df2']:.0f})",
-         "p": r["p"], "partial η²": r["eta_p2"]}
-        for analysis, label in ANALYSES.items() for effect, r in anova[mode][analysis].items()
-    )  # fmt: skip
 
 
 def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
@@ -78,21 +61,9 @@ def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
     )  # fmt: skip
 
 
-def object_means(measures: dict) -> pd.DataFrame:
-    """Per mapping and object: the mean RMSE over networks, in both test modes."""
-    closed, forced = (measures[mode]["rmse"]["object_means"] for mode in MODES)
-    return pd.DataFrame(
-        {"mapping": key.split("_", 1)[0], "object": key.split("_", 1)[1].replace("_", " "),
-         "congruency": row["congruency"], "size": row["size"], "networks": row["n_networks"],
-         "closed loop": f"{row['mean']:.4f} (sd {row['sd']:.4f})",
-         "teacher forced": f"{forced[key]['mean']:.4f} (sd {forced[key]['sd']:.4f})"}
-        for key, row in closed.items()
-    )  # fmt: skip
-
-
 def headline(anova: dict) -> pd.DataFrame:
     """The front page's table: the paper's two effects and the required grip (closed loop) on
-    the paper's measure and its two parts, each with a verdict word (``text.claim_verdict``)."""
+    the paper's measure and its two parts, each with its verdict word."""
     closed = {"contrasts": anova["contrasts"]["closed_loop"]}
     closed |= {o: anova["closed_loop"][o] for o in ("errors", "correct_rt")}
     return pd.DataFrame(
@@ -100,104 +71,40 @@ def headline(anova: dict) -> pd.DataFrame:
          "estimate [95% interval]": f"{t['estimate']:+.4f} {text.fmt_ci(t)}", "df": t["df"],
          "p": t["p"], "family": t["family"], "Holm p": t["p_holm"],
          "verdict": text.claim_verdict(t, o, e)}
-        for o, tests in closed.items() for e in ("congruency", "size", "congruency:size")
-        for t in [tests[e]]
+        for o, tests in closed.items() for e in WITHIN for t in [tests[e]]
     )  # fmt: skip
 
 
-def _main_effects(anova: dict, page: str, verdicts: Mapping[str, object]) -> dict:
-    """The closed-loop tests of the paper's two effects on its measure (``<effect>_``), the
-    wrong-grip rate (``errors_``) and the correct trials (``rt_``), with the verdicts named."""
-    out = {}
-    for effect in ("congruency", "size"):
-        for prefix, term in (("", anova["contrasts"]["closed_loop"][effect]),
-                             ("errors_", anova["closed_loop"]["errors"][effect]),
-                             ("rt_", anova["closed_loop"]["correct_rt"][effect])):  # fmt: skip
-            out |= text.test_values(page, f"{prefix}{effect}", term, verdicts[prefix])
-    return out
-
-
-def intro(anova: dict) -> dict:
-    wrong = science.wrong_grip_by_congruency(anova["closed_loop"]["wrong_grip_rate"])
-    out = {"n_networks": anova["closed_loop"]["n_networks"]}
-    out |= {f"wrong_{k}": v for k, v in wrong.items()}
-    verdicts = {prefix: lambda t, o=outcome: text.claim_verdict(t, o, "")
-                for prefix, outcome in (("", "contrasts"), ("errors_", "errors"),
-                                        ("rt_", "correct_rt"))}  # fmt: skip
-    return out | _main_effects(anova, "intro", verdicts)
-
-
-def results(anova: dict, curve: dict, cue: str) -> dict:
+def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
+    """The config's own run, named once for every page that states it (the front page, the
+    results, the discussion, the comparison): the learning curve, the cell means, and each test
+    as ``<mode>_[errors_|rt_]<effect>`` (the paper's measure, the wrong-grip rate, the
+    correct-trial RMSE) or ``<mode>_<simple effect>``, with its numbers, statistics and verdict
+    (``text.claim_verdict``)."""
+    gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     out = {"rmse_start": curve["start"], "rmse_2000": curve["around_at"], "at_2000": curve["at"],
            "rmse_phase1_end": curve["phase1_end"], "rmse_end": curve["end"],
            "n_networks": curve["n_networks"], "cue": text.CUES[cue],
+           "grip_distance_large": gap["large"], "grip_distance_small": gap["small"],
            "df": anova["contrasts"]["closed_loop"]["congruency"]["df"]}  # fmt: skip
     for mode in MODES:
         m = anova[mode]
+        wrong = m["wrong_grip_rate"] | science.wrong_grip_by_congruency(m["wrong_grip_rate"])
         out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
-        out |= {f"{mode}_wrong_{key}": 100 * v for key, v in m["wrong_grip_rate"].items()}
+        out |= {f"{mode}_wrong_{key}": value for key, value in wrong.items()}
         out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
         cells = m["correct_rt"]["congruency"].get("cells", {}).items()
         out[f"{mode}_correct_cells"] = ", ".join(f"{c.replace('_', ' ')} {n}" for c, n in cells)
-        for effect, name in (("congruency", "congruency"), ("size", "size"),
-                             ("congruency:size", "grip")):  # fmt: skip
-            verdict = text.shown_word if name == "grip" else text.verdict_word
-            out |= text.test_values("results", f"{mode}_{name}",
-                                    anova["contrasts"][mode][effect], verdict)  # fmt: skip
+        sources = (("", "contrasts", anova["contrasts"][mode]), ("errors_", "errors", m["errors"]),
+                   ("rt_", "correct_rt", m["correct_rt"]))  # fmt: skip
+        for prefix, outcome, tests in sources:
+            for effect in WITHIN:
+                name = f"{mode}_{prefix}{effect.replace('congruency:size', 'grip')}"
+                said = lambda t, o=outcome, e=effect: text.claim_verdict(t, o, e)  # noqa: E731
+                out |= text.test_values("tests", name, tests[effect], said)
+        for name, term in anova["simple"][mode].items():
+            out |= text.test_values("tests", f"{mode}_{name}", term, text.shown_word)
     return out
-
-
-def discussion(anova: dict, demos: dict, cue: str) -> dict:
-    """The paper's two effects on its measure and its two parts (closed loop), the required
-    grip, the simple effects by cell, and the teacher-forced size terms."""
-    gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
-    loop, forced = anova["closed_loop"], anova["contrasts"]["teacher_forced"]
-    simple = {mode: anova["simple"][mode] for mode in MODES}
-    out = {"grip_distance_large": gap["large"], "grip_distance_small": gap["small"], "cue": cue}
-    out |= {f"wrong_{k}": v for k, v in
-            science.wrong_grip_by_congruency(loop["wrong_grip_rate"]).items()}  # fmt: skip
-    verdicts = {"": text.verdict_word, "errors_": text.shown_word, "rt_": text.verdict_word}
-    out |= _main_effects(anova, "discussion", verdicts)
-    for prefix, term in (
-        ("rt_grip", loop["correct_rt"]["congruency:size"]),
-        ("size_in_congruent", simple["closed_loop"]["size_in_congruent"]),
-        ("forced_grip", forced["congruency:size"]),
-        ("forced_size_in_congruent", simple["teacher_forced"]["size_in_congruent"]),
-        ("forced_size_in_incongruent", simple["teacher_forced"]["size_in_incongruent"]),
-    ):
-        out |= text.test_values("discussion", prefix, term, text.shown_word)
-    return out | text.test_values("discussion", "forced_size", forced["size"])  # the paper's
-
-
-def comparison(anova: dict, curve: dict, config: dict) -> pd.DataFrame:
-    """The paper's numbers beside this run's (closed loop, per-network contrasts)."""
-    net, m, n = config["network"], anova["closed_loop"]["means"], anova["closed_loop"]["n_networks"]
-
-    def effect(name: str) -> str:
-        first, second = science.PAPER_ORDER[name]
-        lower = first if m[first] < m[second] else second
-        return (
-            f"closed loop, {lower} lower: {first} {m[first]:.4f}, {second} {m[second]:.4f}; "
-            f"per-network contrast {text.fmt_term(anova['contrasts']['closed_loop'][name])}"
-        )
-
-    at, seqs, first = curve["at"], config["demos"]["sequences"], net["phase1_iterations"]
-    rows = [
-        ("RMSE at the start of training", "start", f"{curve['start']:.3f} (first 10 iterations)"),
-        ("RMSE after about 2000 iterations", "around_2000",
-         f"{curve['around_at']:.3f} (iterations {at - 100}-{at + 100})"),
-        ("RMSE afterwards", "end", f"{curve['end']:.3f} (last 500 iterations)"),
-        ("congruent vs incongruent", "congruency", effect("congruency")),
-        ("large vs small objects", "size", effect("size")),
-        ("networks", "networks", f"{n} ({n // 2} per mapping)"),
-        ("learning rate", "learning_rate", f"{net['learning_rate']}"),
-        ("iterations", "iterations",
-         f"{net['iterations']:,} ({first} + {net['iterations'] - first})"),
-        ("hidden units", "hidden", f"{net['hidden']}"),
-        ("sequences per object (train + test)", "sequences", f"{seqs} ({seqs - 1} + 1)"),
-    ]  # fmt: skip
-    return pd.DataFrame([(quantity, PAPER[key], run) for quantity, key, run in rows],
-                        columns=["quantity", "paper", "this run"])  # fmt: skip
 
 
 # -- which reading reproduces the paper ---------------------------------------------------------
@@ -736,15 +643,12 @@ def page_findings(
         pages[page], tables = values, tables | shown
     pages["robustness"], sweep = robustness(inputs, config)
     pages |= {
-        "intro": intro(anova) | score_values, "results": results(anova, curve, cue),
-        "discussion": discussion(anova, load_npz(inputs["demos.npz"]), cue),
+        "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),
+        "intro": score_values,
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
     } | methods(inputs, config)  # fmt: skip
-    tables |= {f"anova_{mode}": anova_rows(anova, mode) for mode in MODES}
     tables |= {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
-    tables |= {"object_means": object_means(_json(inputs["measures.json"])),
-               "headline": headline(anova), "scorecard": score_table,
-               "comparison": comparison(anova, curve, config)}  # fmt: skip
+    tables |= {"headline": headline(anova), "scorecard": score_table}  # fmt: skip
     if sweep is not None:
         tables["sweep"] = sweep
     return traced(pages), tables
