@@ -263,7 +263,7 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
 
     def said(t):
         words = {"reproduced": "larger first", "reversed": "larger every"}
-        found = pages.traced({"beyond": pages.tested("beyond", "d", t, words)})
+        found = pages.traced({"beyond": text.test_values("beyond", "d", t, words=words)})
         assert found["claims"]["beyond"]["d_verdict"] == ["beyond.d_estimate", "beyond.d_p_holm"]
         return found["beyond"]["d_verdict"]
 
@@ -382,15 +382,19 @@ def test_the_books_test_tables_name_their_families_and_adjust_within_them(built)
         "confirmatory", "exploration: closed loop", "exploration: teacher forced"
     }  # fmt: skip
     holm_by_family(both, "p", "p (Holm, within its family)", "family")
-    headline = pd.read_csv(tables / "headline.csv")
     # the front page's rows are tests of these tables: the same p, family and adjusted p
-    for _, row in headline.iterrows():
-        if np.isnan(row["p"]):
-            assert np.isnan(row["Holm p"])
-            continue
-        match = both[(both["family"] == row["family"]) & np.isclose(both["p"], row["p"])]
-        assert len(match) >= 1, row.to_dict()
-        assert match["p (Holm, within its family)"].iloc[0] == pytest.approx(row["Holm p"])
+    found = json.loads((built / "data" / "book" / "findings.json").read_text())["tests"]
+    for prefix in ("", "errors_", "rt_"):
+        for effect in ("congruency", "size", "grip"):
+            key = f"closed_loop_{prefix}{effect}"
+            if np.isnan(found[f"{key}_p"]):
+                assert np.isnan(found[f"{key}_p_holm"])
+                continue
+            match = both[(both["family"] == found[f"{key}_family"]) & np.isclose(
+                both["p"], found[f"{key}_p"])]  # fmt: skip
+            assert len(match) >= 1, key
+            assert match["p (Holm, within its family)"].iloc[0] == pytest.approx(
+                found[f"{key}_p_holm"])  # fmt: skip
 
 
 @pytest.mark.slow

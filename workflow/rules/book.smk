@@ -109,7 +109,6 @@ FINDINGS_READS = [
 FINDINGS_TABLES = [
     "contrasts_closed_loop",
     "contrasts_teacher_forced",
-    "headline",
     "scorecard",
     "cue_anova",
     "cue_effects",

@@ -61,20 +61,6 @@ def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
     )  # fmt: skip
 
 
-def headline(anova: dict) -> pd.DataFrame:
-    """The front page's table: the paper's two effects and the required grip (closed loop) on
-    the paper's measure and its two parts, each with its verdict word."""
-    closed = {"contrasts": anova["contrasts"]["closed_loop"]}
-    closed |= {o: anova["closed_loop"][o] for o in ("errors", "correct_rt")}
-    return pd.DataFrame(
-        {"measure": OUTCOME_LABELS[o], "effect": text.term_name(e),
-         "estimate [95% interval]": f"{t['estimate']:+.4f} {text.fmt_ci(t)}", "df": t["df"],
-         "p": t["p"], "family": t["family"], "Holm p": t["p_holm"],
-         "verdict": text.claim_verdict(t, o, e)}
-        for o, tests in closed.items() for e in WITHIN for t in [tests[e]]
-    )  # fmt: skip
-
-
 def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
     """The config's own run, named once for every page that states it (the front page, the
     results, the discussion, the comparison): the learning curve, the cell means, and each test
@@ -251,17 +237,6 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     return "reproduced" if verdict.paper_direction else "reversed"
 
 
-def tested(page: str, prefix: str, term: dict, words: Mapping[str, str] | None = None) -> dict:
-    """A test's numbers (NaN where untested), its family and ``<prefix>_verdict``:
-    ``text.verdict_word`` (or its ``words``), a claim resting on the estimate and adjusted p."""
-    out = {f"{prefix}_{k}": term.get(k, np.nan) for k in ("estimate", "ci_low", "ci_high", "p")}
-    out[f"{prefix}_p_holm"] = term.get("p_holm", out[f"{prefix}_p"])
-    word = text.verdict_word({"estimate": out[f"{prefix}_estimate"], "p": out[f"{prefix}_p_holm"]})
-    rests = (f"{page}.{prefix}_estimate", f"{page}.{prefix}_p_holm")
-    claim = text.Claim((words or {}).get(word, word), rests)
-    return out | {f"{prefix}_family": term.get("family", "none"), f"{prefix}_verdict": claim}
-
-
 def divergence_verdict(first: int | None) -> text.Claim:
     """The hidden layer's lasting conflict (per-step paired tests, Holm over the steps)."""
     lasting = "not at every step to the last (no lasting conflict shown)"
@@ -292,7 +267,7 @@ def _robot_values(emb: dict, own: dict) -> dict:
         words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
                  "not shown": "not shown to differ"}  # fmt: skip
         term = (err["contrasts"] or {}).get(effect) or {}
-        out |= tested("beyond", f"emb_final_error_{effect}", term, words)
+        out |= text.test_values("beyond", f"emb_final_error_{effect}", term, words=words)
     return out
 
 
@@ -313,7 +288,9 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])
         anova += [{"cue": cue, "test": mode, "effect": e} | term for mode in MODES
                   for e, term in result[mode]["repeated_measures"].items()]  # fmt: skip
-        mine = tested("beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"])
+        mine = text.test_values(
+            "beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"]
+        )
         mine |= {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
         out |= mine
         mine = {k.removeprefix(f"cue_{name}_"): v for k, v in mine.items()}
@@ -332,7 +309,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     words = {"reproduced": "larger with the cue at the first step only",
              "reversed": "larger with the cue at every step",
              "not shown": "not shown to differ between the timings"}  # fmt: skip
-    out |= tested("beyond", "cue_difference", difference, words)
+    out |= text.test_values("beyond", "cue_difference", difference, words=words)
     p, family = out["cue_difference_p_holm"], out["cue_difference_family"]
     out["cue_difference_p_words"] = (
         f"Holm p {p:.2g} within “{family}”" if family != FAMILY_NONE
@@ -648,7 +625,7 @@ def page_findings(
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
     } | methods(inputs, config)  # fmt: skip
     tables |= {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
-    tables |= {"headline": headline(anova), "scorecard": score_table}  # fmt: skip
+    tables |= {"scorecard": score_table}  # fmt: skip
     if sweep is not None:
         tables["sweep"] = sweep
     return traced(pages), tables

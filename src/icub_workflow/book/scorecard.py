@@ -18,15 +18,11 @@ PAPER_SAYS = {"congruency": "congruent lower, significant", "size": "large lower
 
 
 def _tested(prefix: str, term) -> tuple[dict, str]:
-    """A test's numbers as values, its verdict (``text.verdict_word`` on the adjusted p) and the
-    result cell."""
-    est, low, high, p = (float(term[k]) for k in ("estimate", "ci_low", "ci_high", "p_holm"))
-    values = {f"{prefix}_{k}": v for k, v in zip(("estimate", "ci_low", "ci_high", "p_holm"),
-                                                 (est, low, high, p), strict=True)}  # fmt: skip
-    word = text.verdict_word({"estimate": est, "p": p})
-    values[f"{prefix}_family"] = str(term["family"])
-    values[f"{prefix}_verdict"] = text.Claim(word, (f"intro.{prefix}_estimate",
-                                                    f"intro.{prefix}_p_holm"))  # fmt: skip
+    """A test's values and verdict (``text.test_values``), and the result cell."""
+    values = text.test_values("intro", prefix, dict(term))
+    est, low, high, p = (
+        values[f"{prefix}_{k}"] for k in ("estimate", "ci_low", "ci_high", "p_holm")
+    )
     return values, f"{est:+.4f} [{low:+.4f}, {high:+.4f}]; Holm p {p:.2g} ({term['family']})"
 
 

@@ -51,7 +51,7 @@ def fmt_term(term: dict) -> str:
     return (
         f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
         f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
-        + (f", {fmt_family(term)}" if "family" in term else "")
+        + (f", {fmt_family(term)}" if "family_size" in term else "")
     )
 
 
@@ -125,14 +125,20 @@ def shown_word(term: dict, alpha: float = ALPHA) -> str:
     return "shown" if word in ("reproduced", "reversed") else word
 
 
-def test_values(page: str, prefix: str, term: dict, verdict=verdict_word) -> dict:
-    """A test as page values: its numbers as the analysis wrote them, ``_stats`` (all of them for
-    reading), and ``_verdict``, a ``Claim`` resting on its estimate and adjusted p."""
-    values = {f"{prefix}_{key}": term[key] for key in ("estimate", "ci_low", "ci_high", "p")}
-    values[f"{prefix}_p_holm"] = term.get("p_holm", term["p"])
-    values[f"{prefix}_stats"] = fmt_term(term)
+def test_values(page: str, prefix: str, term: dict, verdict=verdict_word, words=None) -> dict:
+    """A test as page values: its numbers as the analysis wrote them (NaN where untested), its
+    family, its statistics in a line where it has them, and ``_verdict``: a ``Claim`` resting on
+    its estimate and adjusted p, said in ``words`` (verdict word: phrase) where given."""
+    values = {
+        f"{prefix}_{k}": term.get(k, math.nan) for k in ("estimate", "ci_low", "ci_high", "p")
+    }
+    values[f"{prefix}_p_holm"] = term.get("p_holm", values[f"{prefix}_p"])
+    values[f"{prefix}_family"] = term.get("family", "none")
+    if "t" in term:
+        values[f"{prefix}_stats"] = fmt_term(term)
+    word = verdict(term | {k: values[f"{prefix}_{k}"] for k in ("estimate", "p", "p_holm")})
     rests = (f"{page}.{prefix}_estimate", f"{page}.{prefix}_p_holm")
-    return values | {f"{prefix}_verdict": Claim(verdict(term), rests)}
+    return values | {f"{prefix}_verdict": Claim((words or {}).get(word, word), rests)}
 
 
 def pct(x: float) -> str:
@@ -159,12 +165,6 @@ def growth_phrase(growth: dict) -> str:
     if abs(growth["change"]) <= 0.1:
         return "linearly"
     return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
-
-
-def build_scale(scale: dict[str, dict[str, int]], config: dict) -> dict:
-    """What this build (``now``) and the other scale build (runs.RunPlan.scale), and whether this
-    is the full scale (``robustness: true``): the reproduction notes' table."""
-    return scale | {"full": bool(config["robustness"])}
 
 
 # ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
