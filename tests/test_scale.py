@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import itertools
+import json
 
 import pytest
+import yaml
 from conftest import REPO, load_config, load_test_config, run_snakemake, scratch_workflow
 
 from icub_workflow.sweep_timing import planned_jobs
@@ -315,9 +317,9 @@ def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers(
     assert values["networks"] == points * config["network"]["networks"]
 
 
-def test_the_reproduction_notes_say_which_scale_this_build_is():
-    from icub_workflow.book.text import build_scale
-
-    scale = {"now": {"sweep": 0, "variants": 3}, "other": {"sweep": 20, "variants": 95}}
-    assert build_scale(scale, {"robustness": False}) == scale | {"full": False}
-    assert build_scale(scale, {"robustness": True})["full"] is True
+@pytest.mark.slow
+def test_the_reproduction_notes_say_which_scale_this_build_is(built):
+    found = json.loads((built / "data" / "book" / "findings.json").read_text())["reproduce"]
+    config = yaml.safe_load((built / "config" / "config.yaml").read_text())
+    assert found["scale"]["full"] is bool(config["robustness"]) is False
+    assert set(found["scale"]) == {"now", "other", "full"}
