@@ -621,7 +621,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     size = found["size"]
     assert found["claims"]["size"]["slope_verdict_all_steps"] == [
         "size.slope_all_steps", "size.slope_p_holm_all_steps"]  # fmt: skip
-    declared = tables["size_declared"]
+    declared = tables["size_tests"]
     assert set(declared["verdict"]) <= {"reproduced", "reversed", "not shown"}
     # the slope's interval as the analysis wrote it
     low, high = size["slope_ci_low_all_steps"], size["slope_ci_high_all_steps"]

@@ -122,11 +122,7 @@ FINDINGS_TABLES = [
     "robot_pairs",
     "robot_confirmation",
     "robot_cells",
-    "size_summary",
-    "size_slope",
-    "size_power",
-    "size_declared",
-    "size_motor",
+    "size_tests",
 ]
 if config["robustness"]:
     FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]

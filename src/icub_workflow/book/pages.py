@@ -453,62 +453,38 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     return values, pd.DataFrame(rows)
 
 
-def methods(inputs: Mapping[str, str], config: dict) -> dict[str, dict]:
-    """The method pages' numbers: the demonstrations and training, the vision, the body, the
-    maps and the reproduction notes' settings."""
-    net, dem, sizes = config["network"], config["demos"], config["object_sizes_m"]
-    demos = science.demo_counts(pd.read_csv(inputs["demo_summary.csv"]))
+#: The config's sections whose settings the pages quote (``findings.json``'s ``settings``).
+QUOTED = ("seed", "object_sizes_m", "vision", "demos", "soms", "network")
+
+
+def settings(config: Mapping, prefix: str = "") -> dict:
+    """The settings by their path in the config (``network.learning_rate``), so that a page
+    quotes a setting under the name a reader changes it by."""
+    out = {}
+    for key, value in config.items():
+        if isinstance(value, Mapping):
+            out |= settings(value, f"{prefix}{key}.")
+        else:
+            out[f"{prefix}{key}"] = value
+    return out
+
+
+def methods(inputs: Mapping[str, str]) -> dict[str, dict]:
+    """The method pages' numbers: the demonstrations, the visual maps, the body and the maps."""
     soms = load_npz(inputs["soms.npz"])
     units = zip(soms["objects"].tolist(), soms["object_act"], strict=True)
+    demos = science.demo_counts(pd.read_csv(inputs["demo_summary.csv"]))
     return {
-        "training": {
-            "n_demos": demos["n_demos"], "n_attempts": demos["n_attempts"],
-            "n_retried": demos["n_retried"], "lift_min": demos["lift_min_cm"],
-            "lift_check": dem["lift_m"] * 100, "yaw": dem["yaw_deg"], "tilt": dem["tilt_deg"],
-            "shift": dem["shift_m"] * 1000, "lr": net["learning_rate"],
-            "iterations": net["iterations"], "phase1": net["phase1_iterations"],
-            "phase2_start": net["phase1_iterations"] + 1,
-            "phase2_half": (net["iterations"] - net["phase1_iterations"]) // 2,
-            "networks": net["networks"], "half_networks": net["networks"] // 2,
-            "cue": net["categorisation_cue"].replace("_", " "), "n_sequences": dem["sequences"],
-            "n_train_sequences": dem["sequences"] - 1, "n_steps": dem["steps"],
-            "last_step": dem["steps"] - 1,
-        },
+        "training": {k: demos[k] for k in ("n_demos", "n_attempts", "n_retried", "lift_min_cm")},
         "vision": {f"cells_{name}": n for name, n in
-                   science.edge_cells(load_npz(inputs["visual_maps.npz"])).items()}
-        | {"window": config["vision"]["window"], "threshold": config["vision"]["edge_threshold"]},
+                   science.edge_cells(load_npz(inputs["visual_maps.npz"])).items()},
         "robot": science.joint_counts(pd.read_csv(inputs["joint_table.csv"])),
-        "architecture": {f"units_{obj}": active_units(act) for obj, act in units}
-        | {"width_per_edge": config["soms"]["object_width_per_edge"],
-           "bump_sigma": config["soms"]["bump_sigma"], "hidden": net["hidden"]},
-        "notes": {"seed": config["seed"], "init_scale": net["init_scale"],
-                  "som_iterations": config["soms"]["iterations"]}
-        | {f"{k}_cm": 100 * sizes[o] for k, o in (("big", "big_ball"), ("small", "small_ball"),
-                                                  ("big_cube", "big_cube"),
-                                                  ("small_cube", "small_cube"))},
+        "architecture": {f"units_{obj}": active_units(act) for obj, act in units},
     }  # fmt: skip
 
 
-#: The size study's cue timings and controls, in short.
+#: The size study's cue timings, in short.
 SIZE_CUES = {"first_step": "first step", "all_steps": "every step"}
-SIZE_CONTROLS = {"removed": "no size in input", "equal_grips": "dose 0, equal grips"}
-
-
-def _condition(dose) -> str:
-    return SIZE_CONTROLS.get(str(dose)) or f"dose {float(dose):g}"
-
-
-def _size_rows(rows: pd.DataFrame, **columns) -> pd.DataFrame:
-    """Size-study tests as shown: cue, ``columns``, estimate, interval, p, Holm p and family; a
-    dash: no test could be made."""
-    number = rows[["estimate", "ci_low", "ci_high"]].astype(float)
-    number = number.map("{:+.4f}".format).where(np.isfinite(number), "–")
-    interval = ("[" + number["ci_low"] + ", " + number["ci_high"] + "]").where(
-        number["ci_low"] != "–", "–")  # fmt: skip
-    return pd.DataFrame(
-        {"cue": rows["cue"].map(SIZE_CUES)} | columns
-        | {"estimate": number["estimate"], "95% CI": interval, "p": rows["p"].map(_p),
-           "Holm p": rows["p_holm"].map(_p), "family": rows["family"]})  # fmt: skip
 
 
 def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
@@ -578,24 +554,12 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
     values["like_size"] = text.named_measures(
         ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
-    motor["cell"] = [f"{e:+.4f} ({_p(p)})" for e, p in motor[["estimate", "p_holm"]].to_numpy()]
-    motor["condition"], motor["cue"] = motor["dose"].map(_condition), motor["cue"].map(SIZE_CUES)
-    rmse = rmse.assign(test="effect, " + rmse["dose"].map(_condition))
-    declared = pd.concat([rmse, slopes.assign(test="slope, delivered")], ignore_index=True)
-    declared = declared.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
-    relative = summary["relative_to_mean"].where(summary["measure"].isin(["rmse", "rmse_correct"]))
+    tests = pd.concat([rmse, slopes], ignore_index=True).assign(
+        verdict=lambda f: f.apply(text.verdict_word, axis=1)
+    )
     return values, {
-        "size_declared": _size_rows(declared, test=declared["test"]).assign(
-            verdict=declared.apply(text.verdict_word, axis=1)),  # declared first
-        "size_summary": _size_rows(
-            summary, condition=summary["dose"].map(_condition), measure=summary["measure"],
-            **{"Goal ratio": summary["large_small_ratio_goal"].map("{:.2f}".format)},
-        ).assign(**{"rel. to mean": relative.map("{:+.3f}".format).where(relative.notna(), "–")}),
-        "size_slope": _size_rows(slope, dose=slope["axis"], measure=slope["measure"]),
-        "size_power": power,  # formatted by the page
-        "size_motor": motor.pivot(index=["condition", "cue"], columns="geometry", values="cell")
-        .rename(columns=text.GEOMETRY_SHORT).reset_index(),
-    }  # fmt: skip
+        "size_tests": tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
+    }
 
 
 def page_findings(
@@ -623,7 +587,8 @@ def page_findings(
         "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),
         "intro": score_values,
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
-    } | methods(inputs, config)  # fmt: skip
+        "settings": settings({key: config[key] for key in QUOTED}),
+    } | methods(inputs)  # fmt: skip
     tables |= {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
     tables |= {"scorecard": score_table}  # fmt: skip
     if sweep is not None:
