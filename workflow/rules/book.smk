@@ -107,8 +107,6 @@ FINDINGS_READS = [
     *(name for name in BOOK_DATA if name.startswith("curves/")),
 ]
 FINDINGS_TABLES = [
-    "contrasts_closed_loop",
-    "contrasts_teacher_forced",
     "scorecard",
     "cue_anova",
     "cue_effects",

@@ -21,16 +21,12 @@ from icub_affordance.robot_statistics import record_table
 from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
-from icub_affordance.stats import TERMS, WITHIN
+from icub_affordance.stats import WITHIN
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import OWN
 
 from . import text
 from .scorecard import scorecard
-
-#: The three readings of the paper's measure (``stats.OUTCOMES``), as the tables name them.
-OUTCOME_LABELS = {"contrasts": "RMSE, all trials", "errors": "wrong-grip rate",
-                  "correct_rt": "RMSE, correct trials"}  # fmt: skip
 
 
 def _json(path) -> dict:
@@ -41,24 +37,6 @@ def _curves(inputs: Mapping[str, str]) -> tuple[np.ndarray, np.ndarray]:
     """The learning curves' RMSE (networks, rows) and the iteration of each row."""
     tables = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
     return np.array([t["rmse"].to_numpy() for t in tables]), tables[0]["iteration"].to_numpy()
-
-
-def contrast_rows(anova: dict, mode: str) -> pd.DataFrame:
-    """Every test of one test mode, one row per measure and term, with its family and its p
-    adjusted within it (the families are whole across the two modes' tables)."""
-    rmse = OUTCOME_LABELS["contrasts"]
-    sources = (
-        [(rmse, anova["contrasts"][mode][t], text.term_name(t)) for t in TERMS]
-        + [(OUTCOME_LABELS[o], anova[mode][o][t], text.term_name(t))
-           for o in ("errors", "correct_rt") for t in WITHIN]
-        + [(rmse, term, text.simple_name(name)) for name, term in anova["simple"][mode].items()]
-    )  # fmt: skip
-    return pd.DataFrame(
-        {"measure": label, "term": name, "estimate": t["estimate"],
-         "95% interval": text.fmt_ci(t), "t": t["t"], "df": t["df"], "p": t["p"],
-         "family": t["family"], "p (Holm, within its family)": t["p_holm"]}
-        for label, t, name in sources
-    )  # fmt: skip
 
 
 def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
@@ -589,7 +567,6 @@ def page_findings(
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
         "settings": settings({key: config[key] for key in QUOTED}),
     } | methods(inputs)  # fmt: skip
-    tables |= {f"contrasts_{mode}": contrast_rows(anova, mode) for mode in MODES}
     tables |= {"scorecard": score_table}  # fmt: skip
     if sweep is not None:
         tables["sweep"] = sweep

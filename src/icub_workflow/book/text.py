@@ -55,39 +55,6 @@ def fmt_term(term: dict) -> str:
     )
 
 
-#: The terms' names: what each estimate is, in the cells it compares. With four objects the
-#: congruency x size term is twice the required grip's difference (power - precision), and the
-#: three-way term four times the cubes' mean minus the balls' (stats.CODING).
-TERM_NAMES = {
-    "congruency": "congruency (incongruent − congruent)",
-    "size": "size (small − large)",
-    "mapping": "mapping (B − A)",
-    "congruency:size": "congruency × size = 2 × required grip (power − precision)",
-    "congruency:mapping": "congruency × mapping",
-    "size:mapping": "size × mapping",
-    "congruency:size:mapping": "three-way = 4 × (cubes − balls)",
-}
-
-#: The simple effects (``stats.SIMPLE``) by the object and grip cells they compare: the cell
-#: counted positive, the cell counted negative, and which congruency or size level both share.
-SIMPLE_NAMES = {
-    "size_in_congruent": ("the small object with a precision grip required",
-                          "the large object with a power grip required", "congruent cells"),
-    "size_in_incongruent": ("the small object with a power grip required",
-                            "the large object with a precision grip required", "incongruent cells"),
-    "congruency_in_large": ("the large object with a precision grip required",
-                            "the large object with a power grip required", "large objects"),
-    "congruency_in_small": ("the small object with a power grip required",
-                            "the small object with a precision grip required", "small objects"),
-}  # fmt: skip
-
-
-def simple_name(name: str) -> str:
-    """A simple effect's row name: its two cells."""
-    first, second, _ = SIMPLE_NAMES[name]
-    return f"{first.removeprefix('the ')} − {second.removeprefix('the ')}"
-
-
 def claim_verdict(term: dict, outcome: str, effect: str) -> str:
     """The front page's verdict on one test: "reproduced" or "reversed" for the two effects the
     paper claims, on its measure or the correct trials' (its reaction-time reading); the paper
@@ -99,10 +66,6 @@ def claim_verdict(term: dict, outcome: str, effect: str) -> str:
     if effect == "congruency:size":
         return "shown" if word in ("reproduced", "reversed") else word
     return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
-
-
-def term_name(term: str) -> str:
-    return TERM_NAMES.get(term, term.replace(":", " × "))
 
 
 def verdict_word(term: dict, alpha: float = ALPHA) -> str:
