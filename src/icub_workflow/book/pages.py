@@ -402,20 +402,21 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     sweep = config["sweep"]
     points = len(sweep["categorisation_cue"]) * int(
         np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))  # fmt: skip
-    values: dict = {"ran": bool(config["robustness"]), "command": text.ROBUSTNESS_COMMAND,
-                    "points": points,
+    values: dict = {"ran": bool(config["robustness"]), "points": points,
                     "networks": points * config["network"]["networks"]}  # fmt: skip
     if not config["robustness"]:
-        return values, None
+        return values | {
+            "sweep_ran": "did not run it (robustness is false, the default)",
+            "cost_shape": "was not measured: the sweep did not run"}, None  # fmt: skip
     from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
 
     summary = pd.read_csv(inputs["sweep_summary.csv"])
-    cost = read_cost_table(inputs["sweep_cost.csv"])
-    growth = cost_growth(cost["replications"], cost["seconds"])
-    values |= {"seeds": ", ".join(map(str, sweep["seeds"])), "settings": len(summary),
-               "cost_change": float(growth["change"]),
-               "cost_shape": text.Claim(text.growth_phrase(growth),
-                                        ("robustness.cost_change",))}  # fmt: skip
+    growth = cost_growth(*read_cost_table(inputs["sweep_cost.csv"])[["replications", "seconds"]]
+                         .to_numpy().T)  # fmt: skip
+    values |= {"sweep_ran": f"ran it: seeds {', '.join(map(str, sweep['seeds']))}, "
+               f"{len(summary)} setting(s)", "cost_change": float(growth["change"]),
+               "cost_shape": text.Claim(f"grew {text.growth_phrase(growth)}, read as the "
+                                        "timings stand", ("robustness.cost_change",))}  # fmt: skip
     rows = []
     for (_, r), effect in ((row, e) for row in summary.iterrows() for e in ("congruency", "size")):
         n = r["replications"]

@@ -113,10 +113,9 @@ def pct(x: float) -> str:
 
 # The robustness page (book/robustness.md) and the reproduction notes' scale.
 
-ROBUSTNESS_COMMAND = "snakemake -c2 --config robustness=True"
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
 #: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
-SWEEP_DIRECTIONS = {"paper": "paper's direction", "against": "reversed", "unclear": "not shown"}
+SWEEP_DIRECTIONS = {"paper": "reproduced", "against": "reversed", "unclear": "not shown"}
 SWEEP_DIRECTIONS["single"] = "one replication"
 
 
