@@ -74,10 +74,6 @@ def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
 # -- which reading reproduces the paper ---------------------------------------------------------
 
 
-def _p(p: float) -> str:
-    return f"{p:.2g}" if np.isfinite(p) else "–"
-
-
 def _holm(row, column: str = "p_holm") -> str:
     """A Holm p (2 significant digits), or why the row has none."""
     if np.isfinite(row[column]):
@@ -96,35 +92,20 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
     return family
 
 
-def _tests(table: pd.DataFrame) -> pd.DataFrame:
-    """The readings' summary or differences as the tables show them, with ``cell``: the estimate
-    and, for a hypothesis, its verdict (``readings.direction``, ``readings.difference_verdict``);
-    no estimate: too few replications answered the cell, never tested, which is not "not shown"."""
+def _shown(table: pd.DataFrame, test) -> pd.DataFrame:
+    """The readings' summary or differences with what the page shows beside the numbers: the
+    reading or comparison (``first · fixed``, ``cue · fixed``), the measure's name, a
+    hypothesis's verdict word (``test``; "not estimable" where too few replications answered
+    the cell, so it was never tested) and why a row has no Holm p."""
     compared = "comparison" in table
-    test = readings_science.difference_verdict if compared else readings_science.direction
-    words = table.apply(test, axis=1).map(lambda word: " " + text.WORDS.get(word, word))
+    words = table.apply(test, axis=1).map(lambda word: text.WORDS.get(word, word))
     words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
-    words = words.where(table["diff"].notna(), " not estimable")
-    low, diff, high = (
-        table[c].map(
-            lambda d: np.format_float_positional(d, 3, fractional=False, sign=True) if d else "0"
-        )
-        for c in ("ci_low", "diff", "ci_high")
-    )
     named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
-    return pd.DataFrame({
-        "comparison" if compared else "reading": named.replace(text.CUE_LABELS).agg(
-            " · ".join, axis=1),
-        "measure": table["measure"].map(text.MEASURE_LABELS), "effect": table["effect"],
-        "estimate [95% interval]": diff + " [" + low + ", " + high + "]",
-        "p": table["p"].map(_p), f"Holm p, “{_family(table)}”": table.apply(_holm, axis=1),
-        "cell": diff + words})  # fmt: skip
-
-
-def _matrix(tests: pd.DataFrame) -> pd.DataFrame:
-    """Measure and effect (rows) by reading or comparison (columns): each estimate and verdict."""
-    cells = tests.pivot_table("cell", ["measure", "effect"], tests.columns[0], "first", sort=False)
-    return cells.reset_index().rename_axis(columns=None)
+    return table.assign(
+        named=named.replace(text.CUE_LABELS).agg(" · ".join, axis=1),
+        label=table["measure"].map(text.MEASURE_LABELS), holm=table.apply(_holm, axis=1),
+        hypothesis=table["measure"].map(readings_science.is_hypothesis),
+        verdict=words.where(table["diff"].notna(), "not estimable"))  # fmt: skip
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -153,26 +134,12 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     }  # fmt: skip
     values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
     values |= text.difference_claims(diffs, "goal_response", "goal")
-    shown, compared = _tests(summary), _tests(diffs)
-    if (summary["replications"] > 1).any():
-        counts = summary[["n_paper", "n_reversed", "replications"]].to_numpy()
-        shown["significant: paper / reversed"] = [f"{a} / {b} of {n}" for a, b, n in counts]
+    compared = _shown(diffs, readings_science.difference_verdict)
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
         diffs["margin"].notna(), "–")  # fmt: skip
     tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
-    compared[f"TOST Holm p (margin), “{values['family_equivalence']}”"] = tost  # none: no TOST
-    study = config["readings"]
-    margins = pd.DataFrame(  # each margin shown, when it was declared, and whether blind
-        {"measure": text.MEASURE_LABELS[m], "margin": f"±{study['equivalence_margin'][m]:g}",
-         "declared in": d["commit"], "its results read before": ("no", "yes")[d["results_before"]]}
-        for m, d in study["margin_declared"].items() if m in study["measures"]
-    )  # fmt: skip
-    hypotheses = diffs["measure"].map(readings_science.is_hypothesis)
-    return values, {
-        "readings_matrix": _matrix(shown), "readings_summary": shown.drop(columns="cell"),
-        "readings_verdicts": _matrix(compared[hypotheses]),
-        "readings_differences": compared.drop(columns="cell"), "readings_margins": margins,
-    }  # fmt: skip
+    return values, {"readings_summary": _shown(summary, readings_science.direction),
+                    "readings_differences": compared.assign(tost=tost)}  # fmt: skip
 
 
 # -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------

@@ -145,7 +145,13 @@ MEASURE_LABELS = {
     "rmse_per_grip_distance_excess": "excess over null",
 }
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
-WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller"}
+WORDS = {
+    "none": "not shown",
+    "constant": "no variation",
+    "a > b": "larger",
+    "a < b": "smaller",
+    "paper": "reproduced",
+}
 
 
 def stat_key(row, stat: str) -> str:
