@@ -132,13 +132,14 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "family": _family(summary), "family_differences": _family(diffs),
         "family_equivalence": _family(diffs, "family_equivalence", "p_equivalence_holm"),
     }  # fmt: skip
-    values |= text.reading_claims(summary) | text.difference_claims(diffs, "cue_timing", "cue")
-    values |= text.difference_claims(diffs, "goal_response", "goal")
+    shown = _shown(summary, readings_science.direction)
     compared = _shown(diffs, readings_science.difference_verdict)
+    values |= text.reading_claims(shown) | text.difference_claims(compared, "cue_timing", "cue")
+    values |= text.difference_claims(compared, "goal_response", "goal")
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
         diffs["margin"].notna(), "–")  # fmt: skip
     tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
-    return values, {"readings_summary": _shown(summary, readings_science.direction),
+    return values, {"readings_summary": shown,
                     "readings_differences": compared.assign(tost=tost)}  # fmt: skip
 
 
@@ -434,8 +435,7 @@ SIZE_CUES = {"first_step": "first step", "all_steps": "every step"}
 
 
 def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
-    """Each test's numbers (``<key>_<stat>_<cue>``), its verdict or trend resting on them, and per
-    key one phrase over the cue timings this build ran (a config may run one)."""
+    """Each test's numbers (``<key>_<stat>_<cue>``), and its verdict or trend resting on them."""
     for key, rows in tests.items():
         for _, row in rows.iterrows():
             cue = row["cue"]
@@ -446,22 +446,12 @@ def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
             phrase = text.trend_phrase if key in ("slope", "grips") else text.verdict_word
             rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
             values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
-    for key in tests:
+    for key in tests:  # one phrase over the cue timings this build ran (a config may run one)
         ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
+        said = [f"{values[f'{key}_verdict_{cue}'].text} ({SIZE_CUES[cue]})" for cue in ran]
         rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
-        said = {cue: (values[f"{key}_verdict_{cue}"].text, values[f"{key}_{cue}"],
-                      values[f"{key}_ci_low_{cue}"], values[f"{key}_ci_high_{cue}"],
-                      values[f"{key}_p_holm_{cue}"]) for cue in ran}  # fmt: skip
-        phrases = {
-            "slope": lambda w, x, *_, c: f"{w} with {text.CUES[c]} (slope {x:+.4f} per unit of "
-            "delivered dose)",
-            "grips_tests": lambda w, x, lo, hi, p, c: f"{x:+.4f} (95% interval [{lo:+.4f}, "
-            f"{hi:+.4f}], Holm p {p:.2g}) with {text.CUES[c]}",
-        }  # fmt: skip
-        for name in [key, "grips_tests"] if key == "grips" else [key]:
-            say = phrases.get(name, lambda w, *_, c: f"{w} ({SIZE_CUES[c]})")
-            joined = " and ".join(say(*said[cue], c=cue) for cue in ran)
-            values[f"{name}_by_cue"] = text.Claim(joined, rests) if ran else "not run in this build"
+        values[f"{key}_by_cue"] = text.Claim(" and ".join(said), rests) if ran else (
+            "not run in this build")  # fmt: skip
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -500,7 +490,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
     values["like_size"] = text.named_measures(
         ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
-    tests = pd.concat([rmse, slopes], ignore_index=True).assign(
+    tests = pd.concat([rmse, slopes, grips.assign(dose="grips")], ignore_index=True).assign(
         verdict=lambda f: f.apply(text.verdict_word, axis=1)
     )
     return values, {

@@ -1,8 +1,7 @@
-"""The book's words: numbers formatted for reading, and the sentences generated from the run.
+"""The book's verdict words and the few phrases chosen by a test: the pages hold the sentences.
 
-The verdicts behind the sentences (is an effect in the paper's direction, is it significant)
-are the package's (``icub_affordance.findings``); this module only says them. The rule
-``findings`` (``workflow/scripts/findings.py``) calls it, and the pages show what it wrote.
+Each verdict is a ``Claim`` naming the ``findings.json`` entries it rests on; the tests flip
+those statistics and check that the words follow.
 """
 
 from __future__ import annotations
@@ -11,15 +10,12 @@ import math
 from dataclasses import dataclass
 
 from icub_affordance.findings import ALPHA
-from icub_affordance.measures import is_hypothesis
 
 
 @dataclass(frozen=True)
 class Claim:
-    """A generated sentence that states a finding, and the entries of ``findings.json`` it rests
-    on (``"page.key"``: the statistic, not its words). The page shows ``text``; ``findings.json``
-    keeps ``rests_on`` under ``claims``, so a reader (and a test) can trace every finding the
-    book states to the numbers behind it."""
+    """Words that state a finding, and the entries (``"page.key"``) of the statistics it rests
+    on: ``findings.json`` keeps them under ``claims``, so each can be traced to its numbers."""
 
     text: str
     rests_on: tuple[str, ...]
@@ -33,45 +29,19 @@ def fmt_p(p: float) -> str:
     return "p < 0.001" if p < 0.001 else f"p = {p:.3f}"
 
 
-def fmt_ci(term: dict) -> str:
-    return f"[{term['ci_low']:+.4f}, {term['ci_high']:+.4f}]"
-
-
-def fmt_family(term: dict) -> str:
-    """An adjusted p with the family it is adjusted within (``stats.adjust_families``)."""
-    return (
-        f"Holm-adjusted within the family “{term['family']}” ({term['family_size']} tests) "
-        f"{fmt_p(term['p_holm'])}"
-    )
-
-
 def fmt_term(term: dict) -> str:
-    """A tested term: estimate, 95% t-interval, t with its degrees of freedom, p, and where it
-    has one, its p adjusted within its named family."""
-    return (
-        f"estimate {term['estimate']:+.4f}, 95% interval {fmt_ci(term)}, "
-        f"t({term['df']:.0f}) = {term['t']:.2f}, {fmt_p(term['p'])}"
-        + (f", {fmt_family(term)}" if "family_size" in term else "")
-    )
-
-
-def claim_verdict(term: dict, outcome: str, effect: str) -> str:
-    """The front page's verdict on one test: "reproduced" or "reversed" for the two effects the
-    paper claims, on its measure or the correct trials' (its reaction-time reading); the paper
-    claims nothing of errors, nor of the required grip (the congruency x size term), so those
-    are "shown", "shown, opposite" (against the paper's direction) or "not shown"."""
-    word = verdict_word(term)
-    if outcome != "errors" and effect != "congruency:size":
-        return word
-    if effect == "congruency:size":
-        return "shown" if word in ("reproduced", "reversed") else word
-    return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
+    """Estimate, 95% interval, t, p and, where it has one, its p adjusted within its family."""
+    family = (f", Holm-adjusted within the family “{term['family']}” ({term['family_size']} "
+              f"tests) {fmt_p(term['p_holm'])}") if "family_size" in term else ""  # fmt: skip
+    return (f"estimate {term['estimate']:+.4f}, 95% interval [{term['ci_low']:+.4f}, "
+            f"{term['ci_high']:+.4f}], t({term['df']:.0f}) = {term['t']:.2f}, "
+            f"{fmt_p(term['p'])}{family}")  # fmt: skip
 
 
 def verdict_word(term: dict, alpha: float = ALPHA) -> str:
-    """A test against the paper's direction (positive estimate): "reproduced" or "reversed"
-    where its p adjusted within its family is below ``alpha``, else "not shown" (which is not
-    "no difference": only an equivalence test says that); "not testable" where it has no p."""
+    """Against the paper's direction (a positive estimate): "reproduced" or "reversed" where the
+    p adjusted within its family is below ``alpha``, else "not shown" (not "no difference": only
+    an equivalence test says that); "not testable" where there is no p."""
     p = term.get("p_holm", term["p"])
     if not math.isfinite(p):
         return "not testable"
@@ -81,20 +51,29 @@ def verdict_word(term: dict, alpha: float = ALPHA) -> str:
 
 
 def shown_word(term: dict, alpha: float = ALPHA) -> str:
-    """A difference the paper does not predict (a simple effect, the wrong-grip rate, the
-    required grip): "shown" where its p adjusted within its family is below ``alpha``, else "not
-    shown"; its sign is in the estimate beside it."""
+    """A difference the paper does not predict: "shown" or "not shown"; its sign is beside it."""
     word = verdict_word(term, alpha)
     return "shown" if word in ("reproduced", "reversed") else word
 
 
+def claim_verdict(term: dict, outcome: str, effect: str) -> str:
+    """The paper claims its two effects on its measure and, read as reaction time, on correct
+    trials: "reproduced" or "reversed"; it claims nothing of errors ("shown", "shown, opposite")
+    nor of the required grip, the congruency x size term ("shown")."""
+    word = verdict_word(term)
+    if effect == "congruency:size":
+        return shown_word(term)
+    if outcome == "errors":
+        return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
+    return word
+
+
 def test_values(page: str, prefix: str, term: dict, verdict=verdict_word, words=None) -> dict:
     """A test as page values: its numbers as the analysis wrote them (NaN where untested), its
-    family, its statistics in a line where it has them, and ``_verdict``: a ``Claim`` resting on
-    its estimate and adjusted p, said in ``words`` (verdict word: phrase) where given."""
-    values = {
-        f"{prefix}_{k}": term.get(k, math.nan) for k in ("estimate", "ci_low", "ci_high", "p")
-    }
+    family, its statistics in a line, and ``_verdict``: a ``Claim`` resting on its estimate and
+    adjusted p, said in ``words`` ({verdict word: phrase}) where given."""
+    keys = ("estimate", "ci_low", "ci_high", "p")
+    values = {f"{prefix}_{k}": term.get(k, math.nan) for k in keys}
     values[f"{prefix}_p_holm"] = term.get("p_holm", values[f"{prefix}_p"])
     values[f"{prefix}_family"] = term.get("family", "none")
     if "t" in term:
@@ -108,20 +87,20 @@ def pct(x: float) -> str:
     return f"{100 * x:.0f}%"
 
 
-# The main effects: the front page, the results, the discussion and the chapter beyond the paper.
+def listing(items, none: str) -> str:
+    """Items joined by commas and "and"; ``none`` where there is none."""
+    items = list(items)
+    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else (items or [none])[0]
 
-
-# The robustness page (book/robustness.md) and the reproduction notes' scale.
 
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
 #: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
-SWEEP_DIRECTIONS = {"paper": "reproduced", "against": "reversed", "unclear": "not shown"}
-SWEEP_DIRECTIONS["single"] = "one replication"
+SWEEP_DIRECTIONS = {"paper": "reproduced", "against": "reversed", "unclear": "not shown",
+                    "single": "one replication"}  # fmt: skip
 
 
 def growth_phrase(growth: dict) -> str:
-    """How the sweep's wall time grows (growth.cost_growth's ``change``, the last added
-    replication's cost over the first's less one): within 10%, "linearly"."""
+    """How the sweep's wall time grows with its replications (``growth.cost_growth``)."""
     if len(growth["marginal"]) < 2:
         return "in a way two timings cannot show: it takes three to tell"
     if abs(growth["change"]) <= 0.1:
@@ -129,29 +108,17 @@ def growth_phrase(growth: dict) -> str:
     return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
 
 
-# ---- Which reading reproduces the paper (book/readings.md) --------------------------------------
-# Short verdict phrases on the readings' tests, each a Claim resting on the page's statistics
-# (``stat_key``); the sentences around them are the page's own.
+# -- which reading reproduces the paper: phrases on the readings' tests (``pages._shown``) -----
 
-#: The chapter's names of the measures, of the readings' choices (its tables' legend) and of the
-#: verdicts (``readings.direction``, ``readings.difference_verdict``) where they differ.
-MEASURE_LABELS = {
-    "rmse": "RMSE",
-    "rmse_correct": "correct-trial RMSE",
-    "wrong_grip": "wrong-grip rate",
-    "commitment": "commitment",
-    "rmse_per_grip_distance": "RMSE per grip distance",
-    "rmse_per_grip_distance_null": "null control",
-    "rmse_per_grip_distance_excess": "excess over null",
-}
+MEASURE_LABELS = {"rmse": "RMSE", "rmse_correct": "correct-trial RMSE",
+                  "wrong_grip": "wrong-grip rate", "commitment": "commitment",
+                  "rmse_per_grip_distance": "RMSE per grip distance",
+                  "rmse_per_grip_distance_null": "null control",
+                  "rmse_per_grip_distance_excess": "excess over null"}  # fmt: skip
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
-WORDS = {
-    "none": "not shown",
-    "constant": "no variation",
-    "a > b": "larger",
-    "a < b": "smaller",
-    "paper": "reproduced",
-}
+#: The words of ``readings.direction`` and ``readings.difference_verdict``, where they differ.
+WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller",
+         "paper": "reproduced"}  # fmt: skip
 
 
 def stat_key(row, stat: str) -> str:
@@ -160,80 +127,61 @@ def stat_key(row, stat: str) -> str:
     return "_".join([*(row[c] for c in first), row["measure"], row["effect"], stat])
 
 
-def _rests_on(rows, stats) -> tuple[str, ...]:
-    """The rows' statistics that exist (a constant cell has no p, an identical difference no
-    test), as what a claim rests on."""
-    found = ((r, s) for _, r in rows.iterrows() for s in stats if math.isfinite(r[s]))
-    return tuple(f"readings.{stat_key(r, s)}" for r, s in found)
+def _claim(rows, stats, said: str) -> Claim | str:
+    """A phrase as a claim on the rows' statistics that exist; with none (nothing could be
+    tested), no claim."""
+    found = [f"readings.{stat_key(r, s)}" for _, r in rows.iterrows() for s in stats
+             if math.isfinite(r[s])]  # fmt: skip
+    return Claim(said, tuple(found)) if found else said
 
 
-def _listing(items, none: str) -> str:
-    items = list(items)
-    return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else (items or [none])[0]
-
-
-def reading_claims(summary) -> dict[str, Claim]:
-    """Per tested measure, the readings whose congruency or size effect goes the paper's way on
-    Holm's p (``paper_<measure>_<effect>``), and those where both do (``both_<measure>``)."""
-    from icub_affordance.readings import direction
-
+def reading_claims(shown) -> dict[str, Claim | str]:
+    """Per tested measure, the readings whose congruency, size, or both (``both_<measure>``) go
+    the paper's way on Holm's p (``paper_<measure>_<effect>``)."""
     out = {}
-    tested = summary[summary["measure"].map(is_hypothesis)]
-    for measure, rows in tested.groupby("measure", sort=False):
-        names = rows["cue"].map(CUE_LABELS) + " · " + rows["goal_response"]
-        paper = rows.apply(direction, axis=1) == "paper"
-        shown = rows["effect"][paper].groupby(names[paper]).agg(set)
+    for measure, rows in shown[shown["hypothesis"]].groupby("measure", sort=False):
+        paper = rows[rows["verdict"] == "reproduced"].groupby("named")["effect"].agg(set)
         for effects in (("congruency",), ("size",), ("congruency", "size")):
-            chosen = [n for n in names.unique() if set(effects) <= shown.get(n, set())]
-            every = len(chosen) == names.nunique()
-            words = "every reading" if every else _listing(chosen, "no reading")
+            chosen = [n for n in rows["named"].unique() if set(effects) <= paper.get(n, set())]
+            said = "every reading" if len(chosen) == rows["named"].nunique() else chosen
             key = f"paper_{measure}_{effects[0]}" if len(effects) == 1 else f"both_{measure}"
-            rests = _rests_on(rows, ("diff", "p_holm"))
-            # a measure none of whose readings could be tested (too few correct trials at a
-            # small scale) states no finding: it says so, and is no claim
-            out[key] = Claim(words, rests) if rests else "no test could be made"
+            out[key] = _claim(rows, ("diff", "p_holm"), listing(said, "no reading")
+                              if isinstance(said, list) else said)  # fmt: skip
+            if isinstance(out[key], str):  # no reading could be tested
+                out[key] = "no test could be made"
     return out
 
 
-def difference_claims(differences, comparison: str, prefix: str) -> dict[str, Claim | str | int]:
-    """The effects a comparison of readings changes, from its tests
-    (``readings.difference_verdict``): ``<prefix>_larger``, ``_smaller`` and ``_changes``
-    (either), naming the level of the other choice where only one shows it; and how many of its
-    ``<prefix>_n`` effects are larger, smaller, equivalent (TOST within the margin, Holm),
-    identical or not shown (``<prefix>_n_equivalent``, ...)."""
-    from icub_affordance.readings import difference_verdict
+def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | str | int]:
+    """The effects a comparison of readings makes larger or smaller (``<prefix>_larger``,
+    ``_smaller``, ``_changes``), naming the other choice's level where only one shows it, and
+    how many of its ``<prefix>_n`` effects each verdict has (``<prefix>_n_equivalent``, ...)."""
+    rows = shown[(shown["comparison"] == comparison) & shown["hypothesis"]]
+    stats, levels = ("diff", "p_holm", "p_equivalence_holm"), rows["at"].nunique()
 
-    rows = differences[differences["comparison"] == comparison]
-    rows = rows[rows["measure"].map(is_hypothesis)]
-    words = rows.apply(difference_verdict, axis=1).map(lambda v: WORDS.get(v, v))
-    rests, levels = _rests_on(rows, ("diff", "p_holm", "p_equivalence_holm")), rows["at"].nunique()
-
-    def effects(chosen) -> str:
-        """E.g. "congruency on RMSE (fixed only) and commitment; size on ..."."""
+    def effects(chosen) -> str:  # e.g. "congruency on RMSE (fixed only) and commitment"
         found: dict[str, list[str]] = {}
-        for (effect, m), at in chosen.groupby(["effect", "measure"], sort=False)["at"]:
+        for (effect, label), at in chosen.groupby(["effect", "label"], sort=False)["at"]:
             only = f" ({CUE_LABELS.get(at.iloc[0], at.iloc[0])} only)" * (len(at) < levels)
-            found.setdefault(effect, []).append(MEASURE_LABELS[m] + only)
-        parts = (f"{effect} on {_listing(named, '')}" for effect, named in found.items())
-        return "; ".join(parts) or "no effect"
-
-    def claim(said: str) -> Claim | str:  # with no test behind it (all identical) no claim
-        return Claim(said, rests) if rests else said
+            found.setdefault(effect, []).append(label + only)
+        return "; ".join(f"{e} on {listing(n, '')}" for e, n in found.items()) or "no effect"
 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
-    out[f"{prefix}_changes"] = claim(effects(rows[words.isin(["larger", "smaller"])]))
+    changed = rows[rows["verdict"].isin(["larger", "smaller"])]
+    out[f"{prefix}_changes"] = _claim(rows, stats, effects(changed))
     for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
-        out[f"{prefix}_n_{word.replace(' ', '_')}"] = claim(str((words == word).sum()))
-        if word in ("larger", "smaller"):
-            out[f"{prefix}_{word}"] = claim(effects(rows[words == word]))
+        out[f"{prefix}_n_{word.replace(' ', '_')}"] = _claim(
+            rows, stats, str((rows["verdict"] == word).sum()))  # fmt: skip
+    for word in ("larger", "smaller"):
+        out[f"{prefix}_{word}"] = _claim(rows, stats, effects(rows[rows["verdict"] == word]))
     return out
 
 
-# ---- What drives the size effect -----------------------------------------------------------
+# -- what drives the size effect ------------------------------------------------------------
 
 #: The demonstrations' measures (icub_affordance.size_dose.GEOMETRY), in short.
-GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread"}
-GEOMETRY_SHORT["demo_grip_distance"] = "grips' distance"
+GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread",
+                  "demo_grip_distance": "grips' distance"}  # fmt: skip
 
 
 def trend_phrase(term) -> str:
@@ -246,4 +194,4 @@ def trend_phrase(term) -> str:
 
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
-    return _listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
+    return listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
