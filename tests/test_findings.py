@@ -465,14 +465,14 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     write_cost_table(cost_table([1, 2], [20.0, 30.0], cores=2), inputs["sweep_cost.csv"])
     values, table = pages.robustness(inputs, config)
     assert values["ran"] and values["sweep_ran"] == "ran it: seeds 1, 2, 3, 1 setting(s)"
-    assert table["direction"].tolist() == ["reproduced", "reversed"]
-    assert table["significant"].tolist() == ["3 of 3", "0 of 3"]
-    assert table["reversed"].tolist() == ["0 of 3", "2 of 3"]
+    assert [table["congruency_direction"][0], table["size_direction"][0]] == [
+        "reproduced", "reversed"]  # fmt: skip
     # a flipped interval flips the word: the size interval made to include 0
     summary = pd.read_csv(inputs["sweep_summary.csv"]).assign(size_ci_high=0.01)
     summary.to_csv(tmp_path / "flipped.csv", index=False)
     _, flipped = pages.robustness(inputs | {"sweep_summary.csv": tmp_path / "flipped.csv"}, config)
-    assert flipped["direction"].tolist() == ["reproduced", "not shown"]
+    assert [flipped["congruency_direction"][0], flipped["size_direction"][0]] == [
+        "reproduced", "not shown"]  # fmt: skip
     assert "it takes three to tell" in values["cost_shape"].text
     assert values["cost_shape"].rests_on == ("robustness.cost_change",)
     values = pages.traced({"robustness": values})["robustness"]
@@ -493,8 +493,9 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     )
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
     # the page's prose is its own; what it glues and shows comes from these numbers
-    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "reproduced", "0 of 3", "wall time (s)",
-            "the Slurm cluster hpc (partition short)", "it takes three", "412")  # fmt: skip
+    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "reproduced", "3 of 3", "2 of 3",
+            "wall time (s)", "the Slurm cluster hpc (partition short)", "it takes three",
+            "412")  # fmt: skip
     for words in said:
         assert json.dumps(words)[1:-1] in shown, words
     assert "did not run it" not in shown

@@ -108,8 +108,6 @@ FINDINGS_READS = [
 ]
 FINDINGS_TABLES = [
     "scorecard",
-    "cue_anova",
-    "cue_effects",
     "readings_summary",
     "readings_differences",
     "robot_variants",

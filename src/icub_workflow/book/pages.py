@@ -229,18 +229,11 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     }  # fmt: skip
     out |= _robot_values(_json(inputs["embodied_analysis.json"]),
                          _json(inputs["robot_effects.json"])[OWN])  # fmt: skip
-    anova, effects = [], []
-    for name, cue in cues.items():
+    for name in cues:
         result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])
-        anova += [{"cue": cue, "test": mode, "effect": e} | term for mode in MODES
-                  for e, term in result[mode]["repeated_measures"].items()]  # fmt: skip
-        mine = text.test_values(
-            "beyond", f"cue_{name}", result["contrasts"]["closed_loop"]["congruency"]
-        )
-        mine |= {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
-        out |= mine
-        mine = {k.removeprefix(f"cue_{name}_"): v for k, v in mine.items()}
-        effects.append({"run": name, "cue": cue} | mine | {"verdict": mine["verdict"].text})
+        means = {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
+        out |= text.test_values("beyond", f"cue_{name}", result["contrasts"]["closed_loop"][
+            "congruency"]) | means  # fmt: skip
     # the test of the difference, first step only minus every step, paired by network; its
     # adjusted p is the readings' table's where that row is this very test (one replication)
     difference = _json(inputs["cue_difference.json"])["congruency"]
@@ -261,7 +254,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         f"Holm p {p:.2g} within “{family}”" if family != FAMILY_NONE
         else f"p {p:.2g}, one test at one seed in no family (the readings' chapter tests the "
         "difference over the replications)")  # fmt: skip
-    return out, {"cue_anova": pd.DataFrame(anova), "cue_effects": pd.DataFrame(effects)}
+    return out, {}
 
 
 def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]]:
@@ -366,7 +359,8 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 
 
 def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
-    """The sweep's values, table (each effect's direction) and cost, or what it would train."""
+    """The sweep's values, its summary with each effect's direction, and its cost; or, not run,
+    what it would train."""
     sweep = config["sweep"]
     points = len(sweep["categorisation_cue"]) * int(
         np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))  # fmt: skip
@@ -385,35 +379,21 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
                f"{len(summary)} setting(s)", "cost_change": float(growth["change"]),
                "cost_shape": text.Claim(f"grew {text.growth_phrase(growth)}, read as the "
                                         "timings stand", ("robustness.cost_change",))}  # fmt: skip
-    rows = []
-    for (_, r), effect in ((row, e) for row in summary.iterrows() for e in ("congruency", "size")):
-        n = r["replications"]
-        mean, low, high = (r[f"{effect}_{k}"] for k in ("effect", "ci_low", "ci_high"))
-        rows.append(
-            {"cue": r["categorisation_cue"], "rate": r["learning_rate"], "hidden": r["hidden"],
-             "effect": effect, "mean": f"{mean:+.4f}",
-             "95% CI": f"[{low:+.4f}, {high:+.4f}]" if np.isfinite(low) else "–",
-             "direction": text.SWEEP_DIRECTIONS[science.interval_direction(n, mean, low, high)],
-             "η²": round(r[f"{effect}_eta_p2"], 2)}
-            | {k: f"{r[f'{effect}_n_{k}']:.0f} of {n:.0f}" for k in ("significant", "reversed")}
-        )  # fmt: skip
-    return values, pd.DataFrame(rows)
+    directions = {  # each effect's mean over the replications, by its 95% interval
+        f"{e}_direction": [text.SWEEP_DIRECTIONS[science.interval_direction(
+            r["replications"], *(r[f"{e}_{k}"] for k in ("effect", "ci_low", "ci_high")))]
+            for _, r in summary.iterrows()] for e in ("congruency", "size")}  # fmt: skip
+    return values, summary.assign(**directions)
 
 
 #: The config's sections whose settings the pages quote (``findings.json``'s ``settings``).
 QUOTED = ("seed", "object_sizes_m", "vision", "demos", "soms", "network")
 
 
-def settings(config: Mapping, prefix: str = "") -> dict:
-    """The settings by their path in the config (``network.learning_rate``), so that a page
-    quotes a setting under the name a reader changes it by."""
-    out = {}
-    for key, value in config.items():
-        if isinstance(value, Mapping):
-            out |= settings(value, f"{prefix}{key}.")
-        else:
-            out[f"{prefix}{key}"] = value
-    return out
+def settings(config: Mapping) -> dict:
+    """The settings by their path in the config (``network.learning_rate``): a page quotes a
+    setting under the name a reader changes it by."""
+    return pd.json_normalize(dict(config), sep=".").to_dict("records")[0]
 
 
 def methods(inputs: Mapping[str, str]) -> dict[str, dict]:
@@ -490,22 +470,16 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
     values["like_size"] = text.named_measures(
         ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
-    tests = pd.concat([rmse, slopes, grips.assign(dose="grips")], ignore_index=True).assign(
-        verdict=lambda f: f.apply(text.verdict_word, axis=1)
-    )
-    return values, {
-        "size_tests": tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
-    }
+    tests = pd.concat([rmse, slopes, grips.assign(dose="grips")], ignore_index=True)
+    tests = tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
+    return values, {"size_tests": tests.assign(verdict=tests.apply(text.verdict_word, axis=1))}
 
 
 def page_findings(
     inputs: Mapping[str, str], config: dict, ablation_cue: str, scale: dict[str, dict[str, int]]
 ) -> tuple[dict[str, dict], dict[str, pd.DataFrame]]:
-    """Every page's values ({page: {name: value}}) and tables ({name: table}).
-
-    ``inputs`` maps the book's names of the outputs (``BOOK_DATA``'s keys, the learning curves
-    as ``curves/netNN.csv``) to their files; ``config`` is the run's, ``ablation_cue`` the cue
-    timing the ablation trained with, ``scale`` this build's and the other scale's counts."""
+    """Every page's values ({page: {name: value}}) and tables ({name: table}), from ``inputs``:
+    the book's names of the outputs (``BOOK_DATA``'s keys) and their files."""
     anova, cue = _json(inputs["anova.json"]), config["network"]["categorisation_cue"]
     rmse, iterations = _curves(inputs)
     curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
@@ -525,9 +499,7 @@ def page_findings(
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
         "settings": settings({key: config[key] for key in QUOTED}),
     } | methods(inputs)  # fmt: skip
-    tables |= {"scorecard": score_table}  # fmt: skip
-    if sweep is not None:
-        tables["sweep"] = sweep
+    tables |= {"scorecard": score_table} | ({} if sweep is None else {"sweep": sweep})
     return traced(pages), tables
 
 
