@@ -15,7 +15,8 @@ import pandas as pd
 import pytest
 import yaml
 
-from icub_workflow.book import reading, scorecard, text
+from icub_workflow.book import scorecard, text
+from icub_workflow.book_build import reading
 
 REPO = Path(__file__).resolve().parents[1]
 HTML = "book/_build/html"

@@ -444,7 +444,7 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     from myst_nb.core.read import read_myst_markdown_notebook
 
     from icub_workflow.book import pages
-    from icub_workflow.book.notebooks import execute_pages
+    from icub_workflow.book_build.notebooks import execute_pages
     from icub_workflow.sweep_timing import cost_table, write_cost_table
 
     config = load_test_config() | {"robustness": True}

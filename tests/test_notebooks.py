@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from icub_workflow.book.notebooks import CACHE_DIR, execute_pages, is_notebook
+from icub_workflow.book_build.notebooks import CACHE_DIR, execute_pages, is_notebook
 
 FRONT = "---\nkernelspec:\n  name: python3\n  display_name: Python 3\n---\n\n"
 

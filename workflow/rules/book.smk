@@ -224,7 +224,7 @@ rule book:
         # nothing of the main run's)
         config=settings({key: value for key, value in config.items() if key != "runs"}),
         names=list(BOOK_DATA) + list(BOOK_FINDINGS),
-    threads: 2  # pages execute side by side (src/icub_workflow/book/notebooks.py)
+    threads: 2  # pages execute side by side (src/icub_workflow/book_build/notebooks.py)
     resources:
         mem_mb=2000,
         runtime=15,

@@ -15,8 +15,8 @@ from icub_workflow.benchmark_tables import (
     read_benchmarks,
     timeline,
 )
-from icub_workflow.book.notebooks import execute_pages, is_notebook
-from icub_workflow.book.run import provenance, results_provenance, stage
+from icub_workflow.book_build.notebooks import execute_pages, is_notebook
+from icub_workflow.book_build.run import provenance, results_provenance, stage
 
 with redirect_log(snakemake.log[0]):
     book = Path("book")

@@ -33,18 +33,10 @@ def _json(path) -> dict:
     return json.loads(Path(path).read_text())
 
 
-def _curves(inputs: Mapping[str, str]) -> tuple[np.ndarray, np.ndarray]:
-    """The learning curves' RMSE (networks, rows) and the iteration of each row."""
-    tables = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
-    return np.array([t["rmse"].to_numpy() for t in tables]), tables[0]["iteration"].to_numpy()
-
-
 def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
-    """The config's own run, named once for every page that states it (the front page, the
-    results, the discussion, the comparison): the learning curve, the cell means, and each test
-    as ``<mode>_[errors_|rt_]<effect>`` (the paper's measure, the wrong-grip rate, the
-    correct-trial RMSE) or ``<mode>_<simple effect>``, with its numbers, statistics and verdict
-    (``text.claim_verdict``)."""
+    """The config's own run, named once for every page that states it: the learning curve, the
+    cell means, and each test as ``<mode>_[errors_|rt_]<effect>`` (the paper's measure, the
+    wrong-grip rate, the correct-trial RMSE) or ``<mode>_<simple effect>``, with its verdict."""
     gap = science.grip_distance(demos["angles"], demos["objects"].tolist())
     out = {"rmse_start": curve["start"], "rmse_2000": curve["around_at"], "at_2000": curve["at"],
            "rmse_phase1_end": curve["phase1_end"], "rmse_end": curve["end"],
@@ -57,8 +49,6 @@ def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
         out |= {f"{mode}_{key}": value for key, value in m["means"].items()}
         out |= {f"{mode}_wrong_{key}": value for key, value in wrong.items()}
         out |= {f"{mode}_correct_{key}": value for key, value in m["means_correct"].items()}
-        cells = m["correct_rt"]["congruency"].get("cells", {}).items()
-        out[f"{mode}_correct_cells"] = ", ".join(f"{c.replace('_', ' ')} {n}" for c, n in cells)
         sources = (("", "contrasts", anova["contrasts"][mode]), ("errors_", "errors", m["errors"]),
                    ("rt_", "correct_rt", m["correct_rt"]))  # fmt: skip
         for prefix, outcome, tests in sources:
@@ -93,10 +83,8 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
 
 
 def _shown(table: pd.DataFrame, test) -> pd.DataFrame:
-    """The readings' summary or differences with what the page shows beside the numbers: the
-    reading or comparison (``first · fixed``, ``cue · fixed``), the measure's name, a
-    hypothesis's verdict word (``test``; "not estimable" where too few replications answered
-    the cell, so it was never tested) and why a row has no Holm p."""
+    """The readings' tests with what the page shows beside their numbers: the reading's name, the
+    verdict word ("not estimable": too few replications answered, never tested), why no Holm p."""
     compared = "comparison" in table
     words = table.apply(test, axis=1).map(lambda word: text.WORDS.get(word, word))
     words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
@@ -170,13 +158,11 @@ def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
 
 
 def robot_verdict(effect: dict, measure: str, factor: str) -> str:
-    """One robot effect against the paper (``findings.robot_effect_verdict``, Holm within the
-    robot's family); the congruency x size term, with no paper direction, is "shown" or not."""
+    """One robot effect against the paper (Holm within the robot's family); the congruency x
+    size term, with no paper direction, is "shown" or not where a contrast tests it."""
     test = effect["tests"][factor]
     if factor == INTERACTION:
-        if test["method"] != "contrasts":
-            return "not tested"
-        return "shown" if test["p_holm"] < science.ALPHA else "not shown"
+        return text.shown_word(test) if test["method"] == "contrasts" else "not tested"
     verdict = science.robot_effect_verdict(effect, measure, factor)
     if verdict is None or not verdict.significant:
         return "not estimable" if verdict is None else "not shown"
@@ -196,19 +182,24 @@ def _robot_values(emb: dict, own: dict) -> dict:
     out = {f"emb_{k}": v for k, v in emb.items() if not isinstance(v, dict)}
     suc, err = emb["measures"]["success"], emb["measures"]["final_error"]
     records = {k: emb[k] for k in ("replay_success", "replay_trials", "replay_wrong_grip_holds")}
-    records |= {"suc": suc["means"], "err": err["means"]}
-    records["suc_diff"] = suc["incongruent_minus_congruent"]
+    records |= {
+        "suc": suc["means"],
+        "err": err["means"],
+        "suc_diff": suc["incongruent_minus_congruent"],
+    }
     out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
     stats = science.robot_effect_statistics(own["success"], "congruency")
     out |= {f"emb_success_{k}": v for k, v in stats.items()}
     out["emb_success_family"] = own["success"]["tests"]["congruency"].get("family", "none")
     out["emb_success_verdict"] = text.Claim(
         robot_verdict(own["success"], "success", "congruency"),
-        ("beyond.emb_success_estimate", "beyond.emb_success_p"))  # fmt: skip
-    floor = science.robot_verdicts(emb)["at_floor"]
+        ("beyond.emb_success_estimate", "beyond.emb_success_p"),
+    )
+    floor = science.robot_verdicts(emb)["at_floor"]  # fmt: skip
     out["emb_floor"] = text.Claim(
         "near the floor, so it can say little about congruency" if floor else "clear of the floor",
-        ("beyond.emb_categorisation_success",))  # fmt: skip
+        ("beyond.emb_categorisation_success",),
+    )
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
         words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
                  "not shown": "not shown to differ"}  # fmt: skip
@@ -237,14 +228,11 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
     # the test of the difference, first step only minus every step, paired by network; its
     # adjusted p is the readings' table's where that row is this very test (one replication)
     difference = _json(inputs["cue_difference.json"])["congruency"]
-    table = pd.read_csv(inputs["readings_differences.csv"])
-    row = table.query(
-        "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency'"
-        " & at == @goal_response & replications == 1",
-        local_dict=config["soms"],
-    )
+    row = pd.read_csv(inputs["readings_differences.csv"]).query(
+        "comparison == 'cue_timing' & measure == 'rmse' & effect == 'congruency' & at == "
+        "@goal_response & replications == 1", local_dict=config["soms"])  # fmt: skip
     difference |= (row[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
-    out |= {"cue_difference_df": difference["df"], "cue_difference_t": difference["t"]}
+    out |= {f"cue_difference_{k}": difference[k] for k in ("df", "t")}
     words = {"reproduced": "larger with the cue at the first step only",
              "reversed": "larger with the cue at every step",
              "not shown": "not shown to differ between the timings"}  # fmt: skip
@@ -296,8 +284,7 @@ def _best_effects(effects: dict) -> dict:
 
 
 def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
-    """Explore, then confirm: the first confirmed variant's counts on the networks it was chosen
-    on and on fresh ones, the bar set against the fresh ones only."""
+    """The first confirmed variant's counts, chosen on some networks, the bar set on fresh ones."""
     rows = confirmation.to_dict("records")
     for r in rows:
         bar = confirmation_science.bar_verdict(r["ci_low"], r["ci_high"], science.GRASPS)
@@ -328,8 +315,6 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     animated = {k: config["network"][k] for k in ("categorisation_cue", "learning_rate_schedule")}
     out = {
         "n_variants": len(variants),
-        "grid_scope": "the whole grid (robustness=True)" if config["robustness"]
-        else "the config's own networks and the variants config robot.default lists",
         "animated_label": short_label(animated | config["robot"]["animation"]["variant"]),
         "smallest_label": "none" if smallest is None else smallest["variant"],
         "tolerated_noise": "none tested" if tolerated is None else f"{tolerated['noise']:g}",
@@ -391,8 +376,7 @@ QUOTED = ("seed", "object_sizes_m", "vision", "demos", "soms", "network")
 
 
 def settings(config: Mapping) -> dict:
-    """The settings by their path in the config (``network.learning_rate``): a page quotes a
-    setting under the name a reader changes it by."""
+    """The settings by their config path: a page quotes each by the name a reader changes it by."""
     return pd.json_normalize(dict(config), sep=".").to_dict("records")[0]
 
 
@@ -475,14 +459,15 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     return values, {"size_tests": tests.assign(verdict=tests.apply(text.verdict_word, axis=1))}
 
 
-def page_findings(
-    inputs: Mapping[str, str], config: dict, ablation_cue: str, scale: dict[str, dict[str, int]]
-) -> tuple[dict[str, dict], dict[str, pd.DataFrame]]:
+def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
+                  scale: dict[str, dict[str, int]]
+                  ) -> tuple[dict, dict[str, pd.DataFrame]]:  # fmt: skip
     """Every page's values ({page: {name: value}}) and tables ({name: table}), from ``inputs``:
     the book's names of the outputs (``BOOK_DATA``'s keys) and their files."""
     anova, cue = _json(inputs["anova.json"]), config["network"]["categorisation_cue"]
-    rmse, iterations = _curves(inputs)
-    curve = science.curve_summary(rmse, config["network"]["phase1_iterations"], iterations)
+    curves = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
+    curve = science.curve_summary(np.array([c["rmse"] for c in curves]), config["network"][
+        "phase1_iterations"], curves[0]["iteration"].to_numpy())  # fmt: skip
     read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
         "readings_summary", "size_summary", "robot_variants", "robot_confirmation")}  # fmt: skip
     score_values, score_table = scorecard(anova, curve, *read.values())
@@ -504,9 +489,8 @@ def page_findings(
 
 
 def traced(pages: dict[str, dict]) -> dict[str, dict]:
-    """The pages' values with every ``text.Claim`` replaced by its sentence, and under ``claims``
-    ({page: {key: [entries]}}) the findings each rests on. An entry that names no value of
-    ``pages`` is refused: a claim must rest on numbers the book has."""
+    """The pages' values, each ``text.Claim`` as its words and under ``claims`` the entries it
+    rests on; an entry that names no value is refused: a claim rests on numbers the book has."""
     out = {page: {k: v.text if isinstance(v, text.Claim) else v for k, v in values.items()}
            for page, values in pages.items()}  # fmt: skip
     claims = {page: {k: list(v.rests_on) for k, v in values.items() if isinstance(v, text.Claim)}

@@ -35,17 +35,12 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
     values[f"{prefix}_verdict"] = text.Claim(BAR_WORDS[side], rests)
     pct = "{:.1%}".format
     return values, f"{pct(share)} of grasping trials [{pct(low)}, {pct(high)}] ({how} interval); " \
-        f"bar {text.pct(science.GRASPS)}"  # fmt: skip
+        f"bar {science.GRASPS:.0%}"  # fmt: skip
 
 
-def scorecard(
-    anova: dict,
-    curve: dict,
-    readings: pd.DataFrame,
-    size: pd.DataFrame,
-    variants: pd.DataFrame,
-    confirmation: pd.DataFrame,
-) -> tuple[dict, pd.DataFrame]:
+def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFrame,
+              variants: pd.DataFrame, confirmation: pd.DataFrame
+              ) -> tuple[dict, pd.DataFrame]:  # fmt: skip
     """The scorecard's values (for ``findings.json``'s ``intro``) and its table."""
     values: dict[str, object] = {}
     rows: list[dict[str, object]] = []

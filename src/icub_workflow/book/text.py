@@ -1,8 +1,5 @@
-"""The book's verdict words and the few phrases chosen by a test: the pages hold the sentences.
-
-Each verdict is a ``Claim`` naming the ``findings.json`` entries it rests on; the tests flip
-those statistics and check that the words follow.
-"""
+"""The book's verdict words and the few phrases a test chooses; the pages hold the sentences.
+Each is a ``Claim`` on the entries it rests on, which the tests flip to see the words follow."""
 
 from __future__ import annotations
 
@@ -25,12 +22,9 @@ class Claim:
             raise ValueError(f"a claim names the findings it rests on as page.key: {self}")
 
 
-def fmt_p(p: float) -> str:
-    return "p < 0.001" if p < 0.001 else f"p = {p:.3f}"
-
-
 def fmt_term(term: dict) -> str:
     """Estimate, 95% interval, t, p and, where it has one, its p adjusted within its family."""
+    fmt_p = lambda p: "p < 0.001" if p < 0.001 else f"p = {p:.3f}"  # noqa: E731
     family = (f", Holm-adjusted within the family “{term['family']}” ({term['family_size']} "
               f"tests) {fmt_p(term['p_holm'])}") if "family_size" in term else ""  # fmt: skip
     return (f"estimate {term['estimate']:+.4f}, 95% interval [{term['ci_low']:+.4f}, "
@@ -39,9 +33,9 @@ def fmt_term(term: dict) -> str:
 
 
 def verdict_word(term: dict, alpha: float = ALPHA) -> str:
-    """Against the paper's direction (a positive estimate): "reproduced" or "reversed" where the
-    p adjusted within its family is below ``alpha``, else "not shown" (not "no difference": only
-    an equivalence test says that); "not testable" where there is no p."""
+    """A test in the paper's direction (a positive estimate) is "reproduced", against it
+    "reversed", where its p adjusted within its family is below ``alpha``; else "not shown"
+    (which is not "no difference") or, with no p, "not testable"."""
     p = term.get("p_holm", term["p"])
     if not math.isfinite(p):
         return "not testable"
@@ -57,9 +51,8 @@ def shown_word(term: dict, alpha: float = ALPHA) -> str:
 
 
 def claim_verdict(term: dict, outcome: str, effect: str) -> str:
-    """The paper claims its two effects on its measure and, read as reaction time, on correct
-    trials: "reproduced" or "reversed"; it claims nothing of errors ("shown", "shown, opposite")
-    nor of the required grip, the congruency x size term ("shown")."""
+    """The paper's two effects, on its measure and on correct trials, are "reproduced" or not; it
+    claims nothing of errors ("shown", "shown, opposite") or the required grip ("shown")."""
     word = verdict_word(term)
     if effect == "congruency:size":
         return shown_word(term)
@@ -69,9 +62,8 @@ def claim_verdict(term: dict, outcome: str, effect: str) -> str:
 
 
 def test_values(page: str, prefix: str, term: dict, verdict=verdict_word, words=None) -> dict:
-    """A test as page values: its numbers as the analysis wrote them (NaN where untested), its
-    family, its statistics in a line, and ``_verdict``: a ``Claim`` resting on its estimate and
-    adjusted p, said in ``words`` ({verdict word: phrase}) where given."""
+    """A test's numbers as the analysis wrote them (NaN: untested), family, statistics, and
+    ``_verdict``: a ``Claim`` on its estimate and adjusted p, said in ``words`` where given."""
     keys = ("estimate", "ci_low", "ci_high", "p")
     values = {f"{prefix}_{k}": term.get(k, math.nan) for k in keys}
     values[f"{prefix}_p_holm"] = term.get("p_holm", values[f"{prefix}_p"])
@@ -81,10 +73,6 @@ def test_values(page: str, prefix: str, term: dict, verdict=verdict_word, words=
     word = verdict(term | {k: values[f"{prefix}_{k}"] for k in ("estimate", "p", "p_holm")})
     rests = (f"{page}.{prefix}_estimate", f"{page}.{prefix}_p_holm")
     return values | {f"{prefix}_verdict": Claim((words or {}).get(word, word), rests)}
-
-
-def pct(x: float) -> str:
-    return f"{100 * x:.0f}%"
 
 
 def listing(items, none: str) -> str:
@@ -153,9 +141,8 @@ def reading_claims(shown) -> dict[str, Claim | str]:
 
 
 def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | str | int]:
-    """The effects a comparison of readings makes larger or smaller (``<prefix>_larger``,
-    ``_smaller``, ``_changes``), naming the other choice's level where only one shows it, and
-    how many of its ``<prefix>_n`` effects each verdict has (``<prefix>_n_equivalent``, ...)."""
+    """The effects a comparison of readings makes larger or smaller (naming the other choice's
+    level where only one shows it), and how many of its effects each verdict has."""
     rows = shown[(shown["comparison"] == comparison) & shown["hypothesis"]]
     stats, levels = ("diff", "p_holm", "p_equivalence_holm"), rows["at"].nunique()
 

@@ -7,7 +7,7 @@ class ``dropdown``, or a cell output hidden behind a toggle: method details a re
 to check the work). Folded words are
 counted apart, so a page cannot hide its prose by folding it without the count saying so.
 
-``python -m icub_workflow.book.reading book/_build/html`` prints the table.
+``python -m icub_workflow.book_build.reading book/_build/html`` prints the table.
 """
 
 from __future__ import annotations
