@@ -182,7 +182,8 @@ window.addEventListener("load", () => {
   const article = document.querySelector("article");
   const column = article.getBoundingClientRect();
   const wide = [];
-  for (const el of article.querySelectorAll("table, img, figure, .cell_output")) {
+  // an output's own scroll box (a div inside .cell_output) is where a wide table is cut
+  for (const el of article.querySelectorAll("table, img, figure, .cell_output, .cell_output div")) {
     const box = el.getBoundingClientRect();
     const cut = el.scrollWidth > el.clientWidth + 1 && el.tagName !== "IMG";
     if (box.right > column.right + 1 || cut) {

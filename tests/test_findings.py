@@ -493,7 +493,7 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     )
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
     # the page's prose is its own; what it glues and shows comes from these numbers
-    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "reproduced", "3 of 3", "2 of 3",
+    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "reproduced", "3 / 0 of 3", "0 / 2 of 3",
             "wall time (s)", "the Slurm cluster hpc (partition short)", "it takes three",
             "412")  # fmt: skip
     for words in said:
