@@ -281,3 +281,66 @@ def test_a_rate_per_iteration_is_what_the_torch_loop_does_with_that_rate():
     assert not np.allclose(fast.W2, one.W2)  # the rates made a difference
     with pytest.raises(ValueError, match="3 learning rates|\\(3,\\) learning rates"):
         train_online(w0, np.full(3, 0.075), contexts, m.demos, grips, schedule)
+
+
+@pytest.mark.parametrize("hidden", [10, 40])
+@pytest.mark.parametrize("rate", ["constant", "anneal"])
+def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
+    """train_networks (a run's networks four at a time in a vector's lanes) gives every network
+    the bytes train_network gives it alone, weights and learning curve: both cue timings, the
+    paper's 10 hidden units and the robot variants' 40, a constant and a falling rate; six
+    networks, so the second group of four is filled with copies."""
+    from icub_affordance.train import train_networks
+
+    m = synthetic_materials()
+    mappings, seeds = ["A", "A", "A", "B", "B", "B"], [11, 12, 13, 14, 15, 16]
+    for cue in ("first_step", "all_steps"):
+        config = train_config(
+            hidden=hidden, iterations=240, phase1_iterations=120, categorisation_cue=cue,
+            learning_rate_schedule=rate, curve_rows=0,
+        )  # fmt: skip
+        together = train_networks(m, config, mappings, seeds)
+        assert len(together) == len(seeds)
+        for (weights, curve), mapping, seed in zip(together, mappings, seeds, strict=True):
+            alone, alone_curve = train_network(m, config, mapping, seed)
+            for name in ("W1", "b1", "W2", "b2"):
+                assert getattr(weights, name).tobytes() == getattr(alone, name).tobytes()
+            assert curve.keys() == alone_curve.keys()
+            for key in curve:
+                assert curve[key].tobytes() == alone_curve[key].tobytes(), key
+
+
+def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alone():
+    """Phase 1 of several networks trained together (train_phase1s), each the bytes of
+    train_phase1, continued together with other settings after phase 1 (the annealed rate, the
+    cue at every step, the servo targets) to the bytes of each network trained whole, alone."""
+    from icub_affordance.train import train_networks, train_phase1, train_phase1s
+
+    m = synthetic_materials()
+    common = {"iterations": 200, "phase1_iterations": 100, "hidden": 12, "target": "commands"}
+    constant = train_config(**common, categorisation_cue="first_step")
+    anneal = train_config(
+        **common, learning_rate_schedule="anneal", categorisation_cue="all_steps", curve_rows=50
+    )
+    mappings, seeds = ["A", "B", "B"], [4, 5, 6]
+    shared = train_phase1s(m, constant, mappings, seeds)
+    for phase1, mapping, seed in zip(shared, mappings, seeds, strict=True):
+        alone = train_phase1(m, constant, mapping, seed)
+        assert phase1.key == alone.key and phase1.state.done == alone.state.done
+        assert phase1.rmse.tobytes() == alone.rmse.tobytes()
+        for key, value in alone.state.arrays.items():
+            assert phase1.state.arrays[key].tobytes() == value.tobytes(), key
+    kept = {k: v.copy() for k, v in shared[0].state.arrays.items()}
+    continued = train_networks(m, anneal, mappings, seeds, after=shared)
+    for key, value in kept.items():  # the saved phase 1 is left as it was
+        assert shared[0].state.arrays[key].tobytes() == value.tobytes()
+    for (weights, curve), mapping, seed in zip(continued, mappings, seeds, strict=True):
+        whole, whole_curve = train_network(m, anneal, mapping, seed)
+        for name in ("W1", "b1", "W2", "b2"):
+            assert getattr(weights, name).tobytes() == getattr(whole, name).tobytes()
+        for key in curve:
+            assert curve[key].tobytes() == whole_curve[key].tobytes(), key
+    with pytest.raises(ValueError, match="other settings, mapping, seed or materials"):
+        train_networks(m, anneal, ["B", "B", "B"], seeds, after=shared)
+    with pytest.raises(ValueError, match="one of each a network"):
+        train_networks(m, anneal, ["A"], seeds)
