@@ -290,7 +290,6 @@ def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
 #   every lane whatever its run.
 
 _VEC = ir.VectorType(ir.DoubleType(), 4)
-_IVEC = ir.VectorType(ir.IntType(64), 4)
 
 
 class _Lanes(types.Type):
@@ -390,10 +389,6 @@ def _gather(typingctx, array, i0, i1, i2, i3):
         return _lanes(array, i0, i1, i2, i3), codegen
 
 
-def _constant(x):
-    return ir.Constant(_VEC, [ir.Constant(ir.DoubleType(), x)] * 4)
-
-
 @intrinsic
 def _splat(typingctx, x):
     """The same number in the four lanes (a compile-time constant)."""
@@ -426,96 +421,67 @@ _add = _arithmetic("fadd")
 _sub = _arithmetic("fsub")
 _mul = _arithmetic("fmul")
 
-# The sigmoid 1 / (1 + exp(-z)) of ``_neg_exp``, lane by lane, the same operations in the same
-# order, in four passes over the lanes whose loops are short enough for the processor to overlap
-# many elements' chains (one pass doing it all waits on the polynomial's latency).
+# The sigmoid 1 / (1 + exp(-z)) with ``_neg_exp``'s exponential, lane by lane: the same
+# operations in the same order on each number. Sixteen numbers at a time (four vectors whose
+# chains of dependent operations interleave, so the processor overlaps them).
 _TAYLOR = (
     1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
     1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0,
 )  # fmt: skip
 
 
-@intrinsic
-def _exp_reduce(typingctx, z, k, r, index):
-    """``_neg_exp``'s range reduction of -z: k and r."""
+def _sigmoid_of(width: int):
+    vector = ir.VectorType(ir.DoubleType(), width)
+    integers = ir.VectorType(ir.IntType(64), width)
 
-    def codegen(context, builder, sig, args):
-        x = builder.fsub(_constant(-0.0), builder.load(_vector_at(context, builder, sig, args, 0)))
-        # max(x, -700.0) then min(x, 700.0), as numba computes them
-        x = builder.select(builder.fcmp_ordered(">", _constant(-700.0), x), _constant(-700.0), x)
-        x = builder.select(builder.fcmp_ordered("<", _constant(700.0), x), _constant(700.0), x)
-        name = "llvm.floor.v4f64"
-        floor = builder.module.globals.get(name) or ir.Function(
-            builder.module, ir.FunctionType(_VEC, [_VEC]), name
-        )
-        kv = builder.call(
-            floor, [builder.fadd(builder.fmul(x, _constant(1.4426950408889634)), _constant(0.5))]
-        )
-        rv = builder.fsub(
-            builder.fsub(x, builder.fmul(kv, _constant(0.6931471803691238))),
-            builder.fmul(kv, _constant(1.9082149292705877e-10)),
-        )
-        builder.store(kv, _vector_at(context, builder, sig, args, 1), align=8)
-        builder.store(rv, _vector_at(context, builder, sig, args, 2), align=8)
-        return context.get_dummy_value()
+    def constant(x, of=vector):
+        return ir.Constant(of, [of.element(x)] * width)
 
-    return types.none(z, k, r, index), codegen
-
-
-def _taylor_steps(first: bool, coefficients):
     @intrinsic
-    def steps(typingctx, r, p, index):
-        """Horner steps of exp(r)'s polynomial: ``p = p * r + c`` for each coefficient."""
+    def sigmoid(typingctx, z, index):
+        """``z.flat[index:index + width] = 1 / (1 + exp(-z))`` (``_neg_exp``'s exp)."""
+        if _float_array(z):
 
-        def codegen(context, builder, sig, args):
-            rv = builder.load(_vector_at(context, builder, sig, args, 0), align=8)
-            if first:
-                pv = _constant(1.0 / 6227020800.0)
-            else:
-                pv = builder.load(_vector_at(context, builder, sig, args, 1), align=8)
-            for c in coefficients:
-                pv = builder.fadd(builder.fmul(pv, rv), _constant(c))
-            builder.store(pv, _vector_at(context, builder, sig, args, 1), align=8)
-            return context.get_dummy_value()
+            def codegen(context, builder, sig, args):
+                pointer = builder.bitcast(
+                    _element(context, builder, sig.args[0], args[0], sig.args[1], args[1]),
+                    vector.as_pointer(),
+                )
+                x = builder.fsub(constant(-0.0), builder.load(pointer, align=8))
+                # max(x, -700.0) then min(x, 700.0), as numba computes them
+                x = builder.select(builder.fcmp_ordered(">", constant(-700.0), x),
+                                   constant(-700.0), x)  # fmt: skip
+                x = builder.select(builder.fcmp_ordered("<", constant(700.0), x),
+                                   constant(700.0), x)  # fmt: skip
+                name = f"llvm.floor.v{width}f64"
+                floor = builder.module.globals.get(name) or ir.Function(
+                    builder.module, ir.FunctionType(vector, [vector]), name
+                )
+                k = builder.fadd(builder.fmul(x, constant(1.4426950408889634)), constant(0.5))
+                k = builder.call(floor, [k])
+                r = builder.fsub(
+                    builder.fsub(x, builder.fmul(k, constant(0.6931471803691238))),
+                    builder.fmul(k, constant(1.9082149292705877e-10)),
+                )
+                p = constant(1.0 / 6227020800.0)
+                for c in _TAYLOR:
+                    p = builder.fadd(builder.fmul(p, r), constant(c))
+                # int64(k) for |k| <= 1011: through int32, one instruction instead of four
+                k = builder.sext(builder.fptosi(k, ir.VectorType(ir.IntType(32), width)), integers)
+                bits = builder.shl(builder.add(k, constant(1023, integers)),
+                                   constant(52, integers))  # fmt: skip
+                e = builder.fmul(p, builder.bitcast(bits, vector))
+                builder.store(builder.fdiv(constant(1.0), builder.fadd(constant(1.0), e)),
+                              pointer, align=8)  # fmt: skip
+                return context.get_dummy_value()
 
-        return types.none(r, p, index), codegen
+            return types.none(z, index), codegen
 
-    return steps
-
-
-_exp_taylor_1 = _taylor_steps(True, _TAYLOR[:7])
-_exp_taylor_2 = _taylor_steps(False, _TAYLOR[7:])
+    return sigmoid
 
 
-@intrinsic
-def _exp_finish(typingctx, p, k, out, index):
-    """exp(-z) = p 2^k, made from the exponent bits as ``_neg_exp`` does; out = 1 / (1 + it)."""
-
-    def codegen(context, builder, sig, args):
-        pv = builder.load(_vector_at(context, builder, sig, args, 0), align=8)
-        kv = builder.load(_vector_at(context, builder, sig, args, 1), align=8)
-        one = ir.Constant(_IVEC, [ir.IntType(64)(1023)] * 4)
-        shift = ir.Constant(_IVEC, [ir.IntType(64)(52)] * 4)
-        bits = builder.shl(builder.add(builder.fptosi(kv, _IVEC), one), shift)
-        e = builder.fmul(pv, builder.bitcast(bits, _VEC))
-        sigmoid = builder.fdiv(_constant(1.0), builder.fadd(_constant(1.0), e))
-        builder.store(sigmoid, _vector_at(context, builder, sig, args, 2), align=8)
-        return context.get_dummy_value()
-
-    return types.none(p, k, out, index), codegen
-
-
-@numba.njit(cache=True, nogil=True, error_model="numpy")
-def _sigmoid_lanes(z, k, r, p, n):
-    """``z[:n] = 1 / (1 + exp(-z[:n]))`` with ``_neg_exp``'s exponential; k, r, p scratch."""
-    for g in range(0, n, 4):
-        _exp_reduce(z, k, r, g)
-    for g in range(0, n, 4):
-        _exp_taylor_1(r, p, g)
-    for g in range(0, n, 4):
-        _exp_taylor_2(r, p, g)
-    for g in range(0, n, 4):
-        _exp_finish(p, k, z, g)
+_sigmoid_4 = _sigmoid_of(4)
+_sigmoid_16 = _sigmoid_of(16)
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
@@ -571,10 +537,6 @@ def train_lanes(
     back = np.empty(n_hid * 4)
     cur = np.empty(n_hid * 4)  # each lane's current context's part of the hidden input
     run_sum = np.empty(n_hid * 4)  # each lane's run's summed hidden deltas
-    n_max = max(n_hid, n_out) * 4
-    ek = np.empty(n_max)  # the sigmoid's scratch
-    er = np.empty(n_max)
-    ep = np.empty(n_max)
     sq = np.empty(4)
     lr = np.empty(4)
     lr_cc = np.empty(4)
@@ -667,7 +629,13 @@ def train_lanes(
                         s0 = _add(s0, _mul(w, _load(p, i * 4)))
                     _store(h, s0, a)
                     j += 1
-            _sigmoid_lanes(h, ek, er, ep, n_hid * 4)
+            g = 0
+            while g + 16 <= n_hid * 4:
+                _sigmoid_16(h, g)
+                g += 16
+            while g < n_hid * 4:
+                _sigmoid_4(h, g)
+                g += 4
             # forward: the motor outputs, four at a time, W2 updated by the last step first
             m = 0
             while m < n_out:
@@ -715,7 +683,13 @@ def train_lanes(
                         s0 = _add(s0, _mul(w, _load(h, j * 4)))
                     _store(y, s0, a)
                     m += 1
-            _sigmoid_lanes(y, ek, er, ep, n_out * 4)
+            g = 0
+            while g + 16 <= n_out * 4:
+                _sigmoid_16(y, g)
+                g += 16
+            while g < n_out * 4:
+                _sigmoid_4(y, g)
+                g += 4
             # backward: deltas of 0.5 * squared error
             sqv = _load(sq, 0)
             for m in range(n_out):
