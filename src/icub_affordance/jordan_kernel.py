@@ -404,6 +404,19 @@ def _splat(typingctx, x):
         return _lanes(x), codegen
 
 
+@intrinsic
+def _select(typingctx, mask, a, b):
+    """``a`` in the lanes where ``mask`` is not 0.0, ``b`` in the others: bits chosen, not
+    computed."""
+    if mask == _lanes and a == _lanes and b == _lanes:
+
+        def codegen(context, builder, sig, args):
+            zero = ir.Constant(_VEC, [ir.DoubleType()(0.0)] * 4)
+            return builder.select(builder.fcmp_ordered("!=", args[0], zero), args[1], args[2])
+
+        return _lanes(mask, a, b), codegen
+
+
 def _arithmetic(operation):
     @intrinsic
     def apply(typingctx, a, b):
@@ -533,19 +546,23 @@ def train_lanes(
     goal = np.empty(n_out * 4)
     h = np.empty(n_hid * 4)
     y = np.empty(n_out * 4)
-    d_new = np.empty(n_out * 4)
-    back = np.empty(n_hid * 4)
+    back = np.empty(n_hid * 4)  # the hidden deltas' sums, then the runs' updates
     cur = np.empty(n_hid * 4)  # each lane's current context's part of the hidden input
     run_sum = np.empty(n_hid * 4)  # each lane's run's summed hidden deltas
     sq = np.empty(4)
     lr = np.empty(4)
     lr_cc = np.empty(4)
     run = np.empty(4, dtype=np.int64)  # each lane's current context
+    is_end = np.empty(4)  # 1.0 in the lanes whose run ends at this step
+    own = np.empty(4)  # 1.0 in the lanes whose run ends with this context
+    other = np.empty(4)  # 1.0 in the lanes whose ending run moves this context
     run_end = np.empty(4, dtype=np.int64)
     seq_at = np.empty(4, dtype=np.int64)
     ctx_at = np.empty(4, dtype=np.int64)
     w1 = n_pro * 4  # one hidden unit's row of W1p
     w2 = n_hid * 4  # one output's row of W2
+    h_blocks = n_hid // 4  # the hidden units in blocks of four, then one by one
+    h_items = h_blocks + n_hid % 4
     for it in range(tasks.shape[0]):
         for lane in range(4):
             lr[lane] = rates[it, lane]
@@ -690,74 +707,90 @@ def train_lanes(
             while g < n_out * 4:
                 _sigmoid_4(y, g)
                 g += 4
-            # backward: deltas of 0.5 * squared error
+            # backward: deltas of 0.5 * squared error; the output biases' update
             sqv = _load(sq, 0)
             for m in range(n_out):
                 a = m * 4
                 ym = _load(y, a)
                 err = _sub(ym, _load(goal, a))
-                _store(d_new, _mul(_mul(err, ym), _sub(one, ym)), a)
+                dm = _mul(_mul(err, ym), _sub(one, ym))
+                _store(d_outf, dm, a)  # the pending update of W2 from here on
+                _store(b2f, _sub(_load(b2f, a), _mul(lrv, dm)), a)
                 sqv = _add(sqv, _mul(err, err))
             _store(sq, sqv, 0)
-            # the hidden deltas' sums over the outputs (W2 as this step updated it), four at a time
-            j = 0
-            while j < n_hid:
-                a = j * 4
-                if j + 4 <= n_hid:
+            # the hidden deltas (their sums over the outputs with W2 as this step updated it),
+            # four at a time, and with each the hidden side of the SGD step: the biases and the
+            # context's part now, the weights pending
+            lcc = _load(lr_cc, 0)
+            for t in range(h_items):
+                j = 4 * t if t < h_blocks else 3 * h_blocks + t
+                if t < h_blocks:
                     s0 = zero
                     s1 = zero
                     s2 = zero
                     s3 = zero
                     for m in range(n_out):
-                        dm = _load(d_new, m * 4)
-                        b = m * w2 + a
+                        dm = _load(d_outf, m * 4)
+                        b = m * w2 + j * 4
                         s0 = _add(s0, _mul(_load(W2f, b), dm))
                         s1 = _add(s1, _mul(_load(W2f, b + 4), dm))
                         s2 = _add(s2, _mul(_load(W2f, b + 8), dm))
                         s3 = _add(s3, _mul(_load(W2f, b + 12), dm))
-                    _store(back, s0, a)
-                    _store(back, s1, a + 4)
-                    _store(back, s2, a + 8)
-                    _store(back, s3, a + 12)
-                    j += 4
+                    _store(back, s0, 0)
+                    _store(back, s1, 4)
+                    _store(back, s2, 8)
+                    _store(back, s3, 12)
+                    n = 4
                 else:
                     s0 = zero
                     for m in range(n_out):
-                        s0 = _add(s0, _mul(_load(W2f, m * w2 + a), _load(d_new, m * 4)))
-                    _store(back, s0, a)
-                    j += 1
-            # one SGD step: the biases and the context's part now, the weights pending
-            lcc = _load(lr_cc, 0)
-            for m in range(n_out):
-                a = m * 4
-                dn = _load(d_new, a)
-                _store(d_outf, dn, a)
-                _store(b2f, _sub(_load(b2f, a), _mul(lrv, dn)), a)
-            for j in range(n_hid):
-                a = j * 4
-                hv = _load(h, a)
-                dh = _mul(_mul(_load(back, a), hv), _sub(one, hv))
-                _store(d_hidf, dh, a)
-                _store(lr_hf, _mul(lrv, hv), a)
-                _store(b1f, _sub(_load(b1f, a), _mul(lrv, dh)), a)
-                _store(cur, _sub(_load(cur, a), _mul(lcc, dh)), a)
-                _store(run_sum, _add(_load(run_sum, a), dh), a)
+                        s0 = _add(s0, _mul(_load(W2f, m * w2 + j * 4), _load(d_outf, m * 4)))
+                    _store(back, s0, 0)
+                    n = 1
+                for k in range(n):
+                    a = (j + k) * 4
+                    hv = _load(h, a)
+                    dh = _mul(_mul(_load(back, k * 4), hv), _sub(one, hv))
+                    _store(d_hidf, dh, a)
+                    _store(lr_hf, _mul(lrv, hv), a)
+                    _store(b1f, _sub(_load(b1f, a), _mul(lrv, dh)), a)
+                    _store(cur, _sub(_load(cur, a), _mul(lcc, dh)), a)
+                    _store(run_sum, _add(_load(run_sum, a), dh), a)
             for i in range(n_pro):
                 _store(lr_pf, _mul(lrv, _load(p, i * 4)), i * 4)
-            # the runs that end here: their update of W1c, seen by the other contexts
+            # the runs that end here: their update of W1c, seen by the other contexts (a lane
+            # whose run goes on keeps its numbers: chosen, not recomputed)
+            ending = False
             for lane in range(4):
-                if s + 1 == run_end[lane]:
-                    r = run[lane]
-                    rate = lr[lane]
+                ends = s + 1 == run_end[lane]
+                ending = ending or ends
+                is_end[lane] = 1.0 if ends else 0.0
+            if ending:
+                r0 = run[0]
+                r1 = run[1]
+                r2 = run[2]
+                r3 = run[3]
+                for j in range(n_hid):
+                    a = j * 4
+                    _store(back, _mul(_load(run_sum, a), lrv), a)  # the run's lr * summed deltas
+                for q in range(n_unique):
+                    for lane in range(4):
+                        r = run[lane]
+                        g = _get(gramf, q * n_unique + r)
+                        own[lane] = is_end[lane] if q == r else 0.0
+                        other[lane] = is_end[lane] if q != r and g != 0.0 else 0.0
+                    g = _gather(gramf, q * n_unique + r0, q * n_unique + r1, q * n_unique + r2,
+                                q * n_unique + r3)  # fmt: skip
+                    is_own = _load(own, 0)
+                    is_other = _load(other, 0)
                     for j in range(n_hid):
-                        rs = _get(run_sum, j * 4 + lane) * rate
-                        at = (r * n_hid + j) * 4 + lane
-                        _put(movedf, at, _get(movedf, at) + rs)
-                        _put(Uf, at, _get(cur, j * 4 + lane))
-                        for q in range(n_unique):
-                            g = _get(gramf, q * n_unique + r)
-                            if q != r and g != 0.0:
-                                at = (q * n_hid + j) * 4 + lane
-                                _put(Uf, at, _get(Uf, at) - g * rs)
+                        a = j * 4
+                        at = (q * n_hid + j) * 4
+                        rs = _load(back, a)
+                        u = _load(Uf, at)
+                        u = _select(is_other, _sub(u, _mul(g, rs)), u)
+                        _store(Uf, _select(is_own, _load(cur, a), u), at)
+                        mv = _load(movedf, at)
+                        _store(movedf, _select(is_own, _add(mv, rs), mv), at)
         for lane in range(4):
             rmse[it, lane] = np.sqrt(sq[lane] / (steps * n_out))
