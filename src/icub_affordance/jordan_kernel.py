@@ -635,6 +635,7 @@ def train_lanes(
                     _store(h, s1, a + 4)
                     _store(h, s2, a + 8)
                     _store(h, s3, a + 12)
+                    _sigmoid_16(h, a)  # overlapping the next block's sums
                     j += 4
                 else:
                     d0 = _load(d_hidf, a)
@@ -645,14 +646,8 @@ def train_lanes(
                         _store(W1pf, w, b)
                         s0 = _add(s0, _mul(w, _load(p, i * 4)))
                     _store(h, s0, a)
+                    _sigmoid_4(h, a)
                     j += 1
-            g = 0
-            while g + 16 <= n_hid * 4:
-                _sigmoid_16(h, g)
-                g += 16
-            while g < n_hid * 4:
-                _sigmoid_4(h, g)
-                g += 4
             # forward: the motor outputs, four at a time, W2 updated by the last step first
             m = 0
             while m < n_out:
@@ -689,6 +684,7 @@ def train_lanes(
                     _store(y, s1, a + 4)
                     _store(y, s2, a + 8)
                     _store(y, s3, a + 12)
+                    _sigmoid_16(y, a)  # overlapping the next block's sums
                     m += 4
                 else:
                     d0 = _load(d_outf, a)
@@ -699,14 +695,8 @@ def train_lanes(
                         _store(W2f, w, b)
                         s0 = _add(s0, _mul(w, _load(h, j * 4)))
                     _store(y, s0, a)
+                    _sigmoid_4(y, a)
                     m += 1
-            g = 0
-            while g + 16 <= n_out * 4:
-                _sigmoid_16(y, g)
-                g += 16
-            while g < n_out * 4:
-                _sigmoid_4(y, g)
-                g += 4
             # backward: deltas of 0.5 * squared error; the output biases' update
             sqv = _load(sq, 0)
             for m in range(n_out):
