@@ -561,8 +561,6 @@ def train_lanes(
     ctx_at = np.empty(4, dtype=np.int64)
     w1 = n_pro * 4  # one hidden unit's row of W1p
     w2 = n_hid * 4  # one output's row of W2
-    h_blocks = n_hid // 4  # the hidden units in blocks of four, then one by one
-    h_items = h_blocks + n_hid % 4
     for it in range(tasks.shape[0]):
         for lane in range(4):
             lr[lane] = rates[it, lane]
@@ -637,6 +635,27 @@ def train_lanes(
                     _store(h, s3, a + 12)
                     _sigmoid_16(h, a)  # overlapping the next block's sums
                     j += 4
+                elif j + 2 <= n_hid:  # two at a time
+                    d0 = _load(d_hidf, a)
+                    d1 = _load(d_hidf, a + 4)
+                    s0 = _add(_load(cur, a), _load(b1f, a))
+                    s1 = _add(_load(cur, a + 4), _load(b1f, a + 4))
+                    for i in range(n_pro):
+                        lp = _load(lr_pf, i * 4)
+                        pi = _load(p, i * 4)
+                        b = j * w1 + i * 4
+                        w = _sub(_load(W1pf, b), _mul(lp, d0))
+                        _store(W1pf, w, b)
+                        s0 = _add(s0, _mul(w, pi))
+                        b += w1
+                        w = _sub(_load(W1pf, b), _mul(lp, d1))
+                        _store(W1pf, w, b)
+                        s1 = _add(s1, _mul(w, pi))
+                    _store(h, s0, a)
+                    _store(h, s1, a + 4)
+                    _sigmoid_4(h, a)
+                    _sigmoid_4(h, a + 4)
+                    j += 2
                 else:
                     d0 = _load(d_hidf, a)
                     s0 = _add(_load(cur, a), _load(b1f, a))
@@ -712,9 +731,9 @@ def train_lanes(
             # four at a time, and with each the hidden side of the SGD step: the biases and the
             # context's part now, the weights pending
             lcc = _load(lr_cc, 0)
-            for t in range(h_items):
-                j = 4 * t if t < h_blocks else 3 * h_blocks + t
-                if t < h_blocks:
+            j = 0
+            while j < n_hid:
+                if j + 4 <= n_hid:
                     s0 = zero
                     s1 = zero
                     s2 = zero
@@ -731,6 +750,17 @@ def train_lanes(
                     _store(back, s2, 8)
                     _store(back, s3, 12)
                     n = 4
+                elif j + 2 <= n_hid:
+                    s0 = zero
+                    s1 = zero
+                    for m in range(n_out):
+                        dm = _load(d_outf, m * 4)
+                        b = m * w2 + j * 4
+                        s0 = _add(s0, _mul(_load(W2f, b), dm))
+                        s1 = _add(s1, _mul(_load(W2f, b + 4), dm))
+                    _store(back, s0, 0)
+                    _store(back, s1, 4)
+                    n = 2
                 else:
                     s0 = zero
                     for m in range(n_out):
@@ -746,6 +776,7 @@ def train_lanes(
                     _store(b1f, _sub(_load(b1f, a), _mul(lrv, dh)), a)
                     _store(cur, _sub(_load(cur, a), _mul(lcc, dh)), a)
                     _store(run_sum, _add(_load(run_sum, a), dh), a)
+                j += n
             for i in range(n_pro):
                 _store(lr_pf, _mul(lrv, _load(p, i * 4)), i * 4)
             # the runs that end here: their update of W1c, seen by the other contexts (a lane
