@@ -72,22 +72,30 @@ def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
     np.testing.assert_array_equal(w0.W1, Weights.init(hidden, 0.5, np.random.default_rng(1)).W1)
 
 
-# Trains one network of the paper's size on the synthetic materials and prints a digest of the
-# weights and the learning curve; with "uncached", from a kernel compiled afresh without a cache.
+# Trains one network of the paper's size on the synthetic materials, and five together, and
+# prints a digest of the weights and the learning curves; with "uncached", from kernels compiled
+# afresh without a cache.
 KERNEL_RUN = """
 import hashlib, sys
 import numba
 from icub_affordance.train import synthetic_materials
 from conftest import train_config
 import icub_affordance.jordan_kernel as kernel
-from icub_affordance.train import train_network
+from icub_affordance.train import train_network, train_networks
 if sys.argv[1] == "uncached":  # the same options, less the cache
-    options = {k: v for k, v in kernel.train_schedule.targetoptions.items() if k != "nopython"}
-    kernel.train_schedule = numba.njit(**options)(kernel.train_schedule.py_func)
-weights, curve = train_network(synthetic_materials(), train_config(), "B", seed=7)
-digest = hashlib.sha256(curve["rmse"].tobytes())
-for array in weights.as_dict().values():
-    digest.update(array.tobytes())
+    for name in ("train_schedule", "train_lanes"):
+        compiled = getattr(kernel, name)
+        options = {k: v for k, v in compiled.targetoptions.items() if k != "nopython"}
+        setattr(kernel, name, numba.njit(**options)(compiled.py_func))
+m = synthetic_materials()
+trained = [train_network(m, train_config(), "B", seed=7)]
+trained += train_networks(m, train_config(iterations=600, phase1_iterations=300), ["A"] * 5,
+                          [1, 2, 3, 4, 5])
+digest = hashlib.sha256()
+for weights, curve in trained:
+    digest.update(curve["rmse"].tobytes())
+    for array in weights.as_dict().values():
+        digest.update(array.tobytes())
 print("digest", digest.hexdigest())
 """
 
@@ -95,7 +103,8 @@ print("digest", digest.hexdigest())
 @pytest.mark.slow  # three compilations of the kernel in fresh processes
 def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
     """A cold compile that fills an empty cache, a load from that cache and a compile without any
-    cache train to the same bits: what ran before cannot change a result."""
+    cache train to the same bits, one network alone and networks together: what ran before
+    cannot change a result."""
 
     def run(mode: str) -> tuple[str, str]:
         env = os.environ | {"NUMBA_CACHE_DIR": str(tmp_path / "cache"), "NUMBA_DEBUG_CACHE": "1"}
