@@ -92,12 +92,17 @@ class TrainingState:
     )  # fmt: skip
 
     @classmethod
-    def start(cls, weights: Weights, contexts: np.ndarray) -> TrainingState:
+    def start(
+        cls, weights: Weights, contexts: np.ndarray, unique: np.ndarray | None = None
+    ) -> TrainingState:
         """The state before the first iteration, for these initial weights and the contexts
-        (objects, tasks, steps-1, 200) the training will show."""
+        (objects, tasks, steps-1, 200) the training will show; ``unique``: their distinct
+        contexts, when known already (networks of one run share them)."""
         from .jordan_kernel import project_contexts
 
-        unique = np.ascontiguousarray(_distinct_contexts(contexts)[0])
+        if unique is None:
+            unique = _distinct_contexts(contexts)[0]
+        unique = np.ascontiguousarray(unique)
         hidden = weights.W1.shape[0]
         arrays = {
             "W1cT": np.ascontiguousarray(weights.W1[:, CONTEXT].T),
@@ -285,6 +290,11 @@ def train_together(
             states[i].done += length
             rmse.append(out[:, lane].copy())
     return rmse
+
+
+def distinct_contexts(contexts: np.ndarray) -> np.ndarray:
+    """The distinct contexts (in sorted order) of contexts (objects, tasks, steps-1, 200)."""
+    return _distinct_contexts(np.ascontiguousarray(contexts, dtype=np.float64))[0]
 
 
 def _distinct_contexts(contexts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

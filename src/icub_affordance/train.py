@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights, train_together
+from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights, distinct_contexts, train_together
 from .spec import (
     AFTER_PHASE1,
     CATEGORISATION,
@@ -311,6 +311,15 @@ def _train_parts_together(
     )
 
 
+def _starts(trainings: list[_Training]) -> list[TrainingState]:
+    """Each network's state before its first iteration (the run's distinct contexts found once:
+    its networks share them)."""
+    if not trainings:
+        return []
+    unique = distinct_contexts(trainings[0].contexts)
+    return [TrainingState.start(t.weights, t.contexts, unique) for t in trainings]
+
+
 def _check_together(mappings, seeds) -> None:
     if len(mappings) != len(seeds):
         raise ValueError(f"{len(mappings)} mappings for {len(seeds)} seeds: one of each a network")
@@ -323,7 +332,7 @@ def train_phase1s(
     ``seeds[i]``), trained side by side: each the same bits as trained alone."""
     _check_together(mappings, seeds)
     trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]
-    states = [TrainingState.start(t.weights, t.contexts) for t in trainings]
+    states = _starts(trainings)
     rmse = _train_parts_together(m, states, trainings, 0, config.phase1_iterations)
     return [
         Phase1(phase1_key(m, config, a, seed), state, r)
@@ -345,7 +354,7 @@ def train_networks(
     _check_together(mappings, seeds)
     trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]
     if after is None:
-        states = [TrainingState.start(t.weights, t.contexts) for t in trainings]
+        states = _starts(trainings)
         firsts = _train_parts_together(m, states, trainings, 0, config.phase1_iterations)
     else:
         if len(after) != len(seeds):
