@@ -38,6 +38,10 @@ code, and a cold compile, a cache load and an uncached compile give the same bit
 checks). The kernel calls only this file's compiled functions and reads no global of another
 module (whose change the cache would not see): every size comes from the arrays.
 
+``train_lanes`` trains four networks of one run at once, network l in lane l of 4-wide vectors,
+each lane making its network's operations in its network's order, so that each ends with the
+bits it has when trained alone (``jordan.train_together``; the section at the end of this file).
+
 Kept apart from ``jordan`` so that only training pays numba's import (about 0.5 s).
 """
 
