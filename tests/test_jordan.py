@@ -331,7 +331,7 @@ def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alo
     anneal = train_config(
         **common, learning_rate_schedule="anneal", categorisation_cue="all_steps", curve_rows=50
     )
-    mappings, seeds = ["A", "B", "B"], [4, 5, 6]
+    mappings, seeds = ["A", "B", "B", "A", "B"], [4, 5, 6, 7, 8]  # four together, one alone
     shared = train_phase1s(m, constant, mappings, seeds)
     for phase1, mapping, seed in zip(shared, mappings, seeds, strict=True):
         alone = train_phase1(m, constant, mapping, seed)
@@ -350,6 +350,6 @@ def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alo
         for key in curve:
             assert curve[key].tobytes() == whole_curve[key].tobytes(), key
     with pytest.raises(ValueError, match="other settings, mapping, seed or materials"):
-        train_networks(m, anneal, ["B", "B", "B"], seeds, after=shared)
+        train_networks(m, anneal, ["B"] * 5, seeds, after=shared)
     with pytest.raises(ValueError, match="one of each a network"):
         train_networks(m, anneal, ["A"], seeds)
