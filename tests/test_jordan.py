@@ -72,22 +72,30 @@ def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
     np.testing.assert_array_equal(w0.W1, Weights.init(hidden, 0.5, np.random.default_rng(1)).W1)
 
 
-# Trains one network of the paper's size on the synthetic materials and prints a digest of the
-# weights and the learning curve; with "uncached", from a kernel compiled afresh without a cache.
+# Trains one network of the paper's size on the synthetic materials, and five together, and
+# prints a digest of the weights and the learning curves; with "uncached", from kernels compiled
+# afresh without a cache.
 KERNEL_RUN = """
 import hashlib, sys
 import numba
 from icub_affordance.train import synthetic_materials
 from conftest import train_config
 import icub_affordance.jordan_kernel as kernel
-from icub_affordance.train import train_network
+from icub_affordance.train import train_network, train_networks
 if sys.argv[1] == "uncached":  # the same options, less the cache
-    options = {k: v for k, v in kernel.train_schedule.targetoptions.items() if k != "nopython"}
-    kernel.train_schedule = numba.njit(**options)(kernel.train_schedule.py_func)
-weights, curve = train_network(synthetic_materials(), train_config(), "B", seed=7)
-digest = hashlib.sha256(curve["rmse"].tobytes())
-for array in weights.as_dict().values():
-    digest.update(array.tobytes())
+    for name in ("train_schedule", "train_lanes"):
+        compiled = getattr(kernel, name)
+        options = {k: v for k, v in compiled.targetoptions.items() if k != "nopython"}
+        setattr(kernel, name, numba.njit(**options)(compiled.py_func))
+m = synthetic_materials()
+trained = [train_network(m, train_config(), "B", seed=7)]
+trained += train_networks(m, train_config(iterations=600, phase1_iterations=300), ["A"] * 5,
+                          [1, 2, 3, 4, 5])
+digest = hashlib.sha256()
+for weights, curve in trained:
+    digest.update(curve["rmse"].tobytes())
+    for array in weights.as_dict().values():
+        digest.update(array.tobytes())
 print("digest", digest.hexdigest())
 """
 
@@ -95,7 +103,8 @@ print("digest", digest.hexdigest())
 @pytest.mark.slow  # three compilations of the kernel in fresh processes
 def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
     """A cold compile that fills an empty cache, a load from that cache and a compile without any
-    cache train to the same bits: what ran before cannot change a result."""
+    cache train to the same bits, one network alone and networks together: what ran before
+    cannot change a result."""
 
     def run(mode: str) -> tuple[str, str]:
         env = os.environ | {"NUMBA_CACHE_DIR": str(tmp_path / "cache"), "NUMBA_DEBUG_CACHE": "1"}
@@ -281,3 +290,66 @@ def test_a_rate_per_iteration_is_what_the_torch_loop_does_with_that_rate():
     assert not np.allclose(fast.W2, one.W2)  # the rates made a difference
     with pytest.raises(ValueError, match="3 learning rates|\\(3,\\) learning rates"):
         train_online(w0, np.full(3, 0.075), contexts, m.demos, grips, schedule)
+
+
+@pytest.mark.parametrize("hidden", [10, 40])
+@pytest.mark.parametrize("rate", ["constant", "anneal"])
+def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
+    """train_networks (a run's networks four at a time in a vector's lanes) gives every network
+    the bytes train_network gives it alone, weights and learning curve: both cue timings, the
+    paper's 10 hidden units and the robot variants' 40, a constant and a falling rate; six
+    networks, so the second group of four is filled with copies."""
+    from icub_affordance.train import train_networks
+
+    m = synthetic_materials()
+    mappings, seeds = ["A", "A", "A", "B", "B", "B"], [11, 12, 13, 14, 15, 16]
+    for cue in ("first_step", "all_steps"):
+        config = train_config(
+            hidden=hidden, iterations=240, phase1_iterations=120, categorisation_cue=cue,
+            learning_rate_schedule=rate, curve_rows=0,
+        )  # fmt: skip
+        together = train_networks(m, config, mappings, seeds)
+        assert len(together) == len(seeds)
+        for (weights, curve), mapping, seed in zip(together, mappings, seeds, strict=True):
+            alone, alone_curve = train_network(m, config, mapping, seed)
+            for name in ("W1", "b1", "W2", "b2"):
+                assert getattr(weights, name).tobytes() == getattr(alone, name).tobytes()
+            assert curve.keys() == alone_curve.keys()
+            for key in curve:
+                assert curve[key].tobytes() == alone_curve[key].tobytes(), key
+
+
+def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alone():
+    """Phase 1 of several networks trained together (train_phase1s), each the bytes of
+    train_phase1, continued together with other settings after phase 1 (the annealed rate, the
+    cue at every step, the servo targets) to the bytes of each network trained whole, alone."""
+    from icub_affordance.train import train_networks, train_phase1, train_phase1s
+
+    m = synthetic_materials()
+    common = {"iterations": 200, "phase1_iterations": 100, "hidden": 12, "target": "commands"}
+    constant = train_config(**common, categorisation_cue="first_step")
+    anneal = train_config(
+        **common, learning_rate_schedule="anneal", categorisation_cue="all_steps", curve_rows=50
+    )
+    mappings, seeds = ["A", "B", "B", "A", "B"], [4, 5, 6, 7, 8]  # four together, one alone
+    shared = train_phase1s(m, constant, mappings, seeds)
+    for phase1, mapping, seed in zip(shared, mappings, seeds, strict=True):
+        alone = train_phase1(m, constant, mapping, seed)
+        assert phase1.key == alone.key and phase1.state.done == alone.state.done
+        assert phase1.rmse.tobytes() == alone.rmse.tobytes()
+        for key, value in alone.state.arrays.items():
+            assert phase1.state.arrays[key].tobytes() == value.tobytes(), key
+    kept = {k: v.copy() for k, v in shared[0].state.arrays.items()}
+    continued = train_networks(m, anneal, mappings, seeds, after=shared)
+    for key, value in kept.items():  # the saved phase 1 is left as it was
+        assert shared[0].state.arrays[key].tobytes() == value.tobytes()
+    for (weights, curve), mapping, seed in zip(continued, mappings, seeds, strict=True):
+        whole, whole_curve = train_network(m, anneal, mapping, seed)
+        for name in ("W1", "b1", "W2", "b2"):
+            assert getattr(weights, name).tobytes() == getattr(whole, name).tobytes()
+        for key in curve:
+            assert curve[key].tobytes() == whole_curve[key].tobytes(), key
+    with pytest.raises(ValueError, match="other settings, mapping, seed or materials"):
+        train_networks(m, anneal, ["B"] * 5, seeds, after=shared)
+    with pytest.raises(ValueError, match="one of each a network"):
+        train_networks(m, anneal, ["A"], seeds)

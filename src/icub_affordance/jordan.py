@@ -92,12 +92,17 @@ class TrainingState:
     )  # fmt: skip
 
     @classmethod
-    def start(cls, weights: Weights, contexts: np.ndarray) -> TrainingState:
+    def start(
+        cls, weights: Weights, contexts: np.ndarray, unique: np.ndarray | None = None
+    ) -> TrainingState:
         """The state before the first iteration, for these initial weights and the contexts
-        (objects, tasks, steps-1, 200) the training will show."""
+        (objects, tasks, steps-1, 200) the training will show; ``unique``: their distinct
+        contexts, when known already (networks of one run share them)."""
         from .jordan_kernel import project_contexts
 
-        unique = np.ascontiguousarray(_distinct_contexts(contexts)[0])
+        if unique is None:
+            unique = _distinct_contexts(contexts)[0]
+        unique = np.ascontiguousarray(unique)
         hidden = weights.W1.shape[0]
         arrays = {
             "W1cT": np.ascontiguousarray(weights.W1[:, CONTEXT].T),
@@ -141,10 +146,7 @@ class TrainingState:
                 "these contexts are not the ones the training started with: a state continues "
                 "only the training it was made by (same maps, same cue timing)"
             )
-        run_ends = np.empty(contexts.shape[:3], dtype=np.int64)
-        for key in np.ndindex(*contexts.shape[:2]):
-            for start, end in equal_runs(contexts[key]):
-                run_ends[key][start:end] = end
+        run_ends = _run_ends(contexts)
         rmse = np.empty(len(tasks))
         demos = np.ascontiguousarray(demos, dtype=np.float64)
         if targets is None:
@@ -182,6 +184,122 @@ class TrainingState:
         W1[:, CONTEXT] = a["W1cT"].T
         W1[:, PROPRIO] = a["W1pT"].T
         return Weights(W1, a["b1"], np.ascontiguousarray(a["W2T"].T), a["b2"])
+
+
+def _run_ends(contexts: np.ndarray) -> np.ndarray:
+    """At each transition (objects, tasks, steps-1), the end of the run of equal contexts it is
+    in (:func:`equal_runs`)."""
+    run_ends = np.empty(contexts.shape[:3], dtype=np.int64)
+    for key in np.ndindex(*contexts.shape[:2]):
+        for start, end in equal_runs(contexts[key]):
+            run_ends[key][start:end] = end
+    return run_ends
+
+
+#: How many networks :func:`train_together` trains side by side (one per lane of a 4-wide vector)
+LANES = 4
+
+# A lane's arrays in ``jordan_kernel.train_lanes`` from a state's: (key, transposed)
+_LANE_ARRAYS = (
+    ("W1pT", True), ("b1", False), ("W2T", True), ("b2", False), ("U", False), ("moved", False),
+    ("lr_p", False), ("d_hid", False), ("lr_h", False), ("d_out", False),
+)  # fmt: skip
+
+
+def train_together(
+    states: list[TrainingState],
+    learning_rates: list[float | np.ndarray],
+    contexts: np.ndarray,
+    demos: np.ndarray,
+    grips: list[np.ndarray],
+    schedules: list[tuple[np.ndarray, np.ndarray, np.ndarray]],
+    targets: np.ndarray | None = None,
+) -> list[np.ndarray]:
+    """Train several networks on, in place, side by side: each state over its own schedule
+    (all of one length) with its own learning rates and target grips, the contexts, demos and
+    targets shared (see :func:`train_online` for the arguments). Returns each state's RMSE per
+    iteration, as :meth:`TrainingState.train` would.
+
+    Every state ends with the bits :meth:`TrainingState.train` gives it alone: the networks are
+    trained four at a time, network l of a group in lane l of 4-wide vectors, each lane doing
+    its network's operations in its network's order (``jordan_kernel.train_lanes``). A last
+    group of two or three is filled with copies of its first network, trained and dropped; a
+    last network alone is trained alone.
+    """
+    from .jordan_kernel import train_lanes
+
+    n = len(states)
+    if not (len(learning_rates) == len(grips) == len(schedules) == n):
+        raise ValueError("one learning rate (or schedule of rates), grips and schedule per state")
+    if n == 0:
+        return []
+    contexts = np.ascontiguousarray(contexts, dtype=np.float64)
+    unique, context_ids = _distinct_contexts(contexts)
+    first = states[0].arrays
+    for state in states:
+        if not np.array_equal(unique, state.arrays["unique"]):
+            raise ValueError(
+                "these contexts are not the ones the training started with: a state continues "
+                "only the training it was made by (same maps, same cue timing)"
+            )
+        if state.arrays["b1"].shape != first["b1"].shape or not np.array_equal(
+            state.arrays["gram"], first["gram"]
+        ):
+            raise ValueError("networks trained together need the same hidden size and contexts")
+    run_ends = _run_ends(contexts)
+    demos = np.ascontiguousarray(demos, dtype=np.float64)
+    if targets is None:
+        targets = demos
+    elif targets.shape != demos.shape:
+        raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
+    targets = np.ascontiguousarray(targets, dtype=np.float64)
+    schedules = [tuple(np.asarray(a, dtype=np.int64) for a in sch) for sch in schedules]
+    length = len(schedules[0][0])
+    if any(len(a) != length for sch in schedules for a in sch):
+        raise ValueError("networks trained together need schedules of one length")
+    rates = []
+    for rate in learning_rates:
+        rate = np.asarray(rate, dtype=np.float64)
+        if rate.ndim and rate.shape != (length,):
+            raise ValueError(f"{rate.shape} learning rates for a schedule of {length} iterations")
+        rates.append(np.broadcast_to(rate, (length,)))
+    rmse = []
+    for start in range(0, n, LANES):
+        group = list(range(start, min(start + LANES, n)))
+        if len(group) == 1:  # alone, it trains faster on its own than with three copies
+            i = group[0]
+            rmse.append(states[i].train(rates[i], contexts, demos, grips[i], schedules[i], targets))
+            continue
+        lanes = group + [group[0]] * (LANES - len(group))  # a short group: copies of its first
+
+        def stacked(arrays, lanes=lanes):
+            return np.ascontiguousarray(np.stack([arrays[i] for i in lanes], axis=-1))
+
+        a = {
+            key: stacked([s.arrays[key].T if transposed else s.arrays[key] for s in states])
+            for key, transposed in _LANE_ARRAYS
+        }
+        out = np.empty((length, LANES))
+        train_lanes(
+            a["W1pT"], a["b1"], a["W2T"], a["b2"], a["U"], a["moved"], first["gram"],
+            a["lr_p"], a["d_hid"], a["lr_h"], a["d_out"], stacked(rates), context_ids, run_ends,
+            demos, targets, stacked([np.asarray(g, dtype=np.int64) for g in grips]),
+            stacked([sch[0] for sch in schedules]), stacked([sch[1] for sch in schedules]),
+            stacked([sch[2] for sch in schedules]), out,
+        )  # fmt: skip
+        for lane, i in enumerate(group):
+            arrays = states[i].arrays
+            for key, transposed in _LANE_ARRAYS:
+                value = a[key][..., lane]
+                arrays[key][...] = value.T if transposed else value
+            states[i].done += length
+            rmse.append(out[:, lane].copy())
+    return rmse
+
+
+def distinct_contexts(contexts: np.ndarray) -> np.ndarray:
+    """The distinct contexts (in sorted order) of contexts (objects, tasks, steps-1, 200)."""
+    return _distinct_contexts(np.ascontiguousarray(contexts, dtype=np.float64))[0]
 
 
 def _distinct_contexts(contexts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

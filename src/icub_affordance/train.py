@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights
+from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights, distinct_contexts, train_together
 from .spec import (
     AFTER_PHASE1,
     CATEGORISATION,
@@ -278,11 +278,14 @@ def train_network(
     else:
         state, first = after.state.copy(), after.rmse  # the saved state stays as it was
     rest = _train_part(m, state, training, config.phase1_iterations, config.iterations)
-    rmse = np.concatenate([first, rest])
-    trained = state.weights()
+    return state.weights(), _curve(config, training, np.concatenate([first, rest]))
+
+
+def _curve(config: TrainConfig, training: _Training, rmse: np.ndarray) -> dict[str, np.ndarray]:
+    """The learning curve's rows (:func:`curve_every`) from every iteration's RMSE."""
     tasks, objects, sequences = training.schedule
     kept = np.arange(curve_every(config) - 1, config.iterations, curve_every(config))
-    curve = {
+    return {
         "iteration": kept + 1,
         "phase": np.where(kept < config.phase1_iterations, 1, 2),
         "task": tasks[kept],
@@ -290,7 +293,86 @@ def train_network(
         "sequence": sequences[kept],
         "rmse": rmse[kept],
     }
-    return trained, curve
+
+
+def _train_parts_together(
+    m: Materials, states: list[TrainingState], trainings: list[_Training], begin: int, end: int
+) -> list[np.ndarray]:
+    """:func:`_train_part` for several networks of one run at once (``jordan.train_together``);
+    the same bits, network by network."""
+    return train_together(
+        states,
+        [t.rates[begin:end] for t in trainings],
+        trainings[0].contexts,
+        m.demos,
+        [t.grips for t in trainings],
+        [tuple(a[begin:end] for a in t.schedule) for t in trainings],
+        trainings[0].targets,
+    )
+
+
+def _starts(trainings: list[_Training]) -> list[TrainingState]:
+    """Each network's state before its first iteration (the run's distinct contexts found once:
+    its networks share them)."""
+    if not trainings:
+        return []
+    unique = distinct_contexts(trainings[0].contexts)
+    return [TrainingState.start(t.weights, t.contexts, unique) for t in trainings]
+
+
+def _check_together(mappings, seeds) -> None:
+    if len(mappings) != len(seeds):
+        raise ValueError(f"{len(mappings)} mappings for {len(seeds)} seeds: one of each a network")
+
+
+def train_phase1s(
+    m: Materials, config: TrainConfig, mappings: list[str], seeds: list[int]
+) -> list[Phase1]:
+    """:func:`train_phase1` of several networks of one run (network i: ``mappings[i]``,
+    ``seeds[i]``), trained side by side: each the same bits as trained alone."""
+    _check_together(mappings, seeds)
+    trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]
+    states = _starts(trainings)
+    rmse = _train_parts_together(m, states, trainings, 0, config.phase1_iterations)
+    return [
+        Phase1(phase1_key(m, config, a, seed), state, r)
+        for a, seed, state, r in zip(mappings, seeds, states, rmse, strict=True)
+    ]
+
+
+def train_networks(
+    m: Materials,
+    config: TrainConfig,
+    mappings: list[str],
+    seeds: list[int],
+    after: list[Phase1] | None = None,
+) -> list[tuple[Weights, dict[str, np.ndarray]]]:
+    """:func:`train_network` of several networks of one run (network i: ``mappings[i]``,
+    ``seeds[i]``, and ``after[i]`` its phase 1 when given), trained side by side, four at a
+    time in a vector's lanes (``jordan.train_together``): each network's weights and learning
+    curve are the bits :func:`train_network` gives it alone, in the order given."""
+    _check_together(mappings, seeds)
+    trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]
+    if after is None:
+        states = _starts(trainings)
+        firsts = _train_parts_together(m, states, trainings, 0, config.phase1_iterations)
+    else:
+        if len(after) != len(seeds):
+            raise ValueError(f"{len(after)} phases 1 for {len(seeds)} networks")
+        for phase1, a, seed in zip(after, mappings, seeds, strict=True):
+            if phase1.key != phase1_key(m, config, a, seed):
+                raise ValueError(
+                    "the saved phase 1 was trained with other settings, mapping, seed or "
+                    "materials than this network's: delete it and rerun `snakemake -c2` to "
+                    "train it again"
+                )
+        states = [phase1.state.copy() for phase1 in after]  # the saved states stay as they were
+        firsts = [phase1.rmse for phase1 in after]
+    rests = _train_parts_together(m, states, trainings, config.phase1_iterations, config.iterations)
+    return [
+        (state.weights(), _curve(config, t, np.concatenate([first, rest])))
+        for state, t, first, rest in zip(states, trainings, firsts, rests, strict=True)
+    ]
 
 
 def curve_every(config: TrainConfig) -> int:
