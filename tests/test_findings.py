@@ -252,9 +252,10 @@ def test_the_main_runs_verdicts_keep_errors_apart():
         == said["closed_loop_rt_size_verdict"]
         == ("not shown")
     )
-    # nor of the required grip, nor of a simple effect: shown or not, in either direction
+    # nor of the required grip: shown or not, in either direction; a simple size effect has the
+    # paper's direction (small - large), so it is reproduced or reversed
     assert said["closed_loop_grip_verdict"] == said["closed_loop_rt_grip_verdict"] == "shown"
-    assert said["closed_loop_size_in_congruent_verdict"] == "shown"
+    assert said["closed_loop_size_in_congruent_verdict"] == "reversed"
     assert values["closed_loop_wrong_incongruent"] == pytest.approx(0.6)
 
 
@@ -466,13 +467,13 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     values, table = pages.robustness(inputs, config)
     assert values["ran"] and values["sweep_ran"] == "ran it: seeds 1, 2, 3, 1 setting(s)"
     assert [table["congruency_direction"][0], table["size_direction"][0]] == [
-        "reproduced", "reversed"]  # fmt: skip
+        "paper's way", "against"]  # fmt: skip
     # a flipped interval flips the word: the size interval made to include 0
     summary = pd.read_csv(inputs["sweep_summary.csv"]).assign(size_ci_high=0.01)
     summary.to_csv(tmp_path / "flipped.csv", index=False)
     _, flipped = pages.robustness(inputs | {"sweep_summary.csv": tmp_path / "flipped.csv"}, config)
     assert [flipped["congruency_direction"][0], flipped["size_direction"][0]] == [
-        "reproduced", "not shown"]  # fmt: skip
+        "paper's way", "includes 0"]  # fmt: skip
     assert "it takes three to tell" in values["cost_shape"].text
     assert values["cost_shape"].rests_on == ("robustness.cost_change",)
     values = pages.traced({"robustness": values})["robustness"]
@@ -493,7 +494,7 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     )
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
     # the page's prose is its own; what it glues and shows comes from these numbers
-    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "reproduced", "3 / 0 of 3", "0 / 2 of 3",
+    said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "paper's way", "3 / 0 of 3", "0 / 2 of 3",
             "wall time (s)", "the Slurm cluster hpc (partition short)", "it takes three",
             "412")  # fmt: skip
     for words in said:

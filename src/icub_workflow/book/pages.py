@@ -57,7 +57,7 @@ def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
                 said = lambda t, o=outcome, e=effect: text.claim_verdict(t, o, e)  # noqa: E731
                 out |= text.test_values("tests", name, tests[effect], said)
         for name, term in anova["simple"][mode].items():
-            out |= text.test_values("tests", f"{mode}_{name}", term, text.shown_word)
+            out |= text.test_values("tests", f"{mode}_{name}", term)  # the paper's direction
     return out
 
 
@@ -360,10 +360,13 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     summary = pd.read_csv(inputs["sweep_summary.csv"])
     growth = cost_growth(*read_cost_table(inputs["sweep_cost.csv"])[["replications", "seconds"]]
                          .to_numpy().T)  # fmt: skip
+    added = ", ".join(f"{m:.1f} s from {a:g} to {b:g} replications" for m, a, b in zip(
+        growth["marginal"], growth["sizes"][:-1], growth["sizes"][1:], strict=True))  # fmt: skip
     values |= {"sweep_ran": f"ran it: seeds {', '.join(map(str, sweep['seeds']))}, "
                f"{len(summary)} setting(s)", "cost_change": float(growth["change"]),
-               "cost_shape": text.Claim(f"grew {text.growth_phrase(growth)}, read as the "
-                                        "timings stand", ("robustness.cost_change",))}  # fmt: skip
+               "cost_shape": text.Claim(f"grew {text.growth_phrase(growth)}, read as the timings "
+                                        f"stand (each replication added cost {added})",
+                                        ("robustness.cost_change",))}  # fmt: skip
     directions = {  # each effect's mean over the replications, by its 95% interval
         f"{e}_direction": [text.SWEEP_DIRECTIONS[science.interval_direction(
             r["replications"], *(r[f"{e}_{k}"] for k in ("effect", "ci_low", "ci_high")))]
@@ -371,13 +374,8 @@ def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFr
     return values, summary.assign(**directions)
 
 
-#: The config's sections whose settings the pages quote (``findings.json``'s ``settings``).
+#: The config sections the pages quote, each setting by its path (a reader changes it by that name).
 QUOTED = ("seed", "object_sizes_m", "vision", "demos", "soms", "network")
-
-
-def settings(config: Mapping) -> dict:
-    """The settings by their config path: a page quotes each by the name a reader changes it by."""
-    return pd.json_normalize(dict(config), sep=".").to_dict("records")[0]
 
 
 def methods(inputs: Mapping[str, str]) -> dict[str, dict]:
@@ -412,7 +410,9 @@ def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
             values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
     for key in tests:  # one phrase over the cue timings this build ran (a config may run one)
         ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
-        said = [f"{values[f'{key}_verdict_{cue}'].text} ({SIZE_CUES[cue]})" for cue in ran]
+        words = [values[f"{key}_verdict_{cue}"].text for cue in ran]
+        said = [f"{w} ({SIZE_CUES[cue]})" for w, cue in zip(words, ran, strict=True)]
+        said = [f"{words[0]} (either cue timing)"] if len(set(words)) == 1 < len(ran) else said
         rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
         values[f"{key}_by_cue"] = text.Claim(" and ".join(said), rests) if ran else (
             "not run in this build")  # fmt: skip
@@ -465,6 +465,7 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     """Every page's values ({page: {name: value}}) and tables ({name: table}), from ``inputs``:
     the book's names of the outputs (``BOOK_DATA``'s keys) and their files."""
     anova, cue = _json(inputs["anova.json"]), config["network"]["categorisation_cue"]
+    quoted = {key: config[key] for key in QUOTED}
     curves = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
     curve = science.curve_summary(np.array([c["rmse"] for c in curves]), config["network"][
         "phase1_iterations"], curves[0]["iteration"].to_numpy())  # fmt: skip
@@ -482,7 +483,7 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),
         "intro": score_values,
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
-        "settings": settings({key: config[key] for key in QUOTED}),
+        "settings": pd.json_normalize(quoted, sep=".").to_dict("records")[0],
     } | methods(inputs)  # fmt: skip
     tables |= {"scorecard": score_table} | ({} if sweep is None else {"sweep": sweep})
     return traced(pages), tables

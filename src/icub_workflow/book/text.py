@@ -83,7 +83,7 @@ def listing(items, none: str) -> str:
 
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
 #: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
-SWEEP_DIRECTIONS = {"paper": "reproduced", "against": "reversed", "unclear": "not shown",
+SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "includes 0",
                     "single": "one replication"}  # fmt: skip
 
 
@@ -156,7 +156,7 @@ def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
     changed = rows[rows["verdict"].isin(["larger", "smaller"])]
     out[f"{prefix}_changes"] = _claim(rows, stats, effects(changed))
-    for word in ("larger", "smaller", "equivalent", "identical", "not shown"):
+    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", "not shown"):
         out[f"{prefix}_n_{word.replace(' ', '_')}"] = _claim(
             rows, stats, str((rows["verdict"] == word).sum()))  # fmt: skip
     for word in ("larger", "smaller"):
