@@ -30,6 +30,16 @@ def test_ci_runs_exactly_the_readme_commands():
         assert line in ci
 
 
+def test_a_plain_pytest_starts_no_daemon_and_ci_asks_for_the_slurm_test():
+    """The Slurm test installs and starts daemons: it runs only when asked, and CI asks."""
+    from test_slurm import ASK
+
+    ci = (REPO / ".ci" / "run").read_text()
+    asked = ci.index(f"export {ASK}=1")
+    assert asked < ci.index(readme_quick_start()[1])  # before the tests run
+    assert f"{ASK}=1 pytest tests/test_slurm.py" in (REPO / "README.md").read_text()
+
+
 def test_lock_pins_every_package_exactly():
     lines = [
         line.split("#")[0].strip()

@@ -3,8 +3,9 @@
 sbatch job, the bytes of a local build; a training job that fails is reported with its Slurm log,
 and the next run completes the build.
 
-Needs root and Debian's apt-get (the start script installs Slurm if it must, and stop removes what
-start installed); elsewhere the test is skipped, saying why. CI runs it.
+It installs and starts daemons, so it runs only when asked (``ICUB_SLURM_TEST=1``, as CI does:
+``.ci/run``), and needs root and Debian's apt-get (the start script installs Slurm if it must,
+and stop removes what start installed); elsewhere the test is skipped, saying why.
 """
 
 from __future__ import annotations
@@ -35,8 +36,15 @@ CLUSTER_ARGS = (
 SUBMITTED = re.compile(r"has been submitted with SLURM jobid (\d+) \(log: (\S+)\)\.")
 
 
+#: The environment variable that asks for this test: a plain ``pytest`` touches nothing outside
+#: the checkout, and this test installs Slurm and starts its daemons.
+ASK = "ICUB_SLURM_TEST"
+
+
 @pytest.fixture(scope="module")
 def slurm_cluster():
+    if os.environ.get(ASK) != "1":
+        pytest.skip(f"installs and starts Slurm on this machine: run with {ASK}=1 to ask for it")
     if os.geteuid() != 0 or shutil.which("apt-get") is None:
         pytest.skip("the local Slurm cluster needs root and apt-get (tools/slurm-local/start)")
     start = subprocess.run([TOOLS / "start"], capture_output=True, text=True, timeout=900)
