@@ -148,12 +148,7 @@ class TrainingState:
             )
         run_ends = _run_ends(contexts)
         rmse = np.empty(len(tasks))
-        demos = np.ascontiguousarray(demos, dtype=np.float64)
-        if targets is None:
-            targets = demos
-        elif targets.shape != demos.shape:
-            raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
-        targets = np.ascontiguousarray(targets, dtype=np.float64)
+        demos, targets = _demos_and_targets(demos, targets)
         grips = np.ascontiguousarray(grips, dtype=np.int64)
         rates = np.asarray(learning_rate, dtype=np.float64)
         if rates.ndim and rates.shape != tasks.shape:
@@ -184,6 +179,17 @@ class TrainingState:
         W1[:, CONTEXT] = a["W1cT"].T
         W1[:, PROPRIO] = a["W1pT"].T
         return Weights(W1, a["b1"], np.ascontiguousarray(a["W2T"].T), a["b2"])
+
+
+def _demos_and_targets(demos, targets) -> tuple[np.ndarray, np.ndarray]:
+    """The demonstrations and the targets the output learns (the demonstrations where none are
+    given), as the kernels read them."""
+    demos = np.ascontiguousarray(demos, dtype=np.float64)
+    if targets is None:
+        return demos, demos
+    if targets.shape != demos.shape:
+        raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
+    return demos, np.ascontiguousarray(targets, dtype=np.float64)
 
 
 def _run_ends(contexts: np.ndarray) -> np.ndarray:
@@ -247,12 +253,7 @@ def train_together(
         ):
             raise ValueError("networks trained together need the same hidden size and contexts")
     run_ends = _run_ends(contexts)
-    demos = np.ascontiguousarray(demos, dtype=np.float64)
-    if targets is None:
-        targets = demos
-    elif targets.shape != demos.shape:
-        raise ValueError(f"targets {targets.shape} and demos {demos.shape} differ in shape")
-    targets = np.ascontiguousarray(targets, dtype=np.float64)
+    demos, targets = _demos_and_targets(demos, targets)
     schedules = [tuple(np.asarray(a, dtype=np.int64) for a in sch) for sch in schedules]
     length = len(schedules[0][0])
     if any(len(a) != length for sch in schedules for a in sch):
