@@ -58,7 +58,7 @@ include: "workflow/rules/model.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/readings.smk"
 include: "workflow/rules/size_dose.smk"
-include: "workflow/rules/embodied.smk"
+include: "workflow/rules/robot.smk"
 include: "workflow/rules/statistics.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
@@ -79,13 +79,13 @@ DEFAULT_OUTPUTS = [
     *rules.representations.output,
     *rules.figure_hidden.output,
     *(f for run in PLAN.robot_runs for f in run_files(run) + robot_files(run)),
-    *rules.embodied_replay.output,
-    *rules.embodied_tolerance.output,
-    *rules.embodied_summary.output,
+    *rules.robot_replay.output,
+    *rules.robot_tolerance.output,
+    *rules.robot_summary.output,
     *(f for run in PLAN.confirmation_runs for f in run_files(run) + robot_files(run)),
-    *rules.embodied_confirmation.output,
+    *rules.robot_confirmation.output,
     *rules.robot_statistics.output,
-    *rules.embodied_filmstrip.output,
+    *rules.robot_filmstrip.output,
     *rules.robot_variants_figure.output,
     *rules.robot_animation.output,
     *rules.rulegraph.output,

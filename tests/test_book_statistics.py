@@ -16,10 +16,10 @@ from scipy import stats as sps
 from test_contrasts import synthetic
 from test_robot_variants import trials as robot_trials
 
-from icub_affordance.embodied_stats import PALM_BINS_MM
 from icub_affordance.findings import robot_effect_statistics, wrong_grip_by_congruency
 from icub_affordance.growth import cost_growth, line_fit
-from icub_affordance.robot_statistics import (
+from icub_affordance.robot_stats import (
+    PALM_BINS_MM,
     grasping_trials,
     record_table,
     replay_palm,

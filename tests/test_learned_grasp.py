@@ -25,7 +25,11 @@ from icub_affordance.body import (
     to_normalised,
 )
 from icub_affordance.demos import merge_demos, object_demos
-from icub_affordance.embodied import (
+from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
+from icub_affordance.grasp import DEMO_S, move
+from icub_affordance.io import save_npz
+from icub_affordance.jordan import Weights, run_closed_loop, train_online
+from icub_affordance.robot_test import (
     body_tolerance,
     demo_palms,
     embodied_network,
@@ -35,10 +39,6 @@ from icub_affordance.embodied import (
     replay_policy,
     run_trial,
 )
-from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
-from icub_affordance.grasp import DEMO_S, move
-from icub_affordance.io import save_npz
-from icub_affordance.jordan import Weights, run_closed_loop, train_online
 from icub_affordance.spec import GRASPING, TASKS
 from icub_affordance.train import (
     Materials,

@@ -1,6 +1,6 @@
 """The robot's effect sentences (issue 24): each is a ``text.Claim`` resting on the statistics
 stored beside it, and changing a statistic (its sign, its p across 0.05, its counts) changes the
-sentence accordingly. Made-up effects, in the shape ``embodied_stats.variant_effects`` writes."""
+sentence accordingly. Made-up effects, in the shape ``robot_stats.variant_effects`` writes."""
 
 import copy
 
@@ -168,8 +168,8 @@ def robot_trials(held: dict[str, int], touched: dict[str, int], seconds: dict[st
 
 def test_the_made_up_counts_are_the_ones_variant_effects_writes():
     """The made-up variant's counts, per level, cell and object, are what
-    ``embodied_stats.variant_effects`` counts in trials made to give them."""
-    from icub_affordance.embodied_stats import variant_effects
+    ``robot_stats.variant_effects`` counts in trials made to give them."""
+    from icub_affordance.robot_stats import variant_effects
 
     real = variant_effects(robot_trials(HELD, TOUCHED, SECONDS))["v"]
     made = {"success": measure(HELD), "contact_time": measure(TOUCHED, SECONDS)}
@@ -370,7 +370,7 @@ def test_a_variant_is_named_in_short_words():
 
 
 def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> dict:
-    from icub_affordance.embodied_stats import OWN_ROBOT_FAMILY
+    from icub_affordance.robot_stats import OWN_ROBOT_FAMILY
 
     # the own networks' robot tests as success_analysis writes them: a family of their own (the
     # same term twice here: congruency and size)

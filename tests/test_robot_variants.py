@@ -11,15 +11,6 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
-from icub_affordance.embodied_stats import (
-    VARIANT_COLUMNS,
-    distinct_trials,
-    success_analysis,
-    success_table,
-    tolerance_table,
-    variant_effects,
-    variant_table,
-)
 from icub_affordance.findings import (
     best_robot_variant,
     held_interval,
@@ -27,7 +18,16 @@ from icub_affordance.findings import (
     smallest_that_grasps,
     tolerated_noise,
 )
-from icub_affordance.robot_statistics import paired_grasping
+from icub_affordance.robot_stats import (
+    VARIANT_COLUMNS,
+    distinct_trials,
+    paired_grasping,
+    success_analysis,
+    success_table,
+    tolerance_table,
+    variant_effects,
+    variant_table,
+)
 
 OBJECTS = {  # object: (size, congruent under mapping A)
     "big_ball": ("large", True),

@@ -188,7 +188,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     own = (net["target"], net["hidden"], net["iterations"]) in itertools.product(
         robot["target"], robot["hidden"], robot["iterations"]
     )
-    assert counts["run_embodied"] == variants - own
+    assert counts["run_robot_test"] == variants - own
     assert counts["run_train"] == counts["measures"] - 1 + points - shared + variants - own
     # the main run, the cue ablation and the sweep points are tested in silico
     assert counts["evaluate"] - 2 == counts["stats"] - 2 == points

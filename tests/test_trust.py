@@ -310,7 +310,7 @@ def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_pa
     shutil.rmtree(scene)
     assert plan.returncode == 0, plan.stderr[-2000:]
     jobs = planned_jobs(plan.stdout)
-    for rule in ("body_figure", "visual_maps", "demos_object", "demo_filmstrip", "embodied"):
+    for rule in ("body_figure", "visual_maps", "demos_object", "demo_filmstrip", "robot_test"):
         assert rule in jobs, (rule, jobs)
 
 

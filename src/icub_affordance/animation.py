@@ -23,10 +23,10 @@ import numpy as np
 
 from .body import Robot
 from .demos import DemoConfig
-from .embodied import Outcome, network_policy, outcome_columns, run_trial
 from .evaluate import TrialSet, describe_trial
 from .io import atomic_path, load_npz
 from .jordan import Weights
+from .robot_test import Outcome, network_policy, outcome_columns, run_trial
 from .spec import TASKS
 from .train import Materials, mapping_of
 
@@ -39,7 +39,7 @@ def trial_frames(
     height: int = 180,
     every: int = 20,
 ) -> tuple[list[np.ndarray], Outcome]:
-    """One trial filmed: ``trial(watch=...)`` is ``embodied.run_trial`` with the trial's
+    """One trial filmed: ``trial(watch=...)`` is ``robot_test.run_trial`` with the trial's
     arguments bound (``functools.partial``). A frame (height, width, 3, uint8) after the first
     physics step and every ``every`` steps after it (2 ms each), and one of the state after the
     lift test; and the trial's Outcome, the same as a run without the camera. Rendered without

@@ -26,7 +26,7 @@ WHERE = "config/config.yaml (or your --configfile / --config)"
 #: The cameras the rules render from: the eyes (config vision.eye), Figure 1's overview and the
 #: filmstrips' close-up.
 CAMERAS = ("left_eye", "right_eye", "overview", "closeup")
-#: The filmstrips' frames (workflow/scripts/demo_filmstrip.py, embodied_filmstrip.py), pixels.
+#: The filmstrips' frames (workflow/scripts/demo_filmstrip.py, robot_filmstrip.py), pixels.
 FILMSTRIP_SIZE = (320, 240)
 
 

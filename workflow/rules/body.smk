@@ -15,10 +15,8 @@ rule body_figure:
         object_sizes=settings(config["object_sizes_m"]),
         posture=settings(config["initial_posture_deg"]),
         figure=settings(config["body_figure"]),
-    threads: 1
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
         "data/logs/body_figure.log",
     benchmark:

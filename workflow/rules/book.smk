@@ -1,6 +1,8 @@
 # The book (a Jupyter Book 1.x in book/), built from the pipeline's own outputs.
 import glob
 
+from icub_workflow.book_build import FULL_SCALE_TABLES, TABLES
+
 BOOK_DATA = {
     "figure1_scene.png": "data/body/figure1_scene.png",
     "figure1_eye.png": "data/body/figure1_eye.png",
@@ -19,9 +21,9 @@ BOOK_DATA = {
     "anova.json": PLAN.path(OWN, "eval/anova.json"),
     "cue_difference.json": "data/eval/cue_difference.json",
     "rulegraph.png": "data/book/rulegraph.png",
-    "embodied_analysis.json": "data/embodied/analysis.json",
-    "embodied_success.csv": "data/embodied/success.csv",
-    "embodied_filmstrip.png": "data/figures/embodied_filmstrip.png",
+    "robot_analysis.json": "data/embodied/analysis.json",
+    "robot_success.csv": "data/embodied/success.csv",
+    "robot_filmstrip.png": "data/figures/robot_filmstrip.png",
     "ablation_anova.json": PLAN.path(PLAN.ablation, "eval/anova.json"),
     "ablation_figure5.png": PLAN.path(PLAN.ablation, "figures/figure5.png"),
     "divergence.csv": "data/eval/divergence.csv",
@@ -75,51 +77,10 @@ if config["robustness"]:
 
 
 # The book displays, the pipeline computes: the rule `findings` writes every number, verdict,
-# sentence and table the pages show (data/book/findings.json, data/book/tables/), from these
-# outputs; the pages only glue and display them. It reads no figure.
-FINDINGS_READS = [
-    "anova.json",
-    "ablation_anova.json",
-    "cue_difference.json",
-    "embodied_analysis.json",
-    "divergence.csv",
-    "divergence.json",
-    "hidden_explained.csv",
-    "demos.npz",
-    "demo_summary.csv",
-    "joint_table.csv",
-    "visual_maps.npz",
-    "soms.npz",
-    "readings_summary.csv",
-    "readings_differences.csv",
-    "robot_variants.csv",
-    "robot_effects.json",
-    "robot_statistics.json",
-    "robot_confirmation.csv",
-    "size_summary.csv",
-    "size_slope.csv",
-    "size_power.csv",
-    "size_grips.csv",
-    "size_manipulation.csv",
-    "size_motor.csv",
-    "size_geometry.csv",
-    *(name for name in BOOK_DATA if name == "readings_grows_soms.npz"),
-    *(name for name in BOOK_DATA if name.startswith("curves/")),
-]
-FINDINGS_TABLES = [
-    "scorecard",
-    "readings_summary",
-    "readings_differences",
-    "robot_variants",
-    "robot_effects",
-    "robot_pairs",
-    "robot_confirmation",
-    "robot_cells",
-    "size_tests",
-]
-if config["robustness"]:
-    FINDINGS_READS += ["sweep_summary.csv", "sweep_cost.csv"]
-    FINDINGS_TABLES += ["sweep"]
+# sentence and table the pages show (data/book/findings.json, data/book/tables/), from every
+# data file the book stages (BOOK_DATA); the pages only glue and display them. It reads no figure.
+FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif"))]
+FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if config["robustness"] else ())]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
     "robot", "size_dose",
@@ -142,10 +103,6 @@ rule rulegraph:
         # the graph drawn is this config's (not `runs`: a run adds no rule, and a new run
         # reruns nothing of the main run's)
         config=settings({key: value for key, value in config.items() if key != "runs"}),
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/rulegraph.log",
     benchmark:
@@ -163,10 +120,6 @@ rule rulegraph_figure:
         code=script_code("rulegraph_figure"),
     output:
         "data/book/rulegraph.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/rulegraph_figure.log",
     benchmark:
@@ -193,10 +146,8 @@ rule findings:
             "other": plan_runs(config | {"robustness": not config["robustness"]}).scale(),
         },
         names=FINDINGS_READS,
-    threads: 1
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
         "data/logs/findings.log",
     benchmark:

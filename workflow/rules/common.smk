@@ -112,7 +112,7 @@ if len(ROBOT_GROUPS.keys() - {tuple(NETWORKS), tuple(FRESH_NETWORKS)}):
     raise ValueError(f"robot runs with more than two sets of network indices: {ROBOT_GROUPS}")
 # The filmstrip and the films show the first network of each mapping: for any object one of them
 # categorises it with its natural grip (congruent) and the other with the other grip.
-EMBODIED_FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
+FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
 
 
 def folders_pattern(runs):
@@ -165,7 +165,7 @@ def run_network_files(path):
     return files
 
 
-def embodied_weights(wildcards):
+def robot_test_weights(wildcards):
     """The weights the robot test of a run drives with: the wildcard `net`'s (one network a job),
     or every network's of the run (one job)."""
     run = run_of(wildcards)
@@ -178,14 +178,14 @@ def outputs(rule, run, **wildcards):
     return expand(list(getattr(rules, rule).output), folder=PLAN.folder(run), **wildcards)
 
 
-def embodied_files(run, name):
+def robot_test_files(run, name):
     """A tested variant's per-network robot-test files (`name`: trials.csv or states.npz)."""
     return [PLAN.path(run, f"embodied/net{net}/{name}") for net in PLAN.networks(run)]
 
 
 def robot_files(run):
     """A run's robot test, for a run that is a tested robot variant."""
-    return embodied_files(run, "trials.csv") + embodied_files(run, "states.npz")
+    return robot_test_files(run, "trials.csv") + robot_test_files(run, "states.npz")
 
 
 def run_files(run, tests=True):

@@ -18,7 +18,6 @@ rule demos_object:
     wildcard_constraints:
         object="|".join(config["objects"]),
         folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
-    threads: 1
     priority: 3  # every training waits on it: first
     resources:
         mem_mb=1000,
@@ -46,11 +45,7 @@ rule demos:
     params:
         objects=settings(config["objects"]),
         demos=settings(config["demos"]),
-    threads: 1
     priority: 3  # every training waits on it: first
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/{folder}demos.log",
     benchmark:
@@ -71,10 +66,8 @@ rule demo_filmstrip:
     params:
         object_sizes=settings(config["object_sizes_m"]),
         picks=config["figures"]["filmstrip"],
-    threads: 1
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
         "data/logs/demo_filmstrip.log",
     benchmark:

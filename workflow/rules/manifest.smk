@@ -23,10 +23,6 @@ rule manifest:
         code=script_code("manifest"),
     output:
         "data/results.sha256",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/manifest.log",
     benchmark:

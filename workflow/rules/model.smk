@@ -16,11 +16,7 @@ rule soms:
         soms=run_section("soms"),
         seed=run_section("seed"),
         objects=settings(config["objects"]),
-    threads: 1
     priority: 3  # every training waits on it: first
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/{folder}soms.log",
     benchmark:
@@ -36,10 +32,6 @@ rule figure2_maps:
         code=script_code("figure2_maps"),
     output:
         "data/soms/figure2_maps.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/figure2_maps.log",
     benchmark:
@@ -57,10 +49,6 @@ rule figure2_architecture:
         "data/figures/figure2_architecture.png",
     params:
         hidden=config["network"]["hidden"],
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/figure2_architecture.log",
     benchmark:
@@ -82,14 +70,12 @@ rule train:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
-    threads: 1
     wildcard_constraints:
         folder=folders_pattern(NETWORK_JOB_RUNS),
     # before the cue ablation's training when both are ready: the robot test waits on these
-    # networks, and its jobs are the longest that follow (see workflow/rules/embodied.smk)
+    # networks, and its jobs are the longest that follow (see workflow/rules/robot.smk)
     priority: 1
     resources:
-        mem_mb=500,
         runtime=10,
     log:
         "data/logs/{folder}train/net{net}.log",
@@ -111,7 +97,6 @@ rule evaluate:
     params:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
-    threads: 1
     resources:
         mem_mb=1000,
         runtime=10,
@@ -136,10 +121,6 @@ rule stats:
         confirmatory=lambda w: settings(config["confirmatory"]) if run_of(w) == OWN else [],
         # another run's exploration families carry its name (the own run's none)
         run=lambda w: None if run_of(w) == OWN else run_of(w),
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/{folder}stats.log",
     benchmark:
@@ -157,10 +138,6 @@ rule figure4:
         "data/figures/figure4.png",
     params:
         phase1=config["network"]["phase1_iterations"],
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/figure4.log",
     benchmark:
@@ -177,10 +154,6 @@ rule figure5:
     output:
         figure5="data/{folder}figures/figure5.png",
         timecourse="data/{folder}figures/conflict_timecourse.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/{folder}figure5.log",
     benchmark:
@@ -201,10 +174,6 @@ rule representations:
         trajectories="data/eval/hidden_trajectories.csv",
         explained="data/eval/hidden_explained.csv",
         summary="data/eval/divergence.json",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/representations.log",
     benchmark:
@@ -224,10 +193,6 @@ rule figure_hidden:
         "data/figures/hidden_representations.png",
     params:
         network=0,
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/figure_hidden.log",
     benchmark:

@@ -22,7 +22,6 @@ rule measures:
         measures=config["readings"]["measures"],
     wildcard_constraints:
         folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_RUNS]),
-    threads: 1
     resources:
         mem_mb=1000,
         runtime=10,
@@ -79,7 +78,6 @@ for _group, _runs in MEASURED_GROUPS.items():
             runs=_table,
             objects=settings(config["objects"]),
             measures=config["readings"]["measures"],
-        threads: 1
         priority: 1  # before the figures: the size study's and the readings' tables wait on it
         resources:
             mem_mb=1000,
@@ -108,10 +106,6 @@ rule readings:
         table=PLAN.readings,
         measures=config["readings"]["measures"],
         margins=settings(config["readings"]["equivalence_margin"]),
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/readings/summary.log",
     benchmark:
@@ -128,10 +122,6 @@ rule readings_figure:
         code=script_code("readings_figure"),
     output:
         "data/readings/effects.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/readings/figure.log",
     benchmark:

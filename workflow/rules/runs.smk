@@ -25,7 +25,6 @@ rule run_demos:
         demos=settings(config["demos"]),
         seed=run_section("seed"),
         posture=settings(config["initial_posture_deg"]),
-    threads: 1
     priority: 2  # a replication's maps and networks wait on it
     resources:
         mem_mb=1000,
@@ -55,7 +54,6 @@ rule run_phase1:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
-    threads: 1
     priority: 3  # the build's longest chain: phase 1, three trainings, their robot tests
     resources:
         mem_mb=1000,

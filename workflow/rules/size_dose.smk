@@ -13,10 +13,6 @@ rule size_free_maps:
         "data/{folder}vision/size_free_maps.npz",
     params:
         objects=settings(config["objects"]),
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/{folder}size_free_maps.log",
     benchmark:
@@ -56,7 +52,6 @@ rule size_dose:
         table=PLAN.size_dose,
         measures=config["readings"]["measures"],
         declared=settings(config["size_dose"]["declared"]),
-    threads: 1
     resources:
         mem_mb=1000,
         runtime=10,
@@ -78,10 +73,6 @@ rule size_dose_figure:
         code=script_code("size_dose_figure"),
     output:
         "data/size_dose/dose_response.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/size_dose/figure.log",
     benchmark:

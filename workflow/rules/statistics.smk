@@ -8,18 +8,14 @@ rule robot_statistics:
     trials, the replayed demonstrations, each variant's grasping trials), the replays' palm
     error, and the exact McNemar tests of the variants that differ in the schedule alone."""
     input:
-        trials=rules.embodied_summary.output.trials,
-        tolerance=rules.embodied_tolerance.output[0],
-        replay=rules.embodied_replay.output[0],
+        trials=rules.robot_summary.output.trials,
+        tolerance=rules.robot_tolerance.output[0],
+        replay=rules.robot_replay.output[0],
         code=script_code("robot_statistics"),
     output:
         "data/embodied/statistics.json",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
-        "data/logs/embodied/statistics.log",
+        "data/logs/robot/statistics.log",
     benchmark:
         "data/benchmarks/robot_statistics.tsv"
     script:
@@ -40,10 +36,6 @@ rule cue_difference:
         # which run is which timing (common.smk: PLAN.ablation)
         cue=config["network"]["categorisation_cue"],
         ablation_cue=PLAN.config(PLAN.ablation)["network"]["categorisation_cue"],
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/cue_difference.log",
     benchmark:

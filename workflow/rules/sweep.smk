@@ -17,10 +17,8 @@ rule sweep_summary:
         summary="data/sweep/summary.csv",
     params:
         points=PLAN.sweep,
-    threads: 1
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
         "data/logs/sweep/summary.log",
     benchmark:
@@ -36,10 +34,6 @@ rule sweep_figure:
         code=script_code("sweep_figure"),
     output:
         "data/sweep/effects.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/sweep/figure.log",
     benchmark:

@@ -15,11 +15,9 @@ rule visual_maps:
         vision=settings(config["vision"]),
         objects=settings(config["objects"]),
         posture=settings(config["initial_posture_deg"]),
-    threads: 1
     priority: 3  # every training waits on it: first
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
         "data/logs/visual_maps.log",
     benchmark:
@@ -37,10 +35,6 @@ rule figure3:
         "data/vision/figure3.png",
     params:
         window=config["vision"]["window"],
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
         "data/logs/figure3.log",
     benchmark:

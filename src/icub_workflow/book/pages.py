@@ -14,10 +14,9 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.embodied_stats import FACTOR_LEVELS, INTERACTION
 from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
-from icub_affordance.robot_statistics import record_table
+from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
@@ -218,7 +217,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "div_first_step": np.nan if first is None else first,
         "div_verdict": divergence_verdict(first),
     }  # fmt: skip
-    out |= _robot_values(_json(inputs["embodied_analysis.json"]),
+    out |= _robot_values(_json(inputs["robot_analysis.json"]),
                          _json(inputs["robot_effects.json"])[OWN])  # fmt: skip
     for name in cues:
         result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])

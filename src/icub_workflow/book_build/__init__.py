@@ -4,3 +4,18 @@
 - ``notebooks``: the pages executed ahead of Sphinx, two at a time.
 - ``reading``: the built pages' article text, words and "In brief" boxes, as a reader meets them.
 """
+
+#: The tables the rule ``findings`` writes, data/book/tables/{name}.csv (declared from here; the
+#: findings are ``icub_workflow.book``'s); at full scale also the sweep's.
+TABLES = (
+    "scorecard",
+    "readings_summary",
+    "readings_differences",
+    "robot_variants",
+    "robot_effects",
+    "robot_pairs",
+    "robot_confirmation",
+    "robot_cells",
+    "size_tests",
+)
+FULL_SCALE_TABLES = ("sweep",)

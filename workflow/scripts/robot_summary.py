@@ -3,20 +3,20 @@ them); the config's own networks' success by condition and congruency effect; ea
 success and contact time, and their effects (effects.json: congruency, size and their
 interaction, with the counts per cell and per object and one Holm family over every variant's
 tests): the summaries count each network x object x task once
-(``embodied_stats.distinct_trials``)."""
+(``robot_stats.distinct_trials``)."""
 
 import json
 
 import pandas as pd
 
-from icub_affordance.embodied_stats import (
+from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_affordance.robot_stats import (
     VARIANT_COLUMNS,
     success_analysis,
     success_table,
     variant_effects,
     variant_table,
 )
-from icub_affordance.io import atomic_path, redirect_log, write_text
 
 with redirect_log(snakemake.log[0]):
     files, n_networks = list(snakemake.input.trials), snakemake.params.networks

@@ -5,9 +5,9 @@ import pandas as pd
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.embodied import body_tolerance
-from icub_affordance.embodied_stats import tolerance_table
 from icub_affordance.io import load_npz, redirect_log, write_csv
+from icub_affordance.robot_stats import tolerance_table
+from icub_affordance.robot_test import body_tolerance
 
 with redirect_log(snakemake.log[0]):
     demos = load_npz(snakemake.input.demos, required=("angles", "commands_deg", "objects", "grips"))

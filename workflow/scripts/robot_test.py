@@ -1,12 +1,12 @@
 """Networks drive the simulated arm through every test trial: the network of the wildcard `net`
 (rule embodied: one job per network), or every network of a run, one after another (rule
-run_embodied: the outputs list them in order)."""
+run_robot_test: the outputs list them in order)."""
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.embodied import embodied_network
 from icub_affordance.io import load_npz, redirect_log, save_npz, write_csv
 from icub_affordance.jordan import Weights
+from icub_affordance.robot_test import embodied_network
 from icub_affordance.train import load_materials, mapping_of
 
 

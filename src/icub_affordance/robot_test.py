@@ -11,7 +11,7 @@ hand that meets power's criterion reads power, whatever else touches). A precisi
 the whole hand is a failure, counted as such (``wrong_grip_hold``).
 
 In closed loop a network's test sequences of one object and task are one and the same movement
-(``embodied_network``), run once. The trials' statistics are in ``embodied_stats``, over distinct
+(``embodied_network``), run once. The trials' statistics are in ``robot_stats``, over distinct
 trials (one per network x object x task); this module runs the trials only, and imports neither
 pandas nor the statistics, so the robot jobs start faster.
 

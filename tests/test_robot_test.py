@@ -10,20 +10,20 @@ import pytest
 from conftest import demo_config, load_test_config
 
 from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
-from icub_affordance.embodied import (
-    Outcome,
-    network_policy,
-    outcome_columns,
-    replay_policy,
-    run_trial,
-)
-from icub_affordance.embodied_stats import ROBOT_FAMILY, success_table, variant_effects
 from icub_affordance.grasp import grip_in_contact, grip_used
 from icub_affordance.jordan import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
     distances_to_grasping,
     first_divergent_step,
     pca,
+)
+from icub_affordance.robot_stats import ROBOT_FAMILY, success_table, variant_effects
+from icub_affordance.robot_test import (
+    Outcome,
+    network_policy,
+    outcome_columns,
+    replay_policy,
+    run_trial,
 )
 
 # -- the controller ----------------------------------------------------------------------------

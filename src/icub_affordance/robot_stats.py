@@ -1,16 +1,25 @@
-"""The statistics of the robot test: its trials counted, tabled and tested.
+"""The statistics of the robot test: its trials counted, tabled and tested, for every variant,
+the body's tolerance and the replays.
 
-Kept apart from the trials' physics (``embodied``) so that the robot jobs start without pandas
+Kept apart from the trials' physics (``robot_test``) so that the robot jobs start without pandas
 and the statistics, and the summary and the book read the tables without the simulator's code.
 
 In closed loop a network's test sequences of one object and task are one and the same movement
-(``embodied.embodied_network``): every count, rate and test here is over distinct trials, one
+(``robot_test.embodied_network``): every count, rate and test here is over distinct trials, one
 per network x object x task (``distinct_trials``), never over the duplicated sequences. The
 variants' congruency and size effects are tested per network (``stats.contrast_tests``), with
 Fisher's exact test where the contrast has no variance; their congruency x size interaction by
 the per-network contrast only; and Holm's adjustment over them all, one family
 (``ROBOT_FAMILY``). Each effect keeps its counts per cell and per object, so that a reader sees
 which trials were missed.
+
+Beside the variants' table and effects (rule ``robot_summary``), the rule ``robot_statistics``
+reads the joined robot trials (``data/embodied/trials.csv``), the body's tolerance trials
+(``data/embodied/tolerance.csv``) and the demonstrations' replays (``data/embodied/replay.csv``)
+for the share held and the median palm error per arm noise, the share held per bin of palm error
+(the tolerance trials, the replayed demonstrations and each variant's grasping trials), the
+replayed demonstrations' palm error, and the exact McNemar tests of the variants that differ in
+the learning-rate schedule alone (``data/embodied/statistics.json``; the book only formats them).
 """
 
 from __future__ import annotations
@@ -25,6 +34,7 @@ from .stats import (
     cell_means,
     contrast_tests,
     holm,
+    mcnemar_exact,
     mean_ci,
     network_contrasts,
     per_network_contrasts,
@@ -443,3 +453,108 @@ def _holm_over_family(effects: dict[str, dict]) -> None:
     size = int(np.isfinite(p).sum())
     for test, adjusted in zip(tests, holm(p), strict=True):
         test |= {"family": ROBOT_FAMILY, "family_size": size, "p_holm": float(adjusted)}
+
+
+def _plain(value):
+    """``value`` with numpy scalars as Python's (for JSON)."""
+    if isinstance(value, dict):
+        return {key: _plain(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return [_plain(item) for item in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def table_record(table: pd.DataFrame) -> dict[str, list]:
+    """A table as {column: values}, in its column order, with Python's numbers (for JSON)."""
+    return {column: _plain(table[column].tolist()) for column in table.columns}
+
+
+def record_table(record: dict[str, list]) -> pd.DataFrame:
+    """The table of ``table_record``."""
+    return pd.DataFrame(record)
+
+
+def grasping_trials(trials: pd.DataFrame, keys=("run",)) -> pd.DataFrame:
+    """The distinct grasping trials of ``trials``: one per variant (``keys``), network and
+    object (a network's test sequences of one object are one physical trial)."""
+    return trials[trials["task"] == "grasping"].drop_duplicates([*keys, "network", "object"])
+
+
+def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) -> list[dict]:
+    """Robot variants that differ in ``column`` alone, compared on the same networks.
+
+    ``trials``: ``data/embodied/trials.csv``; ``keys``: the columns that tell variants apart
+    (``variants.NetworkVariant.keys()``). Variants of one group share everything but
+    ``column``, so network k of each starts from the same initial weights and sees the same
+    presentations: its grasping trial of an object (one physical trial, however many test
+    sequences share it) pairs with the other variant's. Per pair of values: the distinct trials,
+    how many each holds, the discordant pairs, and the exact McNemar test
+    (``stats.mcnemar_exact``).
+    """
+    grasping = grasping_trials(trials, keys)
+    others = [k for k in keys if k != column]
+    out = []
+    for group, mine in grasping.groupby(others, sort=True):
+        values = sorted(mine[column].unique())
+        held = mine.pivot_table(
+            index=["network", "object"], columns=column, values="success", aggfunc="first"
+        ).dropna()
+        for i, a in enumerate(values):
+            for b in values[i + 1 :]:
+                ya, yb = held[a].astype(bool), held[b].astype(bool)
+                only_a, only_b = int((ya & ~yb).sum()), int((yb & ~ya).sum())
+                out.append(
+                    dict(zip(others, group, strict=True))
+                    | {
+                        "a": a, "b": b, "trials": len(held),
+                        "held_a": int(ya.sum()), "held_b": int(yb.sum()),
+                        "only_a": only_a, "only_b": only_b,
+                        "p": mcnemar_exact(only_a, only_b),
+                    }
+                )  # fmt: skip
+    return out
+
+
+def replay_palm(replay: pd.DataFrame) -> dict[str, float | int]:
+    """The demonstrations replayed through the controller (``plan`` commands): how far their
+    palm ends from the demonstrator's mean (median and largest, mm), the share that held the
+    object, and the replays."""
+    demos = replay[replay["plan"] == "commands"]
+    return {
+        "palm_error_mm_median": float(demos["palm_error_mm"].median()),
+        "palm_error_mm_max": float(demos["palm_error_mm"].max()),
+        "held": float(demos["success"].astype(bool).mean()),
+        "trials": len(demos),
+    }
+
+
+def robot_statistics(
+    trials: pd.DataFrame, tolerance: pd.DataFrame, replay: pd.DataFrame
+) -> dict[str, object]:
+    """Every statistic of this module, for JSON (``data/embodied/statistics.json``):
+
+    - ``tolerance``: ``robot_stats.tolerance_table`` of the tolerance trials (``table_record``);
+    - ``held_by_palm_error``: ``robot_stats.held_by_palm_error`` of the tolerance trials
+      (``tolerance``), the replayed demonstrations (``replay``) and each variant's distinct
+      grasping trials (``runs``, by run);
+    - ``replay``: ``replay_palm``;
+    - ``schedule_pairs``: ``paired_grasping`` over the learning-rate schedule.
+    """
+    grasping = grasping_trials(trials)
+    return {
+        "tolerance": table_record(tolerance_table(tolerance)),
+        "held_by_palm_error": {
+            "tolerance": table_record(held_by_palm_error(tolerance)),
+            "replay": table_record(held_by_palm_error(replay[replay["plan"] == "commands"])),
+            "runs": {
+                run: table_record(held_by_palm_error(grasping[grasping["run"] == run]))
+                for run in sorted(grasping["run"].unique())
+            },
+        },
+        "replay": replay_palm(replay),
+        "schedule_pairs": _plain(
+            paired_grasping(trials, "learning_rate_schedule", NetworkVariant.keys())
+        ),
+    }

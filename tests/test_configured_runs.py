@@ -94,12 +94,12 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("run_train") == jobs.pop("run_embodied") == 1
-    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    assert jobs.pop("run_train") == jobs.pop("run_robot_test") == 1
+    shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
-    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
     assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
 
@@ -124,14 +124,14 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     # it: runs.RunPlan.phase1_run) and continues from it, to the same bits as before, so its
     # robot test and film run again too
     assert jobs.pop("run_phase1") == 1
-    assert jobs.pop("run_train") == 2 and jobs.pop("run_embodied") == 3
+    assert jobs.pop("run_train") == 2 and jobs.pop("run_robot_test") == 3
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
-    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
-    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     shown.add("robot_animation")  # films the retrained variant
     assert set(jobs) <= shown, jobs
 
@@ -148,14 +148,14 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("run_train") == 1 and jobs.pop("run_embodied") == 1
+    assert jobs.pop("run_train") == 1 and jobs.pop("run_robot_test") == 1
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
     assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
-    shown = {"embodied_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
+    shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
-    shown.add("embodied_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
 
@@ -209,7 +209,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     assert f"data/runs/{run}/demos" not in plan and f"data/runs/{run}/soms" not in plan
     for net in nets:
         assert f"data/runs/{run}/train/net{net}/weights.npz" in plan
-    assert sum("rule confirmation_embodied:" in job for job in jobs) == 1
+    assert sum("rule confirmation_robot_test:" in job for job in jobs) == 1
     # the built run: fresh networks, their robot trials, and the table
     for k, net in enumerate(nets):
         fresh = np.load(built / f"data/runs/{run}/train/net{net}/weights.npz")

@@ -2,14 +2,14 @@
 # demonstrations are replayed through the same controller, and the robot's success is summarised.
 
 
-rule embodied:
+rule robot_test:
     """One network drives the MuJoCo arm through every test trial, closed loop on its senses."""
     input:
         unpack(model_inputs),
-        weights=embodied_weights,
+        weights=robot_test_weights,
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("embodied"),
+        code=script_code("robot_test"),
     output:
         trials="data/{folder}embodied/net{net}/trials.csv",
         states="data/{folder}embodied/net{net}/states.npz",
@@ -21,76 +21,72 @@ rule embodied:
     wildcard_constraints:
         net=r"\d\d",
         folder=folders_pattern([run for run in ROBOT_TESTED_RUNS if PLAN.jobs_per_network(run)]),
-    threads: 1
     priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
-        mem_mb=500,
         runtime=10,
     log:
-        "data/logs/{folder}embodied/net{net}.log",
+        "data/logs/{folder}robot_test/net{net}.log",
     benchmark:
-        "data/benchmarks/{folder}embodied/net{net}.tsv"
+        "data/benchmarks/{folder}robot_test/net{net}.tsv"
     script:
-        "../scripts/embodied.py"
+        "../scripts/robot_test.py"
 
 
 # A robot variant's networks drive the robot in one job, one network after another (the config's
-# own run keeps a job per network, in parallel): rule run_embodied for the runs with the
-# config's network indices, rule confirmation_embodied for the confirmations' fresh ones
+# own run keeps a job per network, in parallel): rule run_robot_test for the runs with the
+# config's network indices, rule confirmation_robot_test for the confirmations' fresh ones
 # (common.smk: ROBOT_GROUPS).
-use rule embodied as run_embodied with:
+use rule robot_test as run_robot_test with:
     output:
         trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in NETWORKS],
         states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in NETWORKS],
     wildcard_constraints:
         folder=folders_pattern(ROBOT_GROUPS.get(tuple(NETWORKS), [])),
     log:
-        "data/logs/{folder}embodied.log",
+        "data/logs/{folder}robot_test.log",
     benchmark:
-        "data/benchmarks/{folder}embodied.tsv"
+        "data/benchmarks/{folder}robot_test.tsv"
 
 
 if FRESH_NETWORKS:
 
-    use rule embodied as confirmation_embodied with:
+    use rule robot_test as confirmation_robot_test with:
         output:
             trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in FRESH_NETWORKS],
             states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in FRESH_NETWORKS],
         wildcard_constraints:
             folder=folders_pattern(ROBOT_GROUPS[tuple(FRESH_NETWORKS)]),
         log:
-            "data/logs/{folder}embodied.log",
+            "data/logs/{folder}robot_test.log",
         benchmark:
-            "data/benchmarks/{folder}embodied.tsv"
+            "data/benchmarks/{folder}robot_test.tsv"
 
 
-rule embodied_replay:
+rule robot_replay:
     """Every demonstration replayed through the embodied controller: its servo targets and its
     sensed postures."""
     input:
         demos=PLAN.path(OWN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("embodied_replay"),
+        code=script_code("robot_replay"),
     output:
         "data/embodied/replay.csv",
     params:
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
-    threads: 1
     priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
-        mem_mb=500,
         runtime=10,
     log:
-        "data/logs/embodied/replay.log",
+        "data/logs/robot/replay.log",
     benchmark:
-        "data/benchmarks/embodied_replay.tsv"
+        "data/benchmarks/robot_replay.tsv"
     script:
-        "../scripts/embodied_replay.py"
+        "../scripts/robot_replay.py"
 
 
-rule embodied_tolerance:
+rule robot_tolerance:
     """How precisely must a learned arm move? Each object's natural grasp, the mean plan of its
     demonstrations, replayed with its arm targets offset by Gaussian noise: success against the
     palm's distance from where the demonstrator put it (config robot.tolerance)."""
@@ -98,7 +94,7 @@ rule embodied_tolerance:
         demos=PLAN.path(OWN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("embodied_tolerance"),
+        code=script_code("robot_tolerance"),
     output:
         "data/embodied/tolerance.csv",
     params:
@@ -106,28 +102,26 @@ rule embodied_tolerance:
         object_sizes=settings(config["object_sizes_m"]),
         tolerance=settings(config["robot"]["tolerance"]),
         seed=config["seed"],
-    threads: 1
     priority: 1
     resources:
-        mem_mb=500,
         runtime=10,
     log:
-        "data/logs/embodied/tolerance.log",
+        "data/logs/robot/tolerance.log",
     benchmark:
-        "data/benchmarks/embodied_tolerance.tsv"
+        "data/benchmarks/robot_tolerance.tsv"
     script:
-        "../scripts/embodied_tolerance.py"
+        "../scripts/robot_tolerance.py"
 
 
-rule embodied_summary:
+rule robot_summary:
     """Every tested variant's robot trials in one table; the config's own networks' success by
     condition and the effect of congruency; each variant's success, contact time and holds with
     the wrong grip, and their congruency and size effects. Every count and test is over distinct
     trials, one per network x object x task (the test sequences are one movement)."""
     input:
-        trials=[f for run in PLAN.robot_runs for f in embodied_files(run, "trials.csv")],
-        replay=rules.embodied_replay.output[0],
-        code=script_code("embodied_summary"),
+        trials=[f for run in PLAN.robot_runs for f in robot_test_files(run, "trials.csv")],
+        replay=rules.robot_replay.output[0],
+        code=script_code("robot_summary"),
     output:
         trials="data/embodied/trials.csv",
         success="data/embodied/success.csv",
@@ -138,96 +132,82 @@ rule embodied_summary:
         variants=PLAN.robot_tested,
         networks=len(NETWORKS),
         own=OWN,
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
-        "data/logs/embodied/summary.log",
+        "data/logs/robot/summary.log",
     benchmark:
-        "data/benchmarks/embodied_summary.tsv"
+        "data/benchmarks/robot_summary.tsv"
     script:
-        "../scripts/embodied_summary.py"
+        "../scripts/robot_summary.py"
 
 
-rule embodied_confirmation:
+rule robot_confirmation:
     """Explore, then confirm: each confirmed variant's share of grasping trials held (each
     network and object once) on the networks it was chosen on and on fresh ones, with an
     interval that takes a network's four objects as one cluster; and the fresh networks' robot
     trials joined."""
     input:
-        trials=rules.embodied_summary.output.trials,
+        trials=rules.robot_summary.output.trials,
         confirmation=[
-            f for run in PLAN.confirmation_runs for f in embodied_files(run, "trials.csv")
+            f for run in PLAN.confirmation_runs for f in robot_test_files(run, "trials.csv")
         ],
-        code=script_code("embodied_confirmation"),
+        code=script_code("robot_confirmation"),
     output:
         table="data/embodied/confirmation.csv",
         trials="data/embodied/confirmation_trials.csv",
     params:
         confirmation=PLAN.confirmation,
         variant_keys=list(NetworkVariant.keys()),
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
-        "data/logs/embodied/confirmation.log",
+        "data/logs/robot/confirmation.log",
     benchmark:
-        "data/benchmarks/embodied_confirmation.tsv"
+        "data/benchmarks/robot_confirmation.tsv"
     script:
-        "../scripts/embodied_confirmation.py"
+        "../scripts/robot_confirmation.py"
 
 
-rule embodied_filmstrip:
+rule robot_filmstrip:
     """A congruent and an incongruent categorisation trial of the same object, on the robot
     (render only)."""
     input:
         states=lambda w: [
-            PLAN.path(OWN, f"embodied/net{net}/states.npz") for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(OWN, f"embodied/net{net}/states.npz") for net in FILM_NETWORKS
         ],
         # each film network's own trials, not the joined table: the picture need not wait
         # for the other networks
         trials=lambda w: [
-            PLAN.path(OWN, f"embodied/net{net}/trials.csv") for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(OWN, f"embodied/net{net}/trials.csv") for net in FILM_NETWORKS
         ],
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("embodied_filmstrip"),
+        code=script_code("robot_filmstrip"),
     output:
-        "data/figures/embodied_filmstrip.png",
+        "data/figures/robot_filmstrip.png",
     params:
-        networks=EMBODIED_FILM_NETWORKS,
+        networks=FILM_NETWORKS,
         pick=settings(config["figures"]["embodied"]),
         object_sizes=settings(config["object_sizes_m"]),
-    threads: 1
     resources:
         mem_mb=1000,
-        runtime=5,
     log:
-        "data/logs/embodied/filmstrip.log",
+        "data/logs/robot/filmstrip.log",
     benchmark:
-        "data/benchmarks/embodied_filmstrip.tsv"
+        "data/benchmarks/robot_filmstrip.tsv"
     script:
-        "../scripts/embodied_filmstrip.py"
+        "../scripts/robot_filmstrip.py"
 
 
 rule robot_variants_figure:
     """The robot variants' success against training iterations, and against the palm's error
     beside the body's tolerance (plot only)."""
     input:
-        variants=rules.embodied_summary.output.variants,
-        tolerance=rules.embodied_tolerance.output[0],
+        variants=rules.robot_summary.output.variants,
+        tolerance=rules.robot_tolerance.output[0],
         code=script_code("robot_variants_figure"),
     output:
         variants="data/figures/robot_variants.png",
         tolerance="data/figures/robot_tolerance.png",
-    threads: 1
-    resources:
-        mem_mb=500,
-        runtime=5,
     log:
-        "data/logs/embodied/variants_figure.log",
+        "data/logs/robot/variants_figure.log",
     benchmark:
         "data/benchmarks/robot_variants_figure.tsv"
     script:
@@ -246,30 +226,29 @@ rule robot_animation:
     input:
         unpack(lambda w: model_inputs({"folder": PLAN.folder(ANIMATED_RUN)})),
         weights=[
-            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in EMBODIED_FILM_NETWORKS
+            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in FILM_NETWORKS
         ],
-        trials=[embodied_files(ANIMATED_RUN, "trials.csv")[int(net)] for net in EMBODIED_FILM_NETWORKS],
+        trials=[robot_test_files(ANIMATED_RUN, "trials.csv")[int(net)] for net in FILM_NETWORKS],
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("embodied_animation"),
+        code=script_code("robot_animation"),
     output:
         grasps="data/figures/robot_grasps.gif",
         categorise="data/figures/robot_categorise.gif",
     params:
         network=settings(PLAN.config(ANIMATED_RUN)["network"]),
         grip_distance=PLAN.config(ANIMATED_RUN)["grip_distance"],
-        networks=[int(net) for net in EMBODIED_FILM_NETWORKS],
+        networks=[int(net) for net in FILM_NETWORKS],
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
         object=config["robot"]["animation"]["object"],
         fps=config["robot"]["animation"]["fps"],
-    threads: 1
     resources:
         mem_mb=1000,
         runtime=10,
     log:
-        "data/logs/embodied/animation.log",
+        "data/logs/robot/animation.log",
     benchmark:
         "data/benchmarks/robot_animation.tsv"
     script:
-        "../scripts/embodied_animation.py"
+        "../scripts/robot_animation.py"
