@@ -133,11 +133,11 @@ def replication_cost(records: Mapping[str, object]) -> dict[str, float | int]:
     for path, replication in records.items():
         per[replication] = per.get(replication, 0.0) + job_seconds(path)
     seconds = list(per.values())
-    return {
+    return {  # to the records' own precision, 0.01 s
         "replications": len(seconds),
         "jobs": len(records),
-        "mean_s": sum(seconds) / len(seconds),
-        "min_s": min(seconds),
-        "max_s": max(seconds),
-        "total_s": sum(seconds),
+        "mean_s": round(sum(seconds) / len(seconds), 2),
+        "min_s": round(min(seconds), 2),
+        "max_s": round(max(seconds), 2),
+        "total_s": round(sum(seconds), 2),
     }
