@@ -100,7 +100,7 @@ DEFAULT_OUTPUTS = [
     *rules.findings.output,
     *rules.book.output,
     "data/results.sha256",
-    *([*SWEEP_OUTPUTS, *rules.sweep_cost.output] if config["robustness"] else []),
+    *(SWEEP_OUTPUTS if config["robustness"] else []),
 ]
 
 

@@ -1,6 +1,6 @@
 """Does the cost of a sweep grow linearly? The wall time of `snakemake sweep` for n replications.
 
-    python benchmarks/sweep_cost.py [1 4 10] [--cores 2] [--output data/benchmarks/sweep_cost.csv]
+    python benchmarks/sweep_cost.py [1 4 10] [--cores 2] [--output sweep_cost.csv]
 
 Each measurement runs in a fresh scratch copy of the workflow (icub_workflow.sweep_timing).
 Prints a table and, last, JSON: replications, seconds and seconds per replication.

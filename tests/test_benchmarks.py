@@ -52,3 +52,24 @@ def test_the_book_says_whether_its_build_ran_on_slurm_from_the_jobs_environment(
         "SLURM_JOB_PARTITION": "local",
     }
     assert executor(slurm) == {"executor": "slurm", "cluster": "icub-local", "partition": "local"}
+
+
+def test_the_sweeps_cost_sums_its_jobs_seconds_per_replication(tmp_path):
+    """The robustness page's cost: each job's column `s`, summed over a replication's jobs."""
+    import pytest
+
+    from icub_workflow.benchmark_tables import replication_cost
+
+    jobs = {"a/demos": (1, 20.0), "a/train": (1, 10.0), "b/train": (1, 5.0), "c/train": (2, 15.0)}
+    records = {}
+    for name, (seed, wall) in jobs.items():
+        bench(tmp_path / f"{name}.tsv", wall, 1000.0)
+        records[str(tmp_path / f"{name}.tsv")] = seed
+    cost = replication_cost(records)
+    assert cost == {"replications": 2, "jobs": 4, "mean_s": 25.0, "min_s": 15.0, "max_s": 35.0,
+                    "total_s": 50.0}  # fmt: skip
+    (tmp_path / "a" / "train.tsv").write_text("not a benchmark\n")
+    with pytest.raises(ValueError, match="train.tsv is not a Snakemake benchmark file"):
+        replication_cost(records)
+    with pytest.raises(ValueError, match="did the sweep run"):
+        replication_cost({})

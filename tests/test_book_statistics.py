@@ -1,8 +1,8 @@
 """The statistics the book reports that the rules `robot_statistics` and `cue_difference` compute
 (and the few the findings compute from the outputs), recomputed independently: the exact McNemar
 test against scipy's binomial test and by hand, the cue timings' difference against the paired
-test of the per-network contrasts, the robot's tables by hand on made-up trials, and the cost's
-line against scipy's regression. The book's machinery only formats them."""
+test of the per-network contrasts and the robot's tables by hand on made-up trials. The book's
+machinery only formats them."""
 
 from __future__ import annotations
 
@@ -17,7 +17,6 @@ from test_contrasts import synthetic
 from test_robot_variants import trials as robot_trials
 
 from icub_affordance.findings import robot_effect_statistics, wrong_grip_by_congruency
-from icub_affordance.growth import cost_growth, line_fit
 from icub_affordance.robot_stats import (
     PALM_BINS_MM,
     grasping_trials,
@@ -179,28 +178,3 @@ def test_the_wrong_grip_rate_per_level_averages_the_other_factors_levels():
     assert wrong_grip_by_congruency(rates) == pytest.approx(
         {"congruent": 0.2, "incongruent": 0.25, "large": 0.3, "small": 0.15}
     )
-
-
-def test_the_cost_line_is_least_squares():
-    x, y = [1.0, 4.0, 10.0, 20.0], [20.0, 52.0, 108.0, 230.0]
-    fit = line_fit(x, y)
-    ref = sps.linregress(x, y)
-    assert fit["slope"] == pytest.approx(ref.slope) and fit["intercept"] == pytest.approx(
-        ref.intercept
-    )
-    expected = np.abs(np.array(y) - (ref.intercept + ref.slope * np.array(x))) / np.array(y)
-    np.testing.assert_allclose(fit["relative_offsets"], expected)
-
-
-def test_the_cost_growth_in_order_of_size():
-    growth = cost_growth([10, 1, 4], [110.0, 20.0, 50.0])  # any order: sorted by size
-    assert growth["sizes"].tolist() == [1, 4, 10] and growth["seconds"].tolist() == [20, 50, 110]
-    np.testing.assert_allclose(growth["marginal"], [10.0, 10.0])
-    assert growth["change"] == pytest.approx(0.0)
-    assert growth["line"]["slope"] == pytest.approx(10.0)
-    assert growth["line"]["intercept"] == pytest.approx(10.0)
-    assert growth["line"]["furthest_offset"] == pytest.approx(0.0, abs=1e-12)
-    two = cost_growth([1, 2], [20.0, 30.0])
-    assert two["line"] is None and two["change"] == 0.0  # two points always lie on a line
-    one = cost_growth([3], [20.0])
-    assert len(one["marginal"]) == 0 and np.isnan(one["change"]) and one["line"] is None

@@ -437,8 +437,8 @@ def test_a_page_only_displays(page):
 
 
 def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
-    """The sweep is too long for the tests' run: its findings from a made-up summary and cost
-    table, and the page executed on them."""
+    """The sweep is too long for the tests' run: its findings from a made-up summary and job
+    records (benchmark files), and the page executed on them."""
     import shutil
 
     from conftest import load_test_config
@@ -447,7 +447,6 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
 
     from icub_workflow.book import pages
     from icub_workflow.book_build.notebooks import execute_pages
-    from icub_workflow.sweep_timing import cost_table, write_cost_table
 
     config = load_test_config() | {"robustness": True}
     config["sweep"] |= {"seeds": [1, 2, 3], "categorisation_cue": ["first_step"]}
@@ -462,21 +461,31 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
             f"{effect}_n_significant": 3 if sign > 0 else 0,
             f"{effect}_n_reversed": 0 if sign > 0 else 2,
         }
-    inputs = {"sweep_summary.csv": tmp_path / "summary.csv", "sweep_cost.csv": tmp_path / "c.csv"}
+    inputs = {"sweep_summary.csv": tmp_path / "summary.csv"}
     pd.DataFrame([row]).to_csv(inputs["sweep_summary.csv"], index=False)
-    write_cost_table(cost_table([1, 2], [20.0, 30.0], cores=2), inputs["sweep_cost.csv"])
-    values, table = pages.robustness(inputs, config)
+    jobs = {}  # each seed's jobs, as the engine records them (column s: wall time)
+    for seed, walls in {1: [60.0, 30.0], 2: [50.0], 3: [100.0, 20.0, 10.0]}.items():
+        for k, wall in enumerate(walls):
+            record = tmp_path / "benchmarks" / f"seed{seed}" / f"job{k}.tsv"
+            record.parent.mkdir(parents=True, exist_ok=True)
+            record.write_text(f"s\th:m:s\tmax_rss\n{wall}\t0:01:00\t100\n")
+            jobs[str(record)] = seed
+    values, table = pages.robustness(inputs, config, jobs)
     assert values["ran"] and values["sweep_ran"] == "ran it: seeds 1, 2, 3, 1 setting(s)"
     assert [table["congruency_direction"][0], table["size_direction"][0]] == [
         "paper's way", "against"]  # fmt: skip
     # a flipped interval flips the word: the size interval made to include 0
     summary = pd.read_csv(inputs["sweep_summary.csv"]).assign(size_ci_high=0.01)
     summary.to_csv(tmp_path / "flipped.csv", index=False)
-    _, flipped = pages.robustness(inputs | {"sweep_summary.csv": tmp_path / "flipped.csv"}, config)
+    _, flipped = pages.robustness(
+        inputs | {"sweep_summary.csv": tmp_path / "flipped.csv"}, config, jobs
+    )
     assert [flipped["congruency_direction"][0], flipped["size_direction"][0]] == [
         "paper's way", "includes 0"]  # fmt: skip
-    assert "it takes three to tell" in values["cost_shape"].text
-    assert values["cost_shape"].rests_on == ("robustness.cost_change",)
+    # per replication: 90, 50 and 130 s of job time
+    assert {k: values[f"cost_{k}"] for k in ("replications", "jobs", "min_s", "max_s")} == {
+        "replications": 3, "jobs": 6, "min_s": 50.0, "max_s": 130.0}  # fmt: skip
+    assert values["cost_mean_s"] == 90.0 and values["cost_total_s"] == 270.0
     values = pages.traced({"robustness": values})["robustness"]
 
     book = tmp_path / "book"
@@ -484,7 +493,6 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     page = shutil.copy(REPO / "book" / "robustness.md", book / "robustness.md")
     (book / "_data" / "findings.json").write_text(json.dumps({"robustness": values}))
     table.to_csv(book / "_data" / "tables" / "sweep.csv", index=False)
-    shutil.copy(inputs["sweep_cost.csv"], book / "_data" / "sweep_cost.csv")
     line = {"jobs": 412, "span_s": 1509.0, "job_s": 2753.0, "idle_core_s": 265.0}
     line |= {"executor": "slurm", "cluster": "hpc", "partition": "short"}
     (book / "_data" / "timeline.json").write_text(json.dumps(line))
@@ -496,7 +504,8 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     shown = json.dumps([cell.get("outputs", []) for cell in merged.cells])
     # the page's prose is its own; what it glues and shows comes from these numbers
     said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "paper's way", "3 / 0 of 3", "0 / 2 of 3",
-            "wall time (s)", "the Slurm cluster hpc (partition short)", "it takes three",
+            "the sweep's 6 jobs took 90 s per replication on average, from 50 s to 130 s over "
+            "its 3 replications, and 4.5 minutes in all", "the Slurm cluster hpc (partition short)",
             "412")  # fmt: skip
     for words in said:
         assert json.dumps(words)[1:-1] in shown, words

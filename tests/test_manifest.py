@@ -38,7 +38,6 @@ def test_results_are_tables_arrays_and_summaries_not_logs_times_or_pixels():
     for path in (
         "data/logs/train/net00.log",
         "data/benchmarks/train/net00.tsv",
-        "data/benchmarks/sweep_cost.csv",
         "data/logs/x.json",
         "data/figures/figure4.png",
         "data/figures/robot_grasps.gif",

@@ -53,7 +53,6 @@ CASES: list[tuple[str, dict | list[str], bool]] = [
     ("negative seed", ["seed=-5"], False),
     ("seed as text", ["seed=abc"], False),
     ("sweep seed beyond 2^32", {"sweep": {"seeds": [5000000000]}}, False),
-    ("sweep cost of 0 replications", {"sweep_cost": [0]}, False),
     ("robustness in lower case", ["robustness=true"], False),
     ("unknown key", ["learningrate=0.1"], False),
     ("unknown object", {"objects": ["big_ball", "pear"]}, False),

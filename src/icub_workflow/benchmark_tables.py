@@ -1,12 +1,14 @@
-"""The pipeline's benchmark files as one table (rule, jobs, wall time, memory), and as a time
-line (when each job ran, how long the build took).
+"""The pipeline's benchmark files as one table (rule, jobs, wall time, memory), as a time
+line (when each job ran, how long the build took), and as the sweep's cost (its jobs' seconds
+per replication).
 
 Printed by `python benchmarks/collect.py` and `python benchmarks/timeline.py`, and shown on the
-book's reproduce page (rule `book`).
+book's reproduce page (rule `book`) and robustness page (rule `findings`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
 
 
@@ -103,4 +105,39 @@ def executor(environment: dict[str, str]) -> dict[str, str]:
         "executor": "slurm",
         "cluster": environment.get("SLURM_CLUSTER_NAME", "unnamed"),
         "partition": environment.get("SLURM_JOB_PARTITION", "default"),
+    }
+
+
+def job_seconds(path: str | Path) -> float:
+    """A job's wall time (s): column ``s`` of its Snakemake benchmark file (the last row)."""
+    lines = Path(path).read_text().splitlines()
+    try:
+        if lines[0].split("\t")[0] != "s":
+            raise ValueError
+        return float(lines[-1].split("\t")[0])
+    except (IndexError, ValueError):
+        raise ValueError(
+            f"{path} is not a Snakemake benchmark file: delete it and rerun the job that "
+            "writes it (`snakemake -c2 --config robustness=True`)"
+        ) from None
+
+
+def replication_cost(records: Mapping[str, object]) -> dict[str, float | int]:
+    """The sweep's cost from its jobs' own records, ``{benchmark file: the replication (seed)
+    whose point the job served}``: per replication, the job seconds summed over its points'
+    jobs; their mean, least and most (s), the total (s), and the counts of replications and
+    jobs. Job seconds, not the build's wall time: jobs run side by side."""
+    if not records:
+        raise ValueError("no job records of the sweep: did the sweep run?")
+    per = {}
+    for path, replication in records.items():
+        per[replication] = per.get(replication, 0.0) + job_seconds(path)
+    seconds = list(per.values())
+    return {  # to the records' own precision, 0.01 s
+        "replications": len(seconds),
+        "jobs": len(records),
+        "mean_s": round(sum(seconds) / len(seconds), 2),
+        "min_s": round(min(seconds), 2),
+        "max_s": round(max(seconds), 2),
+        "total_s": round(sum(seconds), 2),
     }

@@ -7,9 +7,9 @@ input (this checkout's visual maps) is copied in and marked up to date first, so
 sweep itself is timed. Prints a table
 and, last, JSON: replications, seconds and seconds per replication.
 
-Measured from the command line (`python benchmarks/sweep_cost.py`) and by the rule `sweep_cost`
-(with `--config robustness=True`), which writes the same table as
-`data/benchmarks/sweep_cost.csv`.
+Measured from the command line only, outside the DAG (`python benchmarks/sweep_cost.py`): no job
+starts Snakemake. The book's robustness page reads the sweep's cost from its jobs' own benchmark
+files instead (benchmark_tables.replication_cost).
 """
 
 from __future__ import annotations
@@ -65,8 +65,8 @@ def check_counts(counts: Iterable[object]) -> list[int]:
     bad = [c for c in counts if isinstance(c, bool) or not isinstance(c, int) or c < 1]
     if not counts or bad or len(set(counts)) != len(counts):
         raise ValueError(
-            f"sweep_cost: the numbers of replications must be distinct whole numbers from 1 "
-            f"(e.g. [1, 4, 10]), got {counts}"
+            "benchmarks/sweep_cost.py: the numbers of replications must be distinct whole "
+            f"numbers from 1 (e.g. 1 4 10), got {counts}"
         )
     return counts
 
@@ -222,18 +222,3 @@ def write_cost_table(table: pd.DataFrame, path: str | os.PathLike[str]) -> None:
         raise ValueError(f"the cost table lacks the columns {missing}")
     with atomic_path(path) as tmp:
         table[COLUMNS].to_csv(tmp, index=False, float_format="%.2f")
-
-
-def read_cost_table(path: str | os.PathLike[str]) -> pd.DataFrame:
-    """The cost table, checked: name the file and what to do if it is missing or incomplete."""
-    path = Path(path)
-    if not path.is_file():
-        raise FileNotFoundError(f"{path} is missing: rerun with `--config robustness=True`.")
-    table = pd.read_csv(path)
-    missing = [c for c in COLUMNS if c not in table]
-    if missing or table.empty:
-        raise ValueError(
-            f"{path} lacks {missing or 'rows'}; delete it and rerun "
-            "`snakemake -c2 --config robustness=True`."
-        )
-    return table

@@ -72,7 +72,19 @@ if config["robustness"]:
         "sweep_points.csv": "data/sweep/points.csv",
         "sweep_summary.csv": "data/sweep/summary.csv",
         "sweep_effects.png": "data/sweep/effects.png",
-        "sweep_cost.csv": "data/benchmarks/sweep_cost.csv",
+    }
+
+
+def sweep_job_records(wildcards=None):
+    """The sweep's cost (robustness.md), with robustness: the engine's record of each job that
+    made a file of a sweep point (common.smk: job_records, run_files), with the seed of the
+    replication it served, {benchmark file: seed}. Without robustness, none."""
+    if not config["robustness"]:
+        return {}
+    return {
+        record: PLAN.sweep[run]["seed"]
+        for run in PLAN.sweep
+        for record in job_records(run_files(run))
     }
 
 
@@ -131,6 +143,8 @@ rule findings:
     """Every number, verdict, sentence and table the book shows, from the run's outputs."""
     input:
         data=[BOOK_DATA[name] for name in FINDINGS_READS],
+        # the sweep's jobs' benchmark files (none without robustness): its cost
+        sweep_jobs=lambda wildcards: list(sweep_job_records()),
         code=script_code("findings"),
     output:
         json=BOOK_FINDINGS["findings.json"],
@@ -146,6 +160,7 @@ rule findings:
             "other": plan_runs(config | {"robustness": not config["robustness"]}).scale(),
         },
         names=FINDINGS_READS,
+        sweep_jobs=sweep_job_records,
     resources:
         mem_mb=1000,
     log:

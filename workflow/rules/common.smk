@@ -219,3 +219,21 @@ def reading_files(run):
     measures, and, for the runs the default target makes whole, their tests too; a reading's
     own run is not tested otherwise (its trials are scored by rule `measures`)."""
     return run_files(run, tests=run in PLAN.whole) + outputs("measures", run)
+
+
+def job_records(files):
+    """The engine's own record of each job that makes one of `files`, once per job: its
+    `benchmark:` file (the job's wall time in column `s`). The job is found as Snakemake finds
+    it, by the one rule whose output matches the file (wildcard constraints included), so this
+    holds whichever rule serves a run; call it from an input function, once every rule is read."""
+    records = []
+    for path in files:
+        makers = [r for r in workflow.rules if any(o.match(path) for o in r.output)]
+        if len(makers) != 1 or not makers[0].benchmark:
+            raise ValueError(
+                f"{path}: made by the rules {[r.name for r in makers]}; its job's record needs "
+                "one rule, with a `benchmark:` file"
+            )
+        maker = makers[0]
+        records.append(str(maker.expand_benchmark(maker.get_wildcards(path))))
+    return list(dict.fromkeys(records))

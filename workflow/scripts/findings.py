@@ -14,6 +14,7 @@ with redirect_log(snakemake.log[0]):
         dict(snakemake.params.config),
         snakemake.params.ablation_cue,
         dict(snakemake.params.scale),
+        dict(snakemake.params.sweep_jobs),
     )
     write_text(snakemake.output.json, json.dumps(pages, indent=1) + "\n")
     paths = {Path(path).stem: path for path in snakemake.output.tables}

@@ -14,7 +14,6 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.growth import cost_growth
 from icub_affordance.io import load_npz
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
@@ -342,30 +341,25 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 # -- the sweep, the method pages, the size study --------------------------------------------------
 
 
-def robustness(inputs: Mapping[str, str], config: dict) -> tuple[dict, pd.DataFrame | None]:
-    """The sweep's values, its summary with each effect's direction, and its cost; or, not run,
-    what it would train."""
+def robustness(inputs: Mapping[str, str], config: dict,
+               sweep_jobs: Mapping[str, object] | None = None
+               ) -> tuple[dict, pd.DataFrame | None]:  # fmt: skip
+    """The sweep's values, its summary with each effect's direction, and its cost from its jobs'
+    own records (``sweep_jobs``: {benchmark file: seed}, ``benchmark_tables.replication_cost``);
+    or, not run, what it would train."""
     sweep = config["sweep"]
     points = len(sweep["categorisation_cue"]) * int(
         np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))  # fmt: skip
     values: dict = {"ran": bool(config["robustness"]), "points": points,
                     "networks": points * config["network"]["networks"]}  # fmt: skip
     if not config["robustness"]:
-        return values | {
-            "sweep_ran": "did not run it (robustness is false, the default)",
-            "cost_shape": "was not measured: the sweep did not run"}, None  # fmt: skip
-    from icub_workflow.sweep_timing import read_cost_table  # the cost table's columns, checked
+        return values | {"sweep_ran": "did not run it (robustness is false, the default)"}, None
+    from icub_workflow.benchmark_tables import replication_cost
 
     summary = pd.read_csv(inputs["sweep_summary.csv"])
-    growth = cost_growth(*read_cost_table(inputs["sweep_cost.csv"])[["replications", "seconds"]]
-                         .to_numpy().T)  # fmt: skip
-    added = ", ".join(f"{m:.1f} s from {a:g} to {b:g} replications" for m, a, b in zip(
-        growth["marginal"], growth["sizes"][:-1], growth["sizes"][1:], strict=True))  # fmt: skip
     values |= {"sweep_ran": f"ran it: seeds {', '.join(map(str, sweep['seeds']))}, "
-               f"{len(summary)} setting(s)", "cost_change": float(growth["change"]),
-               "cost_shape": text.Claim(f"grew {text.growth_phrase(growth)}, read as the timings "
-                                        f"stand (each replication added cost {added})",
-                                        ("robustness.cost_change",))}  # fmt: skip
+               f"{len(summary)} setting(s)"}  # fmt: skip
+    values |= {f"cost_{k}": v for k, v in replication_cost(sweep_jobs or {}).items()}
     directions = {  # each effect's mean over the replications, by its 95% interval
         f"{e}_direction": [text.SWEEP_DIRECTIONS[science.interval_direction(
             r["replications"], *(r[f"{e}_{k}"] for k in ("effect", "ci_low", "ci_high")))]
@@ -459,10 +453,11 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
 
 
 def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
-                  scale: dict[str, dict[str, int]]
+                  scale: dict[str, dict[str, int]], sweep_jobs: Mapping[str, object] | None = None
                   ) -> tuple[dict, dict[str, pd.DataFrame]]:  # fmt: skip
     """Every page's values ({page: {name: value}}) and tables ({name: table}), from ``inputs``:
-    the book's names of the outputs (``BOOK_DATA``'s keys) and their files."""
+    the book's names of the outputs (``BOOK_DATA``'s keys) and their files; ``sweep_jobs``, with
+    robustness, the benchmark file of each job of the sweep's points and its seed."""
     anova, cue = _json(inputs["anova.json"]), config["network"]["categorisation_cue"]
     quoted = {key: config[key] for key in QUOTED}
     curves = [pd.read_csv(inputs[n]) for n in sorted(n for n in inputs if n.startswith("curves/"))]
@@ -477,7 +472,7 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         "grasping": grasping(inputs, config), "size": size_study(inputs, config),
     }.items():  # fmt: skip
         pages[page], tables = values, tables | shown
-    pages["robustness"], sweep = robustness(inputs, config)
+    pages["robustness"], sweep = robustness(inputs, config, sweep_jobs)
     pages |= {
         "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),
         "intro": score_values,

@@ -87,15 +87,6 @@ SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "in
                     "single": "one replication"}  # fmt: skip
 
 
-def growth_phrase(growth: dict) -> str:
-    """How the sweep's wall time grows with its replications (``growth.cost_growth``)."""
-    if len(growth["marginal"]) < 2:
-        return "in a way two timings cannot show: it takes three to tell"
-    if abs(growth["change"]) <= 0.1:
-        return "linearly"
-    return "faster than linearly" if growth["change"] > 0 else "no faster than linearly"
-
-
 # -- which reading reproduces the paper: phrases on the readings' tests (``pages._shown``) -----
 
 MEASURE_LABELS = {"rmse": "RMSE", "rmse_correct": "correct-trial RMSE",
