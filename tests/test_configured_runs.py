@@ -165,7 +165,7 @@ def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tm
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
     jobs = planned(run_snakemake(built, "-n", config=path))
     # its four objects' demonstrations in one job
-    assert "demos_object" not in jobs and jobs["soms"] == jobs["run_demos"] == 1
+    assert jobs["soms"] == jobs["demos"] == 1
     assert "visual_maps" not in jobs  # the scene and the eye do not depend on the seed
 
 
@@ -234,7 +234,7 @@ def test_the_paper_target_makes_the_papers_model_alone(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     config = REPO / "config" / "config.yaml"
     jobs = planned(run_snakemake(workdir, "-n", "paper", config=config))
-    assert jobs.pop("train") == 12 and jobs.pop("demos_object") == 4
+    assert jobs.pop("train") == 12
     expected = {"visual_maps", "body_figure", "figure3", "demos", "demo_filmstrip", "soms",
                 "figure2_maps", "figure2_architecture", "evaluate", "stats", "figure4",
                 "figure5", "measures", "paper"}  # fmt: skip

@@ -175,6 +175,54 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
     assert set(groups) == {f"seed{seed}" for seed in seeds}
 
 
+@pytest.mark.parametrize("robustness", [False, True])
+def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
+    """The plan routes every run's maps, networks, measures and robot test to one rule, and the
+    runs a rule serves are exactly those routed to it: a job per network for the config's own
+    networks, one job for another run's (the config's indices or the confirmations' fresh
+    ones), the measured runs with their seed's others; every rule a step names exists."""
+    plan = plan_runs(config | {"robustness": robustness})
+    rules = {
+        "soms": {"soms", "measured"},
+        "measures": {"measures", "measured"},
+        "train": {"train", "run_train", "confirmation_train", "measured"},
+        "robot_test": {"robot_test", "run_robot_test", "confirmation_robot_test"},
+    }
+    for step, names in rules.items():
+        runs = plan.robot_tested_runs if step == "robot_test" else list(plan.runs)
+        routed = {run: plan.rule_for(run, step) for run in runs}
+        assert set(routed.values()) <= names, (step, set(routed.values()))
+        served = [run for rule in names for run in plan.served_by(rule, step)]
+        assert sorted(served) == sorted(runs)  # each run once
+    measured = {run for group in plan.measured_groups.values() for run in group}
+    assert {r for r in plan.runs if plan.rule_for(r, "train") == "measured"} == measured
+    assert plan.served_by("train", "train") == [OWN] == plan.served_by("robot_test", "robot_test")
+    fresh = plan.served_by("confirmation_train", "train")
+    assert (
+        fresh == plan.confirmation_runs == plan.served_by("confirmation_robot_test", "robot_test")
+    )
+    assert plan.fresh_networks == plan.networks(fresh[0]) != plan.networks(OWN)
+    with pytest.raises(ValueError, match="no rule"):
+        plan.rule_for(OWN, "evaluate")
+
+
+def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
+    """A run of `runs:` with 6 networks: no run-wide rule names its files, so one job each; a
+    robot run with such networks has no rule to test it, and the plan says so."""
+    plan = plan_runs(config | {"runs": {"six": {"network": {"networks": 6}}}})
+    assert plan.rule_for("six", "train") == "train"
+    assert set(plan.served_by("train", "train")) == {OWN, "six"}
+    robot = dataclasses.replace(plan.runs["six"], origin="robot")
+    odd = dataclasses.replace(plan, runs=plan.runs | {"six": robot})
+    with pytest.raises(ValueError, match="tests networks 00..05 on the robot"):
+        odd.rule_for("six", "robot_test")
+    # a confirmation at the config's own indices is trained like any other run
+    same = plan_runs(config | {"robot": config["robot"] | {
+        "confirmation": config["robot"]["confirmation"] | {"first_network": 0}}})  # fmt: skip
+    assert same.fresh_networks == []
+    assert all(same.rule_for(run, "train") == "run_train" for run in same.confirmation_runs)
+
+
 def test_robot_variants_that_differ_only_after_phase_1_share_it(plan, config):
     """The default's three variants (40 hidden, 768,000 iterations: two cue timings, two
     schedules) share one phase 1; the config's own run and a confirmation (fresh networks)

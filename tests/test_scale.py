@@ -79,7 +79,7 @@ def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
     assert counts["run_train"] == points  # a point's 12 networks in one job
     assert counts["evaluate"] == points and counts["sweep_summary"] == 1
     # whole replications: each seed makes its own demonstrations and SOMs, once
-    assert counts["run_demos"] == counts["soms"] == len(sweep["seeds"])
+    assert counts["demos"] == counts["soms"] == len(sweep["seeds"])
 
 
 def test_sweep_tables_count_significant_replications():

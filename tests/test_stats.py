@@ -10,6 +10,8 @@ import pytest
 from conftest import REPO, load_config, run_snakemake, scratch_workflow
 from scipy import stats as sps
 
+from icub_workflow.runs import plan_runs
+
 
 @pytest.fixture(scope="module")
 def outputs(built):
@@ -116,6 +118,8 @@ def test_twelve_training_jobs_in_the_default_dag(tmp_path):
     confirmation = load_config()["robot"]["confirmation"]
     assert counts["train"] == 12
     assert counts["confirmation_train"] == len(confirmation["variants"])
-    assert counts["demos_object"] == 4
+    # a job per run that makes its own demonstrations (its four objects in it)
+    plan = plan_runs(load_config())
+    assert counts["demos"] == sum(plan.makes(run, "demos") for run in plan.runs)
     # tested in silico: the config's own run and the cue ablation
     assert counts["evaluate"] == 2 and counts["stats"] == 2

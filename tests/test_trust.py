@@ -84,7 +84,7 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
         assert jobs.get(rule) == 2, (rule, jobs)
     for rule in ("figure4", "book"):
         assert jobs.get(rule) == 1, (rule, jobs)
-    for rule in ("demos_object", "visual_maps", "soms", "body_figure", "demos"):
+    for rule in ("visual_maps", "soms", "body_figure", "demos"):
         assert rule not in jobs, (rule, jobs)
 
 
@@ -100,14 +100,14 @@ def test_the_cue_timing_reruns_training_too(built, tmp_path):
 
     path = changed_config(tmp_path, change)
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
-    assert "train" in jobs and "demos_object" not in jobs and "soms" not in jobs
+    assert "train" in jobs and "demos" not in jobs and "soms" not in jobs
 
 
 @pytest.mark.slow
 def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["object_sizes_m"].update(big_ball=0.065))
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
-    for rule in ("body_figure", "visual_maps", "demos_object", "soms", "train", "book"):
+    for rule in ("body_figure", "visual_maps", "demos", "soms", "train", "book"):
         assert rule in jobs, (rule, jobs)
 
 
@@ -311,7 +311,7 @@ def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_pa
     shutil.rmtree(scene)
     assert plan.returncode == 0, plan.stderr[-2000:]
     jobs = planned_jobs(plan.stdout)
-    for rule in ("body_figure", "visual_maps", "demos_object", "demo_filmstrip", "robot_test"):
+    for rule in ("body_figure", "visual_maps", "demos", "demo_filmstrip", "robot_test"):
         assert rule in jobs, (rule, jobs)
 
 

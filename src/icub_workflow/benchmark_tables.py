@@ -12,11 +12,20 @@ from collections.abc import Mapping
 from pathlib import Path
 
 
-def read_benchmarks(directory: Path) -> dict[str, str]:
-    """Every benchmark file under ``directory``: {job name (its path, no suffix): file text}."""
+def benchmark_files(directory: Path, files: list[str] | None = None) -> list[Path]:
+    """The benchmark files to read: ``files`` (a rule's declared inputs, under ``directory``), or
+    every one under ``directory`` (the command-line tools, on a finished build)."""
+    if files is not None:
+        return sorted(Path(f) for f in files)
+    return sorted(Path(directory).rglob("*.tsv"))
+
+
+def read_benchmarks(directory: Path, files: list[str] | None = None) -> dict[str, str]:
+    """Each benchmark file (``benchmark_files``): {job name (its path under ``directory``, no
+    suffix): file text}."""
     return {
         str(path.relative_to(directory).with_suffix("")): path.read_text()
-        for path in sorted(Path(directory).rglob("*.tsv"))
+        for path in benchmark_files(directory, files)
     }
 
 
@@ -51,17 +60,13 @@ def benchmark_table(tables: dict[str, str]):
     )
 
 
-def job_times(
-    directory: Path, skip: tuple[str, ...] = ("sweep",)
-) -> list[tuple[float, float, str]]:
-    """Each job's (start, end, name), sorted: Snakemake writes a job's benchmark file when the job
-    ends (its modification time) and records its wall time, so it ran from end - wall to end.
-    Jobs whose name starts with one of ``skip`` are left out (the sweep's scratch builds)."""
+def job_times(directory: Path, files: list[str] | None = None) -> list[tuple[float, float, str]]:
+    """Each job's (start, end, name), sorted, from its benchmark file (``benchmark_files``):
+    Snakemake writes it when the job ends (its modification time) and records the job's wall
+    time, so the job ran from end - wall to end."""
     rows = []
-    for path in sorted(Path(directory).rglob("*.tsv")):
+    for path in benchmark_files(directory, files):
         name = str(path.relative_to(directory).with_suffix(""))
-        if name.startswith(skip):
-            continue
         lines = path.read_text().splitlines()
         try:
             wall = float(lines[-1].split("\t")[0])

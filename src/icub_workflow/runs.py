@@ -120,10 +120,70 @@ class RunPlan:
         return self.stage_run(run, stage) == run
 
     def jobs_per_network(self, run: str) -> bool:
-        """Is each network (and each object's demonstrations) a job of its own? For the config's
+        """Is each network a job of its own (trained, and tested on the robot)? For the config's
         own run, whose networks every later stage waits on: in parallel at the start. Any other
         run trains its networks in one job (a network is short beside a job's start-up)."""
         return self.runs[run].origin == "own"
+
+    # ---- which rule makes a run's step (the rules ask; none decides) ---------------------------
+    # A rule's outputs are fixed when the rules are read, so a job that makes several networks'
+    # files names them in its rule: one rule per set of network indices a job makes. The plan says
+    # which rule serves each run's step; the rules take the runs it names (``served_by``).
+
+    @property
+    def fresh_networks(self) -> list[str]:
+        """The confirmations' network indices, where they are not the config's own (the same for
+        every confirmation: config robot.confirmation.first_network), else none."""
+        own, runs = self.networks(OWN), self.confirmation_runs
+        return next((self.networks(r) for r in runs if self.networks(r) != own), [])
+
+    def rule_for(self, run: str, step: str) -> str:
+        """The rule that makes ``step`` (soms, train, measures, robot_test) for ``run``.
+
+        - A reading's or the size study's run (``measured_groups``) is trained and scored on the
+          measures with its seed's others in one job, its own maps too: ``measured``.
+        - ``train``: a job per network for the config's own run and for a run whose network
+          indices no run-wide rule names; ``run_train``, one job, for the config's indices;
+          ``confirmation_train`` for the confirmations' fresh ones.
+        - ``robot_test`` likewise (``robot_test``, ``run_robot_test``,
+          ``confirmation_robot_test``); a robot run with yet another set of indices is refused.
+        """
+        measured = self.runs[run].origin in ("reading", "size_dose")
+        if step in ("soms", "measures"):
+            return "measured" if measured else step
+        if step == "train" and measured:
+            return "measured"
+        if step not in ("train", "robot_test"):
+            raise ValueError(f"no rule is named for the step {step!r}")
+        nets = self.networks(run)
+        if self.jobs_per_network(run) or not nets:
+            return step
+        if nets == self.networks(OWN):
+            return f"run_{step}"
+        if nets == self.fresh_networks:
+            return f"confirmation_{step}"
+        if step == "robot_test":
+            raise ValueError(
+                f"run {run!r} tests networks {nets[0]}..{nets[-1]} on the robot: only the config's "
+                f"own indices and the confirmations' ({self.fresh_networks}) have a rule"
+            )
+        return step
+
+    def served_by(self, rule: str, step: str) -> list[str]:
+        """The runs whose ``step`` the rule ``rule`` makes (see ``rule_for``); for the robot
+        test, among the runs tested on the robot."""
+        runs = self.robot_tested_runs if step == "robot_test" else list(self.runs)
+        return [run for run in runs if self.rule_for(run, step) == rule]
+
+    @property
+    def robot_tested_runs(self) -> list[str]:
+        """Every run whose networks drive the robot: the tested variants and the confirmations."""
+        return list(dict.fromkeys([*self.robot_runs, *self.confirmation_runs]))
+
+    @property
+    def phase1_owners(self) -> list[str]:
+        """The runs that train a phase 1 for themselves and others (rule run_phase1)."""
+        return list(dict.fromkeys(r for r in map(self.phase1_run, self.runs) if r is not None))
 
     @property
     def whole(self) -> list[str]:

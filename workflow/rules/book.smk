@@ -75,19 +75,6 @@ if config["robustness"]:
     }
 
 
-def sweep_job_records(wildcards=None):
-    """The sweep's cost (robustness.md), with robustness: the engine's record of each job that
-    made a file of a sweep point (common.smk: job_records, run_files), with the seed of the
-    replication it served, {benchmark file: seed}. Without robustness, none."""
-    if not config["robustness"]:
-        return {}
-    return {
-        record: PLAN.sweep[run]["seed"]
-        for run in PLAN.sweep
-        for record in job_records(run_files(run))
-    }
-
-
 # The book displays, the pipeline computes: the rule `findings` writes every number, verdict,
 # sentence and table the pages show (data/book/findings.json, data/book/tables/), from every
 # data file the book stages (BOOK_DATA); the pages only glue and display them. It reads no figure.
@@ -179,6 +166,10 @@ rule book:
         findings=list(BOOK_FINDINGS.values()),
         # the build's results manifest and the tracked one (the first page's provenance)
         manifest="data/results.sha256",
+        # every other job's record of its wall time and memory (the reproduce page's table)
+        benchmarks=lambda wildcards: job_records(
+            [path for path in DEFAULT_OUTPUTS if path not in rules.book.output]
+        ),
         tracked_manifest="results.sha256",
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
         book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],

@@ -56,38 +56,16 @@ PLAN = plan_runs(config)
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
 NETWORKS = PLAN.networks(OWN)
 # the confirmations' fresh network indices (config robot.confirmation), the same for each
-FRESH_NETWORKS = next(
-    (PLAN.networks(r) for r in PLAN.confirmation_runs if PLAN.networks(r) != NETWORKS), []
-)
-# A run's networks are trained in one job (runs.smk: run_train, and confirmation_train for the
-# confirmations' fresh indices): a job takes about 1 s to start. The exceptions, a job per network
-# (by the rule train) are the config's own run, whose networks start in parallel at the start
-# (the robot test waits on them), and a run with another set of networks (a rule's outputs are
-# fixed when the rules are read, so those two rules serve the runs with these two sets).
-NETWORK_JOB_RUNS = [
-    run
-    for run in PLAN.runs
-    if PLAN.jobs_per_network(run) or PLAN.networks(run) not in (NETWORKS, FRESH_NETWORKS)
-]
-FRESH_RUNS = [
-    run
-    for run in PLAN.runs
-    if run not in NETWORK_JOB_RUNS and FRESH_NETWORKS and PLAN.networks(run) == FRESH_NETWORKS
-]
-# The readings' and the size study's runs, trained and measured in one job per seed (rules
-# measured_<group>, readings.smk); no other rule makes their networks or measures.
+FRESH_NETWORKS = PLAN.fresh_networks
+# Which rule makes each run's maps, networks, measures and robot test is the plan's to say
+# (icub_workflow.runs: RunPlan.rule_for, tested in tests/test_run_plan.py); a rule serves the
+# runs the plan names for it (RunPlan.served_by).
 MEASURED_GROUPS = PLAN.measured_groups
-MEASURED_RUNS = [run for runs in MEASURED_GROUPS.values() for run in runs]
-# those of them that make their own maps, in that job too (not by rule soms)
-MEASURED_SOMS_RUNS = [run for run in MEASURED_RUNS if PLAN.makes(run, "soms")]
-GROUPED_RUNS = [
-    run
-    for run in PLAN.runs
-    if run not in (*NETWORK_JOB_RUNS, *MEASURED_RUNS, *FRESH_RUNS)
-]
-# The runs that train a phase 1 for themselves and others, in run_phase1 (robot variants that
-# differ only in the cue timing and the rate's schedule; runs.py, RunPlan.phase1_run).
-PHASE1_RUNS = list(dict.fromkeys(r for r in map(PLAN.phase1_run, PLAN.runs) if r is not None))
+
+
+def served_by(rule, step):
+    """A wildcard constraint: the folders of the runs whose `step` the rule `rule` makes."""
+    return folders_pattern(PLAN.served_by(rule, step))
 
 
 def phase1_files(wildcards):
@@ -98,18 +76,6 @@ def phase1_files(wildcards):
     return [PLAN.path(owner, f"train/net{net}/phase1.npz") for net in NETWORKS]
 
 
-# The runs whose networks drive the robot (every robot variant and confirmation), and those
-# tested in one job (all but the config's own), grouped by their network indices: a rule's
-# outputs are fixed when the rules are read, so each group has its rule (embodied.smk).
-ROBOT_TESTED_RUNS = list(
-    dict.fromkeys([row["run"] for row in PLAN.robot_variants] + PLAN.confirmation_runs)
-)
-ROBOT_GROUPS = {}
-for _run in ROBOT_TESTED_RUNS:
-    if not PLAN.jobs_per_network(_run):
-        ROBOT_GROUPS.setdefault(tuple(PLAN.networks(_run)), []).append(_run)
-if len(ROBOT_GROUPS.keys() - {tuple(NETWORKS), tuple(FRESH_NETWORKS)}):
-    raise ValueError(f"robot runs with more than two sets of network indices: {ROBOT_GROUPS}")
 # The filmstrip and the films show the first network of each mapping: for any object one of them
 # categorises it with its natural grip (congruent) and the other with the other grip.
 FILM_NETWORKS = [NETWORKS[0], NETWORKS[len(NETWORKS) // 2]]
@@ -202,10 +168,7 @@ def run_files(run, tests=True):
     if PLAN.makes(run, "maps") and PLAN.config(run)["size_free_input"]:
         files += outputs("size_free_maps", run)
     if PLAN.makes(run, "demos"):
-        if PLAN.jobs_per_network(run):
-            files += outputs("demos_object", run, object=config["objects"]) + outputs("demos", run)
-        else:
-            files += outputs("run_demos", run)
+        files += outputs("demos", run)
     if PLAN.makes(run, "soms"):
         files += outputs("soms", run)
     files += outputs("train", run, net=PLAN.networks(run))
@@ -237,3 +200,16 @@ def job_records(files):
         maker = makers[0]
         records.append(str(maker.expand_benchmark(maker.get_wildcards(path))))
     return list(dict.fromkeys(records))
+
+
+def sweep_job_records(wildcards=None):
+    """The sweep's cost (robustness.md), with robustness: the engine's record of each job that
+    made a file of a sweep point (common.smk: job_records, run_files), with the seed of the
+    replication it served, {benchmark file: seed}. Without robustness, none."""
+    if not config["robustness"]:
+        return {}
+    return {
+        record: PLAN.sweep[run]["seed"]
+        for run in PLAN.sweep
+        for record in job_records(run_files(run))
+    }

@@ -1,57 +1,36 @@
-# Demonstration grasps (paper sections 2.3 and 3): the sequences the network learns from. For the
-# config's own run a job per object (the other runs: runs.smk, run_demos).
+# Demonstration grasps (paper sections 2.3 and 3): the sequences the network learns from. A run
+# makes its own demonstrations only if their settings differ from an earlier run's (a new seed);
+# otherwise it reads that run's (PLAN.stage_run).
 
 
-rule demos_object:
-    """Every grip and sequence of one object, made and checked in physics (one job per object)."""
+rule demos:
+    """A run's 4 x 2 x 5 demonstrations, each object's made and checked in physics on a freshly
+    loaded robot, in one file, and a readable summary (one job per run)."""
     input:
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("demos_object"),
+        code=script_code("demos"),
     output:
-        "data/{folder}demos/parts/{object}.npz",
+        demos="data/{folder}demos/demos.npz",
+        summary="data/{folder}demos/summary.csv",
     params:
+        objects=settings(config["objects"]),
         object_sizes=settings(config["object_sizes_m"]),
         demos=settings(config["demos"]),
         seed=run_section("seed"),
         posture=settings(config["initial_posture_deg"]),
-    wildcard_constraints:
-        object="|".join(config["objects"]),
-        folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
-    priority: 3  # every training waits on it: first
+    # every map and training waits on it: first, the config's own run's before all (the robot
+    # test's long chain starts from it)
+    priority: lambda wildcards: 3 if run_of(wildcards) == OWN else 2
     resources:
         mem_mb=1000,
-        runtime=10,
-    log:
-        "data/logs/{folder}demos_object/{object}.log",
-    benchmark:
-        "data/benchmarks/{folder}demos_object/{object}.tsv"
-    script:
-        "../scripts/demos_object.py"
-
-
-rule demos:
-    """The 4 x 2 x 5 demonstrations in one file, and a readable summary."""
-    input:
-        parts=lambda w: [
-            PLAN.path(run_of(w), f"demos/parts/{obj}.npz") for obj in config["objects"]
-        ],
-        code=script_code("demos_merge"),
-    output:
-        demos="data/{folder}demos/demos.npz",
-        summary="data/{folder}demos/summary.csv",
-    wildcard_constraints:
-        folder=folders_pattern([run for run in PLAN.runs if PLAN.jobs_per_network(run)]),
-    params:
-        objects=settings(config["objects"]),
-        demos=settings(config["demos"]),
-    priority: 3  # every training waits on it: first
+        runtime=20,
     log:
         "data/logs/{folder}demos.log",
     benchmark:
         "data/benchmarks/{folder}demos.tsv"
     script:
-        "../scripts/demos_merge.py"
+        "../scripts/demos.py"
 
 
 rule demo_filmstrip:

@@ -11,7 +11,7 @@ rule soms:
     output:
         "data/{folder}soms/soms.npz",
     wildcard_constraints:
-        folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_SOMS_RUNS]),
+        folder=served_by("soms", "soms"),
     params:
         soms=run_section("soms"),
         seed=run_section("seed"),
@@ -71,7 +71,7 @@ rule train:
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     wildcard_constraints:
-        folder=folders_pattern(NETWORK_JOB_RUNS),
+        folder=served_by("train", "train"),
     # before the cue ablation's training when both are ready: the robot test waits on these
     # networks, and its jobs are the longest that follow (see workflow/rules/robot.smk)
     priority: 1

@@ -21,7 +21,7 @@ rule measures:
         grip_distance=run_section("grip_distance"),
         measures=config["readings"]["measures"],
     wildcard_constraints:
-        folder=folders_pattern([run for run in PLAN.runs if run not in MEASURED_RUNS]),
+        folder=served_by("measures", "measures"),
     resources:
         mem_mb=1000,
         runtime=10,
@@ -33,7 +33,7 @@ rule measures:
         "../scripts/measures.py"
 
 
-# The measured runs of a seed (common.smk: MEASURED_GROUPS) trained and measured in one job: the
+# The measured runs of a seed (RunPlan.measured_groups) trained and measured in one job: the
 # steps of rules soms (for a run that makes its own maps), run_train and measures, the same
 # files. A rule's outputs are fixed when the rules are read, so each group has its rule.
 for _group, _runs in MEASURED_GROUPS.items():

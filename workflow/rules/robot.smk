@@ -20,7 +20,7 @@ rule robot_test:
         object_sizes=settings(config["object_sizes_m"]),
     wildcard_constraints:
         net=r"\d\d",
-        folder=folders_pattern([run for run in ROBOT_TESTED_RUNS if PLAN.jobs_per_network(run)]),
+        folder=served_by("robot_test", "robot_test"),
     priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
         runtime=10,
@@ -35,13 +35,13 @@ rule robot_test:
 # A robot variant's networks drive the robot in one job, one network after another (the config's
 # own run keeps a job per network, in parallel): rule run_robot_test for the runs with the
 # config's network indices, rule confirmation_robot_test for the confirmations' fresh ones
-# (common.smk: ROBOT_GROUPS).
+# (RunPlan.rule_for).
 use rule robot_test as run_robot_test with:
     output:
         trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in NETWORKS],
         states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in NETWORKS],
     wildcard_constraints:
-        folder=folders_pattern(ROBOT_GROUPS.get(tuple(NETWORKS), [])),
+        folder=served_by("run_robot_test", "robot_test"),
     log:
         "data/logs/{folder}robot_test.log",
     benchmark:
@@ -55,7 +55,7 @@ if FRESH_NETWORKS:
             trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in FRESH_NETWORKS],
             states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in FRESH_NETWORKS],
         wildcard_constraints:
-            folder=folders_pattern(ROBOT_GROUPS[tuple(FRESH_NETWORKS)]),
+            folder=served_by("confirmation_robot_test", "robot_test"),
         log:
             "data/logs/{folder}robot_test.log",
         benchmark:

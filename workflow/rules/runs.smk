@@ -1,44 +1,9 @@
-# The rules that serve a run in one job where the config's own run has a job per object or per
-# network (common.smk: PLAN.jobs_per_network): the other runs' demonstrations and networks. A run
-# makes its own demonstrations and SOMs only if their settings differ from an earlier run's (a new
-# seed, new SOM settings); otherwise it reads that run's (PLAN.stage_run).
-
-
-# A run that makes its own demonstrations (a sweep point's seed) makes them in one job: the four
-# objects' physics take about 1.5 s each and a robot job about 1 s to start. The config's own run
-# keeps its job per object (rule demos_object), in parallel at the start of the build.
-rule run_demos:
-    """A run's 4 x 2 x 5 demonstrations, made and checked in physics, in one file, and the
-    summary table: rules demos_object and demos in one job."""
-    input:
-        scene=config["scene"],
-        scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
-        code=script_code("demos_run"),
-    output:
-        demos="data/{folder}demos/demos.npz",
-        summary="data/{folder}demos/summary.csv",
-    wildcard_constraints:
-        folder=folders_pattern([run for run in PLAN.runs if not PLAN.jobs_per_network(run)]),
-    params:
-        objects=settings(config["objects"]),
-        object_sizes=settings(config["object_sizes_m"]),
-        demos=settings(config["demos"]),
-        seed=run_section("seed"),
-        posture=settings(config["initial_posture_deg"]),
-    priority: 2  # a replication's maps and networks wait on it
-    resources:
-        mem_mb=1000,
-        runtime=20,
-    log:
-        "data/logs/{folder}demos.log",
-    benchmark:
-        "data/benchmarks/{folder}demos.tsv"
-    script:
-        "../scripts/demos_run.py"
+# The rules that serve a run in one job where the config's own run has a job per network
+# (common.smk: PLAN.jobs_per_network): the other runs' networks.
 
 
 # Phase 1 of a run's networks, trained once for the robot variants that differ only in what acts
-# after it, the cue timing and the rate's schedule (common.smk: PHASE1_RUNS): each continues
+# after it, the cue timing and the rate's schedule (RunPlan.phase1_owners): each continues
 # from it in its run_train, to the same bits.
 rule run_phase1:
     """Phase 1 (grasping only) of a run's networks, each at its own seed, saved as a training
@@ -49,7 +14,7 @@ rule run_phase1:
     output:
         [f"data/{{folder}}train/net{net}/phase1.npz" for net in NETWORKS],
     wildcard_constraints:
-        folder=folders_pattern(PHASE1_RUNS),
+        folder=folders_pattern(PLAN.phase1_owners),
     params:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
@@ -66,7 +31,7 @@ rule run_phase1:
         "../scripts/phase1.py"
 
 
-# A run's networks in one job (common.smk: GROUPED_RUNS): same arithmetic, same seeds, so the
+# A run's networks in one job (RunPlan.rule_for): same arithmetic, same seeds, so the
 # same files as one job each; continued from a shared phase 1 where the run has one.
 use rule train as run_train with:
     input:
@@ -77,7 +42,7 @@ use rule train as run_train with:
         curve=[f"data/{{folder}}train/net{net}/curve.csv" for net in NETWORKS],
         weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in NETWORKS],
     wildcard_constraints:
-        folder=folders_pattern(GROUPED_RUNS),
+        folder=served_by("run_train", "train"),
     priority: 2  # the robot variants' long trainings (the cue ablation's is short)
     log:
         "data/logs/{folder}train.log",
@@ -87,11 +52,11 @@ use rule train as run_train with:
 
 if FRESH_NETWORKS:
 
-    # A confirmation's fresh networks in one job (common.smk: FRESH_RUNS).
+    # A confirmation's fresh networks in one job (RunPlan.rule_for).
     use rule run_train as confirmation_train with:
         output:
             curve=[f"data/{{folder}}train/net{net}/curve.csv" for net in FRESH_NETWORKS],
             weights=[f"data/{{folder}}train/net{net}/weights.npz" for net in FRESH_NETWORKS],
         wildcard_constraints:
-            folder=folders_pattern(FRESH_RUNS),
+            folder=served_by("confirmation_train", "train"),
         priority: 3  # the longest training, and its robot test waits on all of it

@@ -26,17 +26,13 @@ with redirect_log(snakemake.log[0]):
     run = provenance(dict(snakemake.params.config), Path.cwd())
     run["results"] = results_provenance(snakemake.input.manifest, snakemake.input.tracked_manifest)
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
-    # how long each rule took, from the benchmark files of every job run so far (the reproduce
-    # page's table): made here, as the book is the last job and no rule can declare them
-    benchmarks = {
-        job: text
-        for job, text in read_benchmarks(Path("data/benchmarks")).items()
-        if not job.startswith("sweep/")
-    }
+    # how long each rule took, from the benchmark file of every job of the build (declared:
+    # common.smk, job_records), the reproduce page's table
+    records = Path("data/benchmarks"), list(snakemake.input.benchmarks)
     with atomic_path(data_dir / "benchmarks.csv") as tmp:
-        benchmark_table(benchmarks).to_csv(tmp)
+        benchmark_table(read_benchmarks(*records)).to_csv(tmp)
     # and when they ran: for a build from scratch, its wall time up to this job
-    line = timeline(job_times(Path("data/benchmarks"))) | executor(dict(os.environ))
+    line = timeline(job_times(*records)) | executor(dict(os.environ))
     write_text(data_dir / "timeline.json", json.dumps(line, indent=2) + "\n")
     # a clean build every time: no pages left from an earlier table of contents, and the same
     # HTML as a first build (Sphinx links its CSS differently when the last build's is there)

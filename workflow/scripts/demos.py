@@ -1,6 +1,5 @@
 """A run's demonstrations in one job: every object made and checked in physics, one after
-another, each on a freshly loaded robot as in its own job (rule demos_object), then joined as
-rule demos joins them. The same arrays, so the same files, without four jobs' start-up."""
+another, each on a freshly loaded robot, then joined with their summary."""
 
 from icub_affordance.body import Robot, check_posture_deg
 from icub_affordance.demos import DemoConfig, merge_demos, object_demos, summary_csv
