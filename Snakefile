@@ -118,8 +118,8 @@ rule all:
 # the work beyond the paper (the readings, the robot, the size study, the book). A fast loop:
 # a change to a paper hyperparameter reruns only the config's own run.
 PAPER_OUTPUTS = [
-    *run_files(OWN),
-    *outputs("measures", OWN),
+    *run_files(MAIN),
+    *outputs("measures", MAIN),
     *rules.body_figure.output,
     *rules.visual_maps.output,
     *rules.figure3.output,

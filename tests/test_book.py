@@ -19,9 +19,10 @@ def html(built):
 
 def test_every_chapter_is_built(html):
     for page in (
-        "intro",
+        "index",
         "introduction",
-        "robot",
+        "body",
+        "robot_test",
         "architecture",
         "vision",
         "training",
@@ -40,7 +41,7 @@ def test_every_chapter_is_built(html):
 @pytest.mark.parametrize(
     ("page", "image"),
     [
-        ("robot", "figure1_scene.png"),
+        ("body", "figure1_scene.png"),
         ("architecture", "figure2_maps.png"),
         ("architecture", "figure2_architecture.png"),
         ("reproduce", "rulegraph.png"),
@@ -77,12 +78,12 @@ def test_anova_numbers_in_the_book_equal_anova_json(built, html):
         for term, r in anova["contrasts"][mode].items():
             assert f"{r['estimate']:+.4f}" in html["results"], (mode, term)
     mixed = anova["contrasts"]["closed_loop"]["congruency"]
-    assert f"{mixed['estimate']:+.4f}" in html["intro"]
+    assert f"{mixed['estimate']:+.4f}" in html["index"]
 
 
 def test_front_page_shows_provenance(built, html):
     run = json.loads((built / "book" / "_data" / "run.json").read_text())
-    assert run["commit"] in html["intro"]
+    assert run["commit"] in html["index"]
     # the packages and the configuration are on the reproduce page, folded
     assert run["versions"]["mujoco"] in html["reproduce"]
     assert f"seed: {run['config']['seed']}" in html["reproduce"]

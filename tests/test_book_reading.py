@@ -133,7 +133,7 @@ def test_each_scorecard_verdict_rests_on_the_numbers_beside_it():
         if isinstance(value, text.Claim):
             for entry in value.rests_on:
                 page, name = entry.split(".", 1)
-                assert page == "intro" and isinstance(values[name], float), entry
+                assert page == "index" and isinstance(values[name], float), entry
 
 
 # -- the built book (the test configuration's run) -----------------------------------------------
@@ -164,11 +164,11 @@ def test_the_book_is_short_enough_to_read_in_twenty_minutes(pages):
 def test_the_scorecard_on_the_front_page_is_the_findings(built):
     found = json.loads((built / "data" / "book" / "findings.json").read_text())
     table = pd.read_csv(built / "data" / "book" / "tables" / "scorecard.csv")
-    verdicts = [v for k, v in found["intro"].items() if k.startswith("score_") and k.endswith(
+    verdicts = [v for k, v in found["index"].items() if k.startswith("score_") and k.endswith(
         "_verdict")]  # fmt: skip
     assert sorted(table["verdict"]) == sorted(verdicts)
-    assert all(k in found["claims"]["intro"] for k in found["intro"] if k.endswith("_verdict"))
-    html = (built / HTML / "intro.html").read_text()
+    assert all(k in found["claims"]["index"] for k in found["index"] if k.endswith("_verdict"))
+    html = (built / HTML / "index.html").read_text()
     for claim in table["claim or question"]:
         assert claim.replace("'", "&#x27;") in html or claim in html, claim
 

@@ -261,15 +261,15 @@ def page(table: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     from icub_workflow.book import pages
 
     values, shown = pages._confirmation(table)
-    return pages.traced({"grasping": values}), shown
+    return pages.traced({"robot_test": values}), shown
 
 
 def test_the_values_are_the_rows_and_the_bar_phrase_rests_on_them():
     out, shown = page(confirmation_csv())
-    values, claims = out["grasping"], out["claims"]["grasping"]
+    values, claims = out["robot_test"], out["claims"]["robot_test"]
     assert set(claims) == {"confirmation_bar"}
     assert claims["confirmation_bar"] == [
-        "grasping.bar", "grasping.confirmation_ci_low", "grasping.confirmation_ci_high"
+        "robot_test.bar", "robot_test.confirmation_ci_low", "robot_test.confirmation_ci_high"
     ]  # fmt: skip
     for entry in claims["confirmation_bar"]:
         assert isinstance(values[entry.split(".", 1)[1]], int | float)
@@ -285,9 +285,9 @@ def test_the_values_are_the_rows_and_the_bar_phrase_rests_on_them():
     assert shown[["first_network", "last_network"]].values.tolist() == [[0, 11], [12, 23]]
     assert shown["held"].tolist() == [45, 44] and shown["design_effect_raw"].tolist()[1] == 0.85
     moved, _ = page(confirmation_csv(confirm=(41, 0.70, 0.92), raw=(0.85, 0.6)))
-    assert "B big ball 1 of 6" in moved["grasping"]["confirmation_misses"]
+    assert "B big ball 1 of 6" in moved["robot_test"]["confirmation_misses"]
     held, _ = page(confirmation_csv(confirm=(48, 0.93, 1.0), raw=(0.85, float("nan"))))
-    assert held["grasping"]["confirmation_misses"] == "none"
+    assert held["robot_test"]["confirmation_misses"] == "none"
 
 
 @pytest.mark.parametrize(
@@ -300,8 +300,8 @@ def test_the_values_are_the_rows_and_the_bar_phrase_rests_on_them():
 )
 def test_the_bar_is_set_against_the_confirmations_interval(low, high, words):
     out, shown = page(confirmation_csv(confirm=(44, low, high)))
-    assert out["grasping"]["confirmation_verdict"] == bar_verdict(low, high, 0.9)
-    assert out["grasping"]["confirmation_bar"].startswith(words)
+    assert out["robot_test"]["confirmation_verdict"] == bar_verdict(low, high, 0.9)
+    assert out["robot_test"]["confirmation_bar"].startswith(words)
     assert shown["vs_bar"].tolist() == ["", bar_verdict(low, high, 0.9)]
 
 
@@ -310,8 +310,9 @@ def test_the_exploration_alone_never_meets_the_bar():
     the confirmation's."""
     high, _ = page(confirmation_csv(explore=(48, 0.95, 1.0)))
     low, _ = page(confirmation_csv(explore=(30, 0.45, 0.78)))
-    assert high["grasping"]["exploration_held"] == 48 and low["grasping"]["exploration_held"] == 30
-    assert high["grasping"]["confirmation_bar"] == low["grasping"]["confirmation_bar"]
+    assert high["robot_test"]["exploration_held"] == 48
+    assert low["robot_test"]["exploration_held"] == 30
+    assert high["robot_test"]["confirmation_bar"] == low["robot_test"]["confirmation_bar"]
 
 
 def test_every_confirmed_variant_is_in_the_table():
@@ -319,7 +320,7 @@ def test_every_confirmed_variant_is_in_the_table():
     two = confirmation_csv(explore=(40, 0.7, 0.9), confirm=(30, 0.5, 0.8)).assign(hidden=20)
     table = pd.concat([one, two], ignore_index=True)
     out, shown = page(table)
-    assert out["grasping"]["confirmation_verdict"] == "above"  # the first's
+    assert out["robot_test"]["confirmation_verdict"] == "above"  # the first's
     assert (
         shown["variant"].tolist()
         == ["all · cmd · h40 · 768k · anneal"] * 2 + ["all · cmd · h20 · 768k · anneal"] * 2
@@ -329,4 +330,4 @@ def test_every_confirmed_variant_is_in_the_table():
 
 def test_no_confirmed_variant_says_so():
     out, shown = page(confirmation_csv().iloc[0:0])
-    assert shown.empty and out["grasping"]["confirmation_bar"].startswith("is not tested")
+    assert shown.empty and out["robot_test"]["confirmation_bar"].startswith("is not tested")

@@ -307,7 +307,7 @@ def test_the_rule_writes_a_section_for_every_page_that_glues(found):
 
 def test_every_claim_rests_on_numbers_the_book_has(found):
     claims = found["claims"]
-    for page in ("intro", "tests", "beyond"):
+    for page in ("index", "tests", "beyond"):
         assert claims.get(page), page
     for page, keys in claims.items():
         for key, entries in keys.items():
@@ -344,7 +344,7 @@ def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
         "not shown" if p_holm >= 0.05 else "reproduced" if estimate > 0 else "reversed"
     )
     assert found["beyond"]["cue_main_verdict"] == verdict
-    assert found["intro"]["score_congruency_all_verdict"] == verdict
+    assert found["index"]["score_congruency_all_verdict"] == verdict
 
 
 def test_the_comparison_page_shows_the_main_runs_numbers(built, found):

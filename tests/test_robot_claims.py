@@ -237,7 +237,7 @@ def verdict(effs: dict, name: str) -> str:
     assert isinstance(claim, text.Claim)
     for entry in claim.rests_on:  # every entry names a value stored beside the verdict
         page, key = entry.split(".", 1)
-        assert page == "grasping" and key in values, entry
+        assert page == "robot_test" and key in values, entry
     return claim.text
 
 
@@ -330,11 +330,11 @@ def test_an_effect_that_cannot_be_estimated_says_so():
 def test_the_required_grip_term_and_the_misses_rest_on_the_cells_and_objects():
     """The congruency x size term (twice the required grip's difference) is shown or not within
     its family, or not tested; the counts per cell and the misses per object stand beside it."""
-    found = pages.traced({"grasping": pages._best_effects(effects()["v"])})
-    page, claims = found["grasping"], found["claims"]["grasping"]
+    found = pages.traced({"robot_test": pages._best_effects(effects()["v"])})
+    page, claims = found["robot_test"], found["claims"]["robot_test"]
     assert claims["best_success_interaction"] == [
-        "grasping.best_success_interaction_estimate",
-        "grasping.best_success_interaction_p",
+        "robot_test.best_success_interaction_estimate",
+        "robot_test.best_success_interaction_p",
     ]
     assert page["best_success_interaction_estimate"] == pytest.approx(1 / 3)
     assert page["best_success_interaction_p"] == pytest.approx(0.004)

@@ -484,8 +484,8 @@ def test_the_books_robot_verdicts_read_the_effects_as_written():
     assert interaction.text == "not tested" and held["cong. × size"]["test"] == "none"
     assert np.isnan(values["best_success_interaction_p"])
     assert interaction.rests_on == (
-        "grasping.best_success_interaction_estimate",
-        "grasping.best_success_interaction_p",
+        "robot_test.best_success_interaction_estimate",
+        "robot_test.best_success_interaction_p",
     )
     assert values["best_contact_time_interaction"].text == "not tested"
     # the misses: every small object, three networks per mapping

@@ -11,7 +11,7 @@ from conftest import load_config, load_test_config
 
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.configs import merged
-from icub_workflow.runs import OWN, plan_runs
+from icub_workflow.runs import MAIN, plan_runs
 
 
 @pytest.fixture(scope="module")
@@ -25,9 +25,9 @@ def plan(config):
 
 
 def test_the_configs_own_run_is_first_at_the_top_of_data(plan, config):
-    assert next(iter(plan.runs)) == OWN
-    assert plan.config(OWN) == config
-    assert plan.path(OWN, "eval/trials.csv") == "data/eval/trials.csv"
+    assert next(iter(plan.runs)) == MAIN
+    assert plan.config(MAIN) == config
+    assert plan.path(MAIN, "eval/trials.csv") == "data/eval/trials.csv"
     assert plan.folder(plan.ablation) == f"runs/{plan.ablation}/"
     # every run has its own folder, and the folder gives the run back
     folders = plan.folders()
@@ -43,7 +43,7 @@ def test_the_ablation_is_the_other_cue_timing(plan, config):
     assert {own, other} == {"first_step", "all_steps"}
     assert plan.ablation == f"cue_{other}"
     assert plan.config(plan.ablation) == merged(config, {"network": {"categorisation_cue": other}})
-    assert plan.whole == [OWN, *config["runs"], plan.ablation]
+    assert plan.whole == [MAIN, *config["runs"], plan.ablation]
 
 
 def test_a_reading_at_the_configs_settings_is_the_configs_own_run(plan, config):
@@ -61,7 +61,7 @@ def test_a_reading_at_the_configs_settings_is_the_configs_own_run(plan, config):
         if r["cue"] == config["network"]["categorisation_cue"]
         and r["goal_response"] == config["soms"]["goal_response"]
     )
-    assert own["run"] == OWN
+    assert own["run"] == MAIN
     other_cue = next(
         r
         for r in rows
@@ -78,11 +78,11 @@ def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equa
             # the source comes first and has the same settings; nothing earlier has them
             assert list(plan.runs).index(source) <= list(plan.runs).index(run)
     # a robot variant changes only the network: the config's demonstrations and maps
-    variant = next(row["run"] for row in plan.robot_variants if row["run"] != OWN)
-    assert plan.stage_run(variant, "demos") == plan.stage_run(variant, "soms") == OWN
+    variant = next(row["run"] for row in plan.robot_variants if row["run"] != MAIN)
+    assert plan.stage_run(variant, "demos") == plan.stage_run(variant, "soms") == MAIN
     # a reading with the other Goal response: the config's demonstrations, its own maps
     grows = next(r["run"] for r in plan.readings if r["goal_response"] != "fixed")
-    assert plan.stage_run(grows, "demos") == OWN and plan.makes(grows, "soms")
+    assert plan.stage_run(grows, "demos") == MAIN and plan.makes(grows, "soms")
     # sweep points of one seed share theirs; of another seed, make their own
     points = list(plan.sweep)
     by_seed: dict[int, list[str]] = {}
@@ -91,7 +91,7 @@ def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equa
     for seed, same in by_seed.items():
         first = plan.stage_run(same[0], "demos")
         assert all(plan.stage_run(p, "demos") == first for p in same)
-        assert (first == OWN) == (seed == config["seed"])
+        assert (first == MAIN) == (seed == config["seed"])
 
 
 def test_robot_variants_are_named_by_what_differs_from_the_config(plan, config):
@@ -99,12 +99,12 @@ def test_robot_variants_are_named_by_what_differs_from_the_config(plan, config):
     rows = plan.robot_variants
     grid = NetworkVariant.grid(config["robot"])
     assert len(rows) == len({NetworkVariant.from_row(r) for r in rows}) == len(grid)
-    assert rows[0]["run"] == OWN and rows[0]["default"]
+    assert rows[0]["run"] == MAIN and rows[0]["default"]
     for row in rows[1:]:
         variant = NetworkVariant.from_row(row)
         settings = plan.config(row["run"])["network"]
         assert {k: settings[k] for k in variant.keys()} == variant.row()
-        if row["run"] not in (OWN, plan.ablation):
+        if row["run"] not in (MAIN, plan.ablation):
             assert row["run"] == variant.run_name(network)
             assert plan.trained_for_robot(row["run"])
     tested = [r["run"] for r in rows if r["default"]]
@@ -123,7 +123,7 @@ def test_confirmations_train_fresh_networks_of_the_chosen_variant(plan, config):
             f"{i:02d}" for i in range(first, first + confirmation["networks"])
         ]
         assert not set(plan.networks(run)) & set(plan.networks(row["exploration"]))
-        assert plan.stage_run(run, "demos") == plan.stage_run(run, "soms") == OWN
+        assert plan.stage_run(run, "demos") == plan.stage_run(run, "soms") == MAIN
         explored = plan.config(row["exploration"])["network"]
         fresh = plan.config(run)["network"]
         assert {k: v for k, v in fresh.items() if k not in ("networks", "first_network")} == {
@@ -147,7 +147,7 @@ def test_a_configured_run_is_planned_and_its_name_kept(config):
     plan = plan_runs(config | {"runs": {"lr_half": {"network": {"learning_rate": 0.0375}}}})
     assert list(plan.runs)[1] == "lr_half" and "lr_half" in plan.whole
     assert plan.config("lr_half")["network"]["learning_rate"] == 0.0375
-    assert plan.stage_run("lr_half", "soms") == OWN
+    assert plan.stage_run("lr_half", "soms") == MAIN
 
 
 def test_the_test_config_plans_few_runs():
@@ -157,7 +157,7 @@ def test_the_test_config_plans_few_runs():
 
 
 def test_only_the_configs_own_run_has_a_job_per_network(plan):
-    assert [run for run in plan.runs if plan.jobs_per_network(run)] == [OWN]
+    assert [run for run in plan.runs if plan.jobs_per_network(run)] == [MAIN]
 
 
 def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan, config):
@@ -196,14 +196,14 @@ def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
         assert sorted(served) == sorted(runs)  # each run once
     measured = {run for group in plan.measured_groups.values() for run in group}
     assert {r for r in plan.runs if plan.rule_for(r, "train") == "measured"} == measured
-    assert plan.served_by("train", "train") == [OWN] == plan.served_by("robot_test", "robot_test")
+    assert plan.served_by("train", "train") == [MAIN] == plan.served_by("robot_test", "robot_test")
     fresh = plan.served_by("confirmation_train", "train")
     assert (
         fresh == plan.confirmation_runs == plan.served_by("confirmation_robot_test", "robot_test")
     )
-    assert plan.fresh_networks == plan.networks(fresh[0]) != plan.networks(OWN)
+    assert plan.fresh_networks == plan.networks(fresh[0]) != plan.networks(MAIN)
     with pytest.raises(ValueError, match="no rule"):
-        plan.rule_for(OWN, "evaluate")
+        plan.rule_for(MAIN, "evaluate")
 
 
 def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
@@ -211,7 +211,7 @@ def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
     robot run with such networks has no rule to test it, and the plan says so."""
     plan = plan_runs(config | {"runs": {"six": {"network": {"networks": 6}}}})
     assert plan.rule_for("six", "train") == "train"
-    assert set(plan.served_by("train", "train")) == {OWN, "six"}
+    assert set(plan.served_by("train", "train")) == {MAIN, "six"}
     robot = dataclasses.replace(plan.runs["six"], origin="robot")
     odd = dataclasses.replace(plan, runs=plan.runs | {"six": robot})
     with pytest.raises(ValueError, match="tests networks 00..05 on the robot"):
@@ -230,7 +230,7 @@ def test_robot_variants_that_differ_only_after_phase_1_share_it(plan, config):
     first = "robot_commands_h40_it768000"
     for run in (first, f"{first}_all_steps", f"{first}_all_steps_anneal"):
         assert plan.phase1_run(run) == first
-    assert plan.phase1_run(OWN) is None
+    assert plan.phase1_run(MAIN) is None
     assert all(plan.phase1_run(run) is None for run in plan.confirmation_runs)
     full = plan_runs(config | {"robustness": True})
     owners = {}

@@ -22,7 +22,7 @@ from icub_affordance.variants import NetworkVariant
 from icub_workflow.configs import merged
 
 #: The config's own run: its name in the tables (column ``run``).
-OWN = "main"
+MAIN = "main"
 
 #: The settings each shared stage depends on: a run reuses the stage of the first run (in the
 #: plan's order) whose settings for it are equal, so a run that changes only the network reuses
@@ -38,7 +38,7 @@ STAGE_SETTINGS = {
 @dataclass(frozen=True)
 class Run:
     """One run: its name, the settings laid over the config, the config that results, and what
-    asked for it first (own, configured, ablation, sweep, reading, robot, confirmation)."""
+    asked for it first (main, configured, ablation, sweep, reading, robot, confirmation)."""
 
     name: str
     overrides: Mapping[str, Any]
@@ -79,7 +79,7 @@ class RunPlan:
     def folder(self, run: str) -> str:
         """A run's folder under ``data/``: the config's own at the top, every other run under
         ``runs/{run}/`` (ends with a slash, or is empty)."""
-        return "" if self.runs[run].origin == "own" else f"runs/{run}/"
+        return "" if self.runs[run].origin == "main" else f"runs/{run}/"
 
     def path(self, run: str, relative: str) -> str:
         """A run's file: ``relative`` in its folder under ``data/``."""
@@ -99,7 +99,7 @@ class RunPlan:
 
     @property
     def own(self) -> Run:
-        return self.runs[OWN]
+        return self.runs[MAIN]
 
     def config(self, run: str) -> Mapping[str, Any]:
         return self.runs[run].config
@@ -123,7 +123,7 @@ class RunPlan:
         """Is each network a job of its own (trained, and tested on the robot)? For the config's
         own run, whose networks every later stage waits on: in parallel at the start. Any other
         run trains its networks in one job (a network is short beside a job's start-up)."""
-        return self.runs[run].origin == "own"
+        return self.runs[run].origin == "main"
 
     # ---- which rule makes a run's step (the rules ask; none decides) ---------------------------
     # A rule's outputs are fixed when the rules are read, so a job that makes several networks'
@@ -134,7 +134,7 @@ class RunPlan:
     def fresh_networks(self) -> list[str]:
         """The confirmations' network indices, where they are not the config's own (the same for
         every confirmation: config robot.confirmation.first_network), else none."""
-        own, runs = self.networks(OWN), self.confirmation_runs
+        own, runs = self.networks(MAIN), self.confirmation_runs
         return next((self.networks(r) for r in runs if self.networks(r) != own), [])
 
     def rule_for(self, run: str, step: str) -> str:
@@ -158,7 +158,7 @@ class RunPlan:
         nets = self.networks(run)
         if self.jobs_per_network(run) or not nets:
             return step
-        if nets == self.networks(OWN):
+        if nets == self.networks(MAIN):
             return f"run_{step}"
         if nets == self.fresh_networks:
             return f"confirmation_{step}"
@@ -189,7 +189,7 @@ class RunPlan:
     def whole(self) -> list[str]:
         """The runs the default target makes in full, their in-silico tests included: the
         config's own, config ``runs`` and the cue ablation."""
-        return [OWN, *self.configured]
+        return [MAIN, *self.configured]
 
     @property
     def robot_runs(self) -> list[str]:
@@ -226,7 +226,7 @@ class RunPlan:
         return (
             run in self.robot_runs  # tested in this build (all of the grid with robustness)
             and not self.jobs_per_network(run)
-            and self.networks(run) == self.networks(OWN)
+            and self.networks(run) == self.networks(MAIN)
         )
 
     @property
@@ -278,7 +278,7 @@ def _phase1_settings(config: Mapping[str, Any]) -> dict[str, Any]:
 def plan_runs(config: Mapping[str, Any]) -> RunPlan:
     """Every run of ``config``, named and ordered; see the module's docstring."""
     planner = _Planner(config)
-    planner.add(OWN, {}, "own")
+    planner.add(MAIN, {}, "main")
     for name, overrides in config["runs"].items():
         planner.add(name, overrides, "configured")
     ablation = planner.add(*_ablation(config), "ablation")

@@ -17,15 +17,9 @@ import pandas as pd
 from icub_affordance.io import atomic_path, load_npz, save_npz, write_columns, write_text
 from icub_affordance.jordan import Weights
 from icub_affordance.spec import TASKS
-from icub_affordance.train import (
-    Materials,
-    Phase1,
-    TrainConfig,
-    mapping_of,
-    network_seed,
-    train_network,
-    train_phase1,
-)
+from icub_affordance.train import Materials, Phase1, TrainConfig, mapping_of, network_seed
+from icub_affordance.train import train_networks as train_side_by_side
+from icub_affordance.train import train_phase1s as train_phase1s_side_by_side
 
 
 def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
@@ -70,10 +64,17 @@ def _networks(network: Mapping, nets: Sequence[int] | None, files: Sequence[str]
 def train_phase1s(
     materials: Materials, network: Mapping, seed: int, phase1_files: Sequence[str]
 ) -> None:
-    """Phase 1 of each of a run's networks, saved for the runs that continue from it."""
+    """Phase 1 of each of a run's networks, saved for the runs that continue from it: trained
+    side by side, each the bits it has trained alone (``train.train_phase1s``)."""
     config, nets = _networks(network, None, phase1_files)
-    for (net, mapping), path in zip(nets, phase1_files, strict=True):
-        train_phase1(materials, config, mapping, network_seed(seed, net)).save(path)
+    phase1s = train_phase1s_side_by_side(
+        materials,
+        config,
+        [mapping for _, mapping in nets],
+        [network_seed(seed, net) for net, _ in nets],
+    )
+    for phase1, path in zip(phase1s, phase1_files, strict=True):
+        phase1.save(path)
 
 
 def train_networks(
@@ -90,13 +91,20 @@ def train_networks(
     ``phase1_files`` (one per network, in order; :func:`train_phase1s`); write each one's curve
     and weights."""
     config, nets = _networks(network, nets, curves)
-    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else [None] * len(nets)
-    if len(starts) != len(nets):
+    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else None
+    if starts is not None and len(starts) != len(nets):
         raise ValueError(f"{len(starts)} saved phase 1s for {len(nets)} networks")
-    for (net, mapping), curve_path, weights_path, after in zip(
-        nets, curves, weights_files, starts, strict=True
+    # side by side in a vector's lanes, each network the bits it has trained alone
+    trained = train_side_by_side(
+        materials,
+        config,
+        [mapping for _, mapping in nets],
+        [network_seed(seed, net) for net, _ in nets],
+        starts,
+    )
+    for (net, mapping), curve_path, weights_path, (weights, curve) in zip(
+        nets, curves, weights_files, trained, strict=True
     ):
-        weights, curve = train_network(materials, config, mapping, network_seed(seed, net), after)
         weights.check_finite(f"network {net:02d}")
         if not np.all(np.isfinite(curve["rmse"])):
             raise FloatingPointError(

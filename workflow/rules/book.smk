@@ -9,16 +9,16 @@ BOOK_DATA = {
     "joint_table.csv": "data/body/joint_table.csv",
     "figure2_maps.png": "data/soms/figure2_maps.png",
     "figure2_architecture.png": "data/figures/figure2_architecture.png",
-    "soms.npz": PLAN.path(OWN, "soms/soms.npz"),
+    "soms.npz": PLAN.path(MAIN, "soms/soms.npz"),
     "figure3.png": "data/vision/figure3.png",
     "visual_maps.npz": "data/vision/visual_maps.npz",
     "filmstrip.png": "data/demos/filmstrip.png",
-    "demo_summary.csv": PLAN.path(OWN, "demos/summary.csv"),
-    "demos.npz": PLAN.path(OWN, "demos/demos.npz"),
+    "demo_summary.csv": PLAN.path(MAIN, "demos/summary.csv"),
+    "demos.npz": PLAN.path(MAIN, "demos/demos.npz"),
     "figure4.png": "data/figures/figure4.png",
-    "figure5.png": PLAN.path(OWN, "figures/figure5.png"),
-    "conflict_timecourse.png": PLAN.path(OWN, "figures/conflict_timecourse.png"),
-    "anova.json": PLAN.path(OWN, "eval/anova.json"),
+    "figure5.png": PLAN.path(MAIN, "figures/figure5.png"),
+    "conflict_timecourse.png": PLAN.path(MAIN, "figures/conflict_timecourse.png"),
+    "anova.json": PLAN.path(MAIN, "eval/anova.json"),
     "cue_difference.json": "data/eval/cue_difference.json",
     "rulegraph.png": "data/book/rulegraph.png",
     "robot_analysis.json": "data/embodied/analysis.json",
@@ -30,7 +30,7 @@ BOOK_DATA = {
     "divergence.json": "data/eval/divergence.json",
     "hidden_explained.csv": "data/eval/hidden_explained.csv",
     "hidden_representations.png": "data/figures/hidden_representations.png",
-    "measures.json": PLAN.path(OWN, "eval/measures.json"),
+    "measures.json": PLAN.path(MAIN, "eval/measures.json"),
     "readings_summary.csv": "data/readings/summary.csv",
     "readings_replications.csv": "data/readings/replications.csv",
     "readings_differences.csv": "data/readings/differences.csv",
@@ -52,7 +52,7 @@ BOOK_DATA = {
     "size_geometry.csv": "data/size_dose/geometry.csv",
     "size_dose_response.png": "data/size_dose/dose_response.png",
 } | {
-    f"curves/net{net}.csv": PLAN.path(OWN, f"train/net{net}/curve.csv") for net in NETWORKS
+    f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }
 # the Goal map under the other response, if a reading uses it (the readings chapter)
 _GROWS = [

@@ -7,7 +7,7 @@ from pathlib import Path
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.code_deps import CodeGraph, page_code
 from icub_workflow.config_checks import check_runs
-from icub_workflow.runs import OWN, plan_runs
+from icub_workflow.runs import MAIN, plan_runs
 from icub_workflow.scene_files import scene_files
 
 
@@ -54,7 +54,7 @@ def settings(value):
 PLAN = plan_runs(config)
 # each run of `runs:`, laid over the config: the schema and the rules between keys
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
-NETWORKS = PLAN.networks(OWN)
+NETWORKS = PLAN.networks(MAIN)
 # the confirmations' fresh network indices (config robot.confirmation), the same for each
 FRESH_NETWORKS = PLAN.fresh_networks
 # Which rule makes each run's maps, networks, measures and robot test is the plan's to say

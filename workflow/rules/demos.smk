@@ -21,7 +21,7 @@ rule demos:
         posture=settings(config["initial_posture_deg"]),
     # every map and training waits on it: first, the config's own run's before all (the robot
     # test's long chain starts from it)
-    priority: lambda wildcards: 3 if run_of(wildcards) == OWN else 2
+    priority: lambda wildcards: 3 if run_of(wildcards) == MAIN else 2
     resources:
         mem_mb=1000,
         runtime=20,
@@ -36,7 +36,7 @@ rule demos:
 rule demo_filmstrip:
     """Filmstrips of chosen demonstrations, replayed from their recorded states (render only)."""
     input:
-        demos=PLAN.path(OWN, "demos/demos.npz"),
+        demos=PLAN.path(MAIN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("demo_filmstrip"),

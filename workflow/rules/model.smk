@@ -28,7 +28,7 @@ rule soms:
 rule figure2_maps:
     """The three maps' activations for every object and task (plot only)."""
     input:
-        soms=PLAN.path(OWN, "soms/soms.npz"),
+        soms=PLAN.path(MAIN, "soms/soms.npz"),
         code=script_code("figure2_maps"),
     output:
         "data/soms/figure2_maps.png",
@@ -118,9 +118,9 @@ rule stats:
         table="data/{folder}eval/anova_table.md",
     params:
         # the confirmatory family is the config's own run's alone
-        confirmatory=lambda w: settings(config["confirmatory"]) if run_of(w) == OWN else [],
+        confirmatory=lambda w: settings(config["confirmatory"]) if run_of(w) == MAIN else [],
         # another run's exploration families carry its name (the own run's none)
-        run=lambda w: None if run_of(w) == OWN else run_of(w),
+        run=lambda w: None if run_of(w) == MAIN else run_of(w),
     log:
         "data/logs/{folder}stats.log",
     benchmark:
@@ -132,7 +132,7 @@ rule stats:
 rule figure4:
     """Figure 4: training RMSE over iterations, mean and range over the networks (plot only)."""
     input:
-        curves=[PLAN.path(OWN, f"train/net{net}/curve.csv") for net in NETWORKS],
+        curves=[PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS],
         code=script_code("figure4"),
     output:
         "data/figures/figure4.png",
@@ -166,8 +166,8 @@ rule representations:
     """The hidden units over the steps: how far categorisation trials are from grasping, and
     each network's trajectories on its first two principal axes."""
     input:
-        trials=PLAN.path(OWN, "eval/trials.csv"),
-        hidden=PLAN.path(OWN, "eval/hidden.npz"),
+        trials=PLAN.path(MAIN, "eval/trials.csv"),
+        hidden=PLAN.path(MAIN, "eval/hidden.npz"),
         code=script_code("representations"),
     output:
         divergence="data/eval/divergence.csv",

@@ -66,7 +66,7 @@ rule robot_replay:
     """Every demonstration replayed through the embodied controller: its servo targets and its
     sensed postures."""
     input:
-        demos=PLAN.path(OWN, "demos/demos.npz"),
+        demos=PLAN.path(MAIN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_replay"),
@@ -91,7 +91,7 @@ rule robot_tolerance:
     demonstrations, replayed with its arm targets offset by Gaussian noise: success against the
     palm's distance from where the demonstrator put it (config robot.tolerance)."""
     input:
-        demos=PLAN.path(OWN, "demos/demos.npz"),
+        demos=PLAN.path(MAIN, "demos/demos.npz"),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_tolerance"),
@@ -131,7 +131,7 @@ rule robot_summary:
     params:
         variants=PLAN.robot_tested,
         networks=len(NETWORKS),
-        own=OWN,
+        own=MAIN,
     log:
         "data/logs/robot/summary.log",
     benchmark:
@@ -170,12 +170,12 @@ rule robot_filmstrip:
     (render only)."""
     input:
         states=lambda w: [
-            PLAN.path(OWN, f"embodied/net{net}/states.npz") for net in FILM_NETWORKS
+            PLAN.path(MAIN, f"embodied/net{net}/states.npz") for net in FILM_NETWORKS
         ],
         # each film network's own trials, not the joined table: the picture need not wait
         # for the other networks
         trials=lambda w: [
-            PLAN.path(OWN, f"embodied/net{net}/trials.csv") for net in FILM_NETWORKS
+            PLAN.path(MAIN, f"embodied/net{net}/trials.csv") for net in FILM_NETWORKS
         ],
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)

@@ -27,7 +27,7 @@ rule cue_difference:
     ablation's per-network contrasts (the same networks under the two timings), the cue at the
     first step only minus at every step, paired by network (closed loop)."""
     input:
-        trials=PLAN.path(OWN, "eval/trials.csv"),
+        trials=PLAN.path(MAIN, "eval/trials.csv"),
         ablation_trials=PLAN.path(PLAN.ablation, "eval/trials.csv"),
         code=script_code("cue_difference"),
     output:

@@ -21,7 +21,7 @@ from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import WITHIN
 from icub_affordance.variants import NetworkVariant
-from icub_workflow.runs import OWN
+from icub_workflow.runs import MAIN
 
 from . import text
 from .scorecard import scorecard
@@ -131,7 +131,7 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
 
 # -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------
 
-#: A variant's settings in the robot tables' short words (the grasping chapter's legend).
+#: A variant's settings in the robot tables' short words (the robot test chapter's legend).
 SHORT = {"categorisation_cue": {"first_step": "first", "all_steps": "all"},
          "target": {"sensed": "sens", "commands": "cmd"},
          "learning_rate_schedule": {"constant": "const", "anneal": "anneal"}}  # fmt: skip
@@ -217,7 +217,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "div_verdict": divergence_verdict(first),
     }  # fmt: skip
     out |= _robot_values(_json(inputs["robot_analysis.json"]),
-                         _json(inputs["robot_effects.json"])[OWN])  # fmt: skip
+                         _json(inputs["robot_effects.json"])[MAIN])  # fmt: skip
     for name in cues:
         result = _json(inputs["anova.json" if name == "main" else "ablation_anova.json"])
         means = {f"cue_{name}_{k}": v for k, v in result["closed_loop"]["means"].items()}
@@ -273,7 +273,8 @@ def _best_effects(effects: dict) -> dict:
     for r in _effect_rows(effects)[0]:
         name = f"best_{r['key']}"
         out |= {f"{name}_estimate": r["estimate"], f"{name}_p": r["p_reads"]}
-        out[name] = text.Claim(r["verdict"], (f"grasping.{name}_estimate", f"grasping.{name}_p"))
+        rests = (f"robot_test.{name}_estimate", f"robot_test.{name}_p")
+        out[name] = text.Claim(r["verdict"], rests)
     objects = effects["success"]["objects"]
     out["best_misses"] = _misses({k: (c["held"], c["trials"]) for k, c in objects.items()})
     tests = [t for m in effects.values() for t in m["tests"].values() if "family" in t]
@@ -296,14 +297,14 @@ def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     fresh = first["confirmation"]
     out |= {"confirmed_label": fresh["variant"], "confirmation_verdict": fresh["vs_bar"]}
     bar = "includes it" if fresh["vs_bar"] == "includes" else f"lies {fresh['vs_bar']} it"
-    out["confirmation_bar"] = text.Claim(bar, ("grasping.bar", "grasping.confirmation_ci_low",
-                                               "grasping.confirmation_ci_high"))  # fmt: skip
+    out["confirmation_bar"] = text.Claim(bar, ("robot_test.bar", "robot_test.confirmation_ci_low",
+                                               "robot_test.confirmation_ci_high"))  # fmt: skip
     held = {k.removesuffix("_held"): v for k, v in fresh.items() if k.endswith("_held")}
     out["confirmation_misses"] = _misses({k: (v, fresh[f"{k}_trials"]) for k, v in held.items()})
     return out, pd.DataFrame(rows)
 
 
-def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
+def robot_test(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The robot grasps: the variants, the best confirmed, the arm's precision, the effects."""
     variants = pd.read_csv(inputs["robot_variants.csv"])
     variants["variant"] = [short_label(r) for _, r in variants.iterrows()]
@@ -318,7 +319,7 @@ def grasping(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "tolerated_noise": "none tested" if tolerated is None else f"{tolerated['noise']:g}",
         "tolerated_palm_mm": np.nan if tolerated is None else tolerated["palm_error_mm"],
     }  # fmt: skip
-    records = {"own": variants[variants["run"] == OWN].to_dict("records")[0], "best": best,
+    records = {"own": variants[variants["run"] == MAIN].to_dict("records")[0], "best": best,
                "replay": stats["replay"],  # the config lists noise 0 for the exact postures
                "exact": tolerance[tolerance["noise"] == 0].to_dict("records")[0]}  # fmt: skip
     out |= {f"{name}_{k}": v for name, record in records.items() for k, v in record.items()}
@@ -380,7 +381,7 @@ def methods(inputs: Mapping[str, str]) -> dict[str, dict]:
         "training": {k: demos[k] for k in ("n_demos", "n_attempts", "n_retried", "lift_min_cm")},
         "vision": {f"cells_{name}": n for name, n in
                    science.edge_cells(load_npz(inputs["visual_maps.npz"])).items()},
-        "robot": science.joint_counts(pd.read_csv(inputs["joint_table.csv"])),
+        "body": science.joint_counts(pd.read_csv(inputs["joint_table.csv"])),
         "architecture": {f"units_{obj}": active_units(act) for obj, act in units},
     }  # fmt: skip
 
@@ -469,13 +470,13 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     pages, tables = {}, {}
     for page, (values, shown) in {
         "beyond": beyond(inputs, config, ablation_cue), "readings": readings(inputs, config),
-        "grasping": grasping(inputs, config), "size": size_study(inputs, config),
+        "robot_test": robot_test(inputs, config), "size": size_study(inputs, config),
     }.items():  # fmt: skip
         pages[page], tables = values, tables | shown
     pages["robustness"], sweep = robustness(inputs, config, sweep_jobs)
     pages |= {
         "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),
-        "intro": score_values,
+        "index": score_values,
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
         "settings": pd.json_normalize(quoted, sep=".").to_dict("records")[0],
     } | methods(inputs)  # fmt: skip

@@ -19,7 +19,7 @@ PAPER_SAYS = {"congruency": "congruent lower, significant", "size": "large lower
 
 def _tested(prefix: str, term) -> tuple[dict, str]:
     """A test's values and verdict (``text.test_values``), and the result cell."""
-    values = text.test_values("intro", prefix, dict(term))
+    values = text.test_values("index", prefix, dict(term))
     est, low, high, p = (
         values[f"{prefix}_{k}"] for k in ("estimate", "ci_low", "ci_high", "p_holm")
     )
@@ -31,7 +31,7 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
     values = {f"{prefix}_share": float(share), f"{prefix}_ci_low": float(low),
               f"{prefix}_ci_high": float(high)}  # fmt: skip
     side = "above" if low > science.GRASPS else "below" if high < science.GRASPS else "includes"
-    rests = (f"intro.{prefix}_ci_low", f"intro.{prefix}_ci_high")
+    rests = (f"index.{prefix}_ci_low", f"index.{prefix}_ci_high")
     values[f"{prefix}_verdict"] = text.Claim(BAR_WORDS[side], rests)
     pct = "{:.1%}".format
     return values, f"{pct(share)} of grasping trials [{pct(low)}, {pct(high)}] ({how} interval); " \
@@ -41,7 +41,7 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
 def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFrame,
               variants: pd.DataFrame, confirmation: pd.DataFrame
               ) -> tuple[dict, pd.DataFrame]:  # fmt: skip
-    """The scorecard's values (for ``findings.json``'s ``intro``) and its table."""
+    """The scorecard's values (for ``findings.json``'s ``index``) and its table."""
     values: dict[str, object] = {}
     rows: list[dict[str, object]] = []
     networks = anova["closed_loop"]["n_networks"]
@@ -56,7 +56,7 @@ def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFra
     learnt = "reproduced" if curve["end"] <= PAPER_FINAL_RMSE else "not shown"
     learn = {"score_learn_start": curve["start"], "score_learn_end": curve["end"],
              "score_learn_paper": PAPER_FINAL_RMSE,
-             "score_learn_verdict": text.Claim(learnt, ("intro.score_learn_end",))}  # fmt: skip
+             "score_learn_verdict": text.Claim(learnt, ("index.score_learn_end",))}  # fmt: skip
     add("score_learn", (learn, f"{curve['start']:.3f} → {curve['end']:.3f}"),
         "The arm learns to grasp (training RMSE)", f"≈0.3 → ≈{PAPER_FINAL_RMSE}", own_scale,
         "results")  # fmt: skip
@@ -99,11 +99,11 @@ def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFra
     add("score_robot_own", _held("score_robot_own", own["grasping_success"], low, high, "exact"),
         "The paper's networks, driving the arm, hold the object", "not asked",
         f"{int(own['networks'])} networks × {trials // int(own['networks'])} grasping trials",
-        "grasping")  # fmt: skip
+        "robot_test")  # fmt: skip
     for _, row in confirmation[confirmation["seed_set"] == "confirmation"].head(1).iterrows():
         add("score_robot_best",
             _held("score_robot_best", row["share"], row["ci_low"], row["ci_high"], "clustered"),
             "A larger network, chosen then confirmed on fresh seeds, holds the object",
             "not asked", f"{int(row['networks'])} fresh networks × "
-            f"{int(row['trials'] // row['networks'])} grasping trials", "grasping")  # fmt: skip
+            f"{int(row['trials'] // row['networks'])} grasping trials", "robot_test")  # fmt: skip
     return values, pd.DataFrame(rows)
