@@ -166,9 +166,15 @@ rule book:
         findings=list(BOOK_FINDINGS.values()),
         # the build's results manifest and the tracked one (the first page's provenance)
         manifest="data/results.sha256",
-        # every other job's record of its wall time and memory (the reproduce page's table)
+        # every other job's record of its wall time and memory (the reproduce page's table); not
+        # the user's runs of `runs:`, so that a new one reruns nothing of the main run's
         benchmarks=lambda wildcards: job_records(
-            [path for path in DEFAULT_OUTPUTS if path not in rules.book.output]
+            [
+                path
+                for path in DEFAULT_OUTPUTS
+                if path not in rules.book.output
+                and not path.startswith(tuple(PLAN.path(run, "") for run in config["runs"]))
+            ]
         ),
         tracked_manifest="results.sha256",
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),

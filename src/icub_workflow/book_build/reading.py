@@ -25,7 +25,7 @@ SKIPPED_CLASSES = ("cell_input",)
 FOLDED_CLASS = "dropdown"
 IN_BRIEF_CLASS = "in-brief"
 #: Pages of a Sphinx build that are not chapters.
-NOT_CHAPTERS = ("genindex", "search", "index")
+NOT_CHAPTERS = ("genindex", "search")
 
 
 @dataclass
