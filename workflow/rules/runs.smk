@@ -44,6 +44,10 @@ use rule train as run_train with:
     wildcard_constraints:
         folder=served_by("run_train", "train"),
     priority: 2  # the robot variants' long trainings (the cue ablation's is short)
+    resources:
+        # a run's networks side by side: the 768,000-iteration robot trainings take about 600 MB
+        mem_mb=1000,
+        runtime=10,
     log:
         "data/logs/{folder}train.log",
     benchmark:
