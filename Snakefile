@@ -66,42 +66,25 @@ include: "workflow/rules/sweep.smk"
 
 # Every file of the default target, the intermediate ones too: Snakemake remakes a missing file
 # only if a job still to run needs it, so a file deleted after a run (as the project's own errors
-# advise for a corrupt one) must be a target itself to be remade.
-DEFAULT_OUTPUTS = [
-    *(f for run in PLAN.whole for f in run_files(run)),
-    *rules.body_figure.output,
-    *rules.visual_maps.output,
-    *rules.figure3.output,
-    *rules.demo_filmstrip.output,
-    *rules.figure2_maps.output,
-    *rules.figure2_architecture.output,
-    *rules.figure4.output,
-    *rules.representations.output,
-    *rules.figure_hidden.output,
-    *(f for run in PLAN.robot_runs for f in run_files(run) + robot_files(run)),
-    *rules.robot_replay.output,
-    *rules.robot_tolerance.output,
-    *rules.robot_summary.output,
-    *(f for run in PLAN.confirmation_runs for f in run_files(run) + robot_files(run)),
-    *rules.robot_confirmation.output,
-    *rules.robot_statistics.output,
-    *rules.robot_filmstrip.output,
-    *rules.robot_variants_figure.output,
-    *rules.robot_animation.output,
-    *rules.rulegraph.output,
-    *rules.rulegraph_figure.output,
-    *(f for row in PLAN.readings for f in reading_files(row["run"])),
-    *rules.readings.output,
-    *rules.readings_figure.output,
-    *(f for row in PLAN.size_dose for f in reading_files(row["run"])),
-    *rules.size_dose.output,
-    *rules.size_dose_figure.output,
-    *rules.cue_difference.output,
-    *rules.findings.output,
-    *rules.book.output,
-    "data/results.sha256",
-    *(SWEEP_OUTPUTS if config["robustness"] else []),
-]
+# advise for a corrupt one) must be a target itself to be remade. Derived, never listed: every
+# file of each run the build makes (common.smk: built_runs, run_outputs) and every output of a
+# rule without wildcards, but the sweep's summary, which only `robustness=True` (or the target
+# `sweep`) asks for.
+ON_REQUEST = () if config["robustness"] else ("sweep_summary", "sweep_figure")
+DEFAULT_OUTPUTS = list(
+    dict.fromkeys(
+        [
+            *(f for run in built_runs() for f in run_outputs(run)),
+            *(
+                f
+                for rule in workflow.rules
+                if not rule.has_wildcards() and rule.name not in ON_REQUEST
+                for f in rule.output
+            ),
+            "data/results.sha256",
+        ]
+    )
+)
 
 
 include: "workflow/rules/manifest.smk"

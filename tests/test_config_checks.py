@@ -295,3 +295,24 @@ def test_a_schema_refusal_names_key_value_allowed_and_fix(change, words):
         check_schema(config, load_schema(SCHEMA))
     for word in words:
         assert word in str(info.value), (word, str(info.value))
+
+
+def test_the_measures_names_come_from_their_registry(monkeypatch):
+    """A measure is named once, in icub_affordance.measures.MEASURES: the schema takes its valid
+    `readings.measures` entries and the margins it requires from there."""
+    from icub_affordance import measures
+    from icub_workflow.config_checks import check_schema, load_schema
+
+    config = load_config()
+    config["readings"]["measures"] = [*config["readings"]["measures"], "new_measure"]
+    with pytest.raises(ConfigError, match="new_measure"):
+        check_schema(config, load_schema(SCHEMA))
+    monkeypatch.setattr(measures, "MEASURES", (*measures.MEASURES, "new_measure"))
+    with pytest.raises(ConfigError, match="new_measure"):  # now known, but it has no margin
+        check_schema(config, load_schema(SCHEMA))
+    config["readings"]["equivalence_margin"]["new_measure"] = 0.1
+    schema = load_schema(SCHEMA)
+    schema["properties"]["readings"]["properties"]["equivalence_margin"]["properties"][
+        "new_measure"
+    ] = {"type": "number"}
+    check_schema(config, schema)

@@ -170,3 +170,9 @@ def test_the_correct_trial_rmse_is_declared_derived_and_able_to_lack_cells():
     assert MISSING_BY_DESIGN <= set(MEASURES)
     assert not any(can_lack_cells(m) or is_derived(m) for m in ("rmse", "wrong_grip"))
     assert analysed(["rmse", "rmse_correct"]) == ["rmse", "rmse_correct"]
+
+
+def test_every_analysed_measure_has_its_label_in_the_registry():
+    from icub_affordance.measures import LABELS
+
+    assert set(analysed(MEASURES)) == set(LABELS)

@@ -62,6 +62,17 @@ MEASURES: tuple[str, ...] = (
     "rmse_per_grip_distance",
 )
 
+#: Each measure's name in the book's tables, its null control's and excess's too.
+LABELS: dict[str, str] = {
+    "rmse": "RMSE",
+    "rmse_correct": "correct-trial RMSE",
+    "wrong_grip": "wrong-grip rate",
+    "commitment": "commitment",
+    "rmse_per_grip_distance": "RMSE per grip distance",
+    "rmse_per_grip_distance_null": "null control",
+    "rmse_per_grip_distance_excess": "excess over null",
+}
+
 #: The measures computed at analysis time from other measures' columns (``stats.with_outcomes``),
 #: with the columns each needs: not written by ``measure_network``.
 DERIVED: dict[str, tuple[str, ...]] = {"rmse_correct": ("rmse", "wrong_grip")}

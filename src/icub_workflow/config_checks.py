@@ -118,8 +118,16 @@ def _allowed(schema: Mapping[str, Any]) -> str:
 
 
 def load_schema(path: str | Path) -> dict[str, Any]:
-    """The config's JSON schema (workflow/schemas/config.schema.yaml)."""
-    return yaml.safe_load(Path(path).read_text())
+    """The config's JSON schema (workflow/schemas/config.schema.yaml), with the measures' names
+    filled in from where they are declared (``icub_affordance.measures.MEASURES``): a measure
+    added there is a valid ``readings.measures`` entry and needs an equivalence margin."""
+    from icub_affordance.measures import MEASURES
+
+    schema = yaml.safe_load(Path(path).read_text())
+    schema["$defs"]["measure"]["enum"] = list(MEASURES)
+    readings = schema["properties"]["readings"]["properties"]
+    readings["equivalence_margin"]["required"] = list(MEASURES)
+    return schema
 
 
 def schema_problem(

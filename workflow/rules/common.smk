@@ -177,11 +177,36 @@ def run_files(run, tests=True):
     return files
 
 
-def reading_files(run):
-    """Every file a reading's replication makes: its demonstrations, SOMs and networks, its
-    measures, and, for the runs the default target makes whole, their tests too; a reading's
-    own run is not tested otherwise (its trials are scored by rule `measures`)."""
-    return run_files(run, tests=run in PLAN.whole) + outputs("measures", run)
+def measured(run):
+    """A run of the readings or the size study: its trials scored on the declared measures."""
+    return run in {row["run"] for row in [*PLAN.readings, *PLAN.size_dose]}
+
+
+def built_runs(users=True):
+    """The runs the default target makes: the config's own, config `runs` (unless not `users`)
+    and the cue ablation (whole), the robot variants and confirmations tested in this build, the
+    readings' and the size study's runs, and with robustness the sweep's points; each once."""
+    runs = [
+        *(run for run in PLAN.whole if users or run not in config["runs"]),
+        *PLAN.robot_tested_runs,
+        *(row["run"] for row in PLAN.readings),
+        *(row["run"] for row in PLAN.size_dose),
+        *(PLAN.sweep if config["robustness"] else []),
+    ]
+    return list(dict.fromkeys(runs))
+
+
+def run_outputs(run):
+    """Every file the default target makes of a run, for each part it plays: its model and tests
+    (run_files; a measured run that is neither whole nor a sweep point is scored on the measures
+    only, not tested in silico), its measures, and its robot test."""
+    sweep_point = config["robustness"] and run in PLAN.sweep
+    files = run_files(run, tests=run in PLAN.whole or sweep_point or not measured(run))
+    if measured(run):
+        files += outputs("measures", run)
+    if run in PLAN.robot_tested_runs:
+        files += robot_files(run)
+    return files
 
 
 def job_records(files):

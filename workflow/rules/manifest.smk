@@ -1,19 +1,14 @@
 # The results manifest (src/icub_workflow/manifest.py): the SHA-256 of every result file of this
 # configuration's build, in `sha256sum` format. Included after DEFAULT_OUTPUTS (Snakefile).
-from collections import Counter
-
 from icub_workflow.manifest import result_files
 
 # this configuration's result files: the tables, arrays and summaries of the default target,
-# but a run of config `runs` (the user's own experiments, which the book does not show: adding
-# one reruns nothing of the main run's, the manifest and the book included)
-# (a file of a user's run that another part of the build also makes, as when a reading has the
-# same settings as the user's run and so is that run, is listed there twice, and kept)
-_USER_RUN_FILES = {f for run in PLAN.whole if run in config["runs"] for f in run_files(run)}
-_LISTED = Counter(DEFAULT_OUTPUTS)
-RESULT_FILES = result_files(
-    f for f in DEFAULT_OUTPUTS if f not in _USER_RUN_FILES or _LISTED[f] > 1
-)
+# but those of a run of config `runs` that plays no other part (the user's own experiments, which
+# the book does not show: adding one reruns nothing of the main run's, the manifest and the book
+# included). A user's run that is also, say, a reading (the same settings) keeps its files here.
+_USER_ONLY = set(built_runs()) - set(built_runs(users=False))
+_USER_RUN_FILES = {f for run in _USER_ONLY for f in run_outputs(run)}
+RESULT_FILES = result_files(f for f in DEFAULT_OUTPUTS if f not in _USER_RUN_FILES)
 
 
 rule manifest:

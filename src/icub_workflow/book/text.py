@@ -7,6 +7,7 @@ import math
 from dataclasses import dataclass
 
 from icub_affordance.findings import ALPHA
+from icub_affordance.measures import LABELS
 
 
 @dataclass(frozen=True)
@@ -89,11 +90,7 @@ SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "in
 
 # -- which reading reproduces the paper: phrases on the readings' tests (``pages._shown``) -----
 
-MEASURE_LABELS = {"rmse": "RMSE", "rmse_correct": "correct-trial RMSE",
-                  "wrong_grip": "wrong-grip rate", "commitment": "commitment",
-                  "rmse_per_grip_distance": "RMSE per grip distance",
-                  "rmse_per_grip_distance_null": "null control",
-                  "rmse_per_grip_distance_excess": "excess over null"}  # fmt: skip
+MEASURE_LABELS = LABELS  # declared with the measures (icub_affordance.measures)
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
 #: The words of ``readings.direction`` and ``readings.difference_verdict``, where they differ.
 WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller",
