@@ -133,6 +133,19 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["confirmation"].update(robustness_networks=8),
             ["robot.confirmation.robustness_networks", "8", "at least 12", "Fix"],
         ),
+        # a signature tested by what its condition cannot give, twice, or without its levels
+        (
+            lambda c: c["signatures"]["list"][0].update(test="equivalence", expected="same"),
+            ["signatures.list.0", "grows_with_rt", "'slope'", "Fix"],
+        ),
+        (
+            lambda c: c["signatures"]["list"].append(dict(c["signatures"]["list"][0])),
+            ["signatures.list.4", "listed twice", "Fix"],
+        ),
+        (
+            lambda c: c["signatures"]["list"][1].pop("levels"),
+            ["signatures.list.1", "extinction", "needs `levels`", "Fix"],
+        ),
     ],
 )
 def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change, words):

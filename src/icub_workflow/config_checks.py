@@ -173,11 +173,42 @@ def check_schema(config: Mapping[str, Any], schema: Mapping[str, Any], prefix: s
 # ---- rules between keys -------------------------------------------------------------------------
 
 
+# Each signature's model condition, the test its verdict may come from and the directions that
+# test can expect (book: "The model against what people do"). Whether a condition has levels.
+SIGNATURE_TESTS: dict[str, tuple[str, tuple[str, ...], bool]] = {
+    "grows_with_rt": ("slope", ("positive", "negative"), False),
+    "extinction": ("slope", ("positive", "negative"), True),
+    "brief_exposure": ("equivalence", ("same",), True),
+    "advance_cueing": ("none", ("absent",), False),
+}
+
+
+def _signature_problems(entries: list[Mapping[str, Any]], key) -> Iterator[str]:
+    seen: set[str] = set()
+    for i, entry in enumerate(entries):
+        name, where = entry["signature"], key(f"signatures.list.{i}")
+        test, expected, has_levels = SIGNATURE_TESTS[name]
+        if name in seen:
+            yield f"{where}: the signature {name} is listed twice. Fix: keep one entry."
+        seen.add(name)
+        if entry["test"] != test or entry["expected"] not in expected:
+            yield (
+                f"{where}: {name} with test {entry['test']!r} expecting {entry['expected']!r}; "
+                f"its condition is tested by {test!r}, expecting one of {list(expected)}. Fix: "
+                "set test and expected so."
+            )
+        if has_levels != ("levels" in entry):
+            need = "needs `levels` (the steps it is seen)" if has_levels else "has no levels"
+            yield f"{where}: {name} {need}. Fix: {'add' if has_levels else 'remove'} them."
+
+
 def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
     """Every rule between keys that `config` breaks, one message each."""
 
     def key(name: str) -> str:
         return f"config key {prefix}{name}"
+
+    yield from _signature_problems(config["signatures"]["list"], key)
 
     network = config["network"]
     iterations, phase1 = network["iterations"], network["phase1_iterations"]
