@@ -11,6 +11,7 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 import yaml
@@ -97,7 +98,15 @@ def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.
         [{"seed_set": "confirmation", "share": held, "ci_low": ci[0], "ci_high": ci[1],
           "networks": 12, "trials": 48}]
     )  # fmt: skip
-    return anova, curve, readings, size_rows, variants, confirmation
+    signatures = pd.DataFrame(
+        [{"signature": "grows_with_rt", "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007,
+          "p_adjusted": 0.01, "verdict": "shown", "family": "signatures", "replications": 1,
+          "units": 12, "reason": ""},
+         {"signature": "advance_cueing", "estimate": np.nan, "ci_low": np.nan, "ci_high": np.nan,
+          "p_adjusted": np.nan, "verdict": "not testable here", "family": "signatures",
+          "replications": 0, "units": 0, "reason": "no input names a grip apart from an object"}]
+    )  # fmt: skip
+    return anova, curve, readings, size_rows, variants, confirmation, signatures
 
 
 def verdicts(*args, **kwargs) -> dict[str, str]:
@@ -118,6 +127,9 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_size_grips_verdict"] == "reproduced"
     assert base["score_robot_own_verdict"] == "falls short"
     assert base["score_robot_best_verdict"] == "shown"
+    # a signature's row shows the verdict its chapter's test gave (icub_affordance.signatures)
+    assert base["score_signature_grows_with_rt_verdict"] == "shown"
+    assert base["score_signature_advance_cueing_verdict"] == "not testable here"
     # flip each statistic: its verdict, and only its, follows
     assert verdicts(congruency_p=0.2)["score_congruency_all_verdict"] == "not shown"
     assert verdicts(size=0.026)["score_size_all_verdict"] == "reproduced"

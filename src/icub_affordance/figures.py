@@ -554,3 +554,59 @@ def dose_response(summary, replications, manipulation, path) -> None:
             ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
     save(fig, path)
+
+
+def signatures_figure(trials, quantiles: int, path) -> None:
+    """The human signatures on the model: (a) the delta plot, the congruency effect on
+    correct-trial RMSE per reaction-time bin, in view; (b) the effect against the steps the
+    object was seen, blanked or masked after them (9: in view); (c) the wrong-grip rates, errors
+    apart. Means over networks (over replications' means with several), standard errors."""
+    import pandas as pd
+
+    from .signatures import IN_VIEW, delta_bins, network_effects
+
+    def unit_means(table, by, column):
+        table = table.dropna(subset=[column])
+        if table["replication"].nunique() > 1:
+            table = table.groupby(["replication", by])[column].mean().reset_index()
+        g = table.groupby(by)[column]
+        return g.mean(), g.std(ddof=1) / np.sqrt(g.count())
+
+    fig, axes = plt.subplots(1, 3, figsize=(12.5, 3.6))
+    mean, sem = unit_means(delta_bins(trials, quantiles), "bin", "effect")
+    axes[0].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color="C0")
+    axes[0].set_xticks(range(1, quantiles + 1))
+    axes[0].set_xlabel("reaction-time bin (correct trials, fastest first)")
+    axes[0].set_ylabel("incongruent - congruent RMSE")
+    axes[0].set_title("(a) the effect over reaction time", fontsize=10)
+    effects = network_effects(trials)
+    view = effects[effects["condition"] == "in_view"]
+    for kind, colour, label in (
+        ("extinction", "C3", "blanked"),
+        ("brief_exposure", "C2", "masked"),
+    ):
+        curve = pd.concat([effects[effects["condition"] == kind], view], ignore_index=True)
+        mean, sem = unit_means(curve, "k", "effect")
+        axes[1].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color=colour,
+                         label=f"{label} after k steps")  # fmt: skip
+    axes[1].set_xticks(range(1, IN_VIEW + 1))
+    axes[1].set_xlabel("steps the object is seen (9: in view)")
+    axes[1].set_ylabel("incongruent - congruent RMSE")
+    axes[1].set_title("(b) the effect when the object goes", fontsize=10)
+    axes[1].legend(fontsize=8)
+    names = {"brief_exposure": "masked", "extinction": "blanked", "in_view": "in view"}
+    labels = [f"{names[c]}\nk={k}" for c, k in effects.groupby(["condition", "k"]).groups]
+    for column, colour, label in (("wrong_congruent", "C0", "congruent"),
+                                  ("wrong_incongruent", "C3", "incongruent")):  # fmt: skip
+        effects["cell"] = effects["condition"] + effects["k"].astype(str)
+        mean, sem = unit_means(effects, "cell", column)
+        axes[2].errorbar(range(len(mean)), mean, yerr=sem, marker="o", capsize=4, color=colour,
+                         linestyle="none", label=label)  # fmt: skip
+    axes[2].set_xticks(range(len(labels)), labels, fontsize=7)
+    axes[2].set_ylabel("wrong-grip rate")
+    axes[2].set_title("(c) errors, apart", fontsize=10)
+    axes[2].legend(fontsize=8)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    save(fig, path)

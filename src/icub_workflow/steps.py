@@ -145,3 +145,34 @@ def measure_networks(
     trials = pd.read_csv(trials_path, keep_default_na=False)  # as readers see it
     result = analyse_measures(trials, list(measures))
     write_text(json_path, json.dumps(result, indent=2, sort_keys=True) + "\n")
+
+
+def signature_tables(
+    replications: Sequence[Mapping], signatures: Mapping, outputs: Mapping[str, str]
+) -> None:
+    """The human signatures' conditions on each replication's networks (``icub_affordance.
+    signatures``): every noisy trial (``outputs["trials"]``), each signature's tests and verdict
+    (``summary``), and the errors apart (``errors``). A replication: its seed, its model inputs
+    (maps, soms, demos), grip_distance, network settings and weights files."""
+    from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
+    from icub_affordance.train import load_materials
+
+    config = SignatureConfig(**signatures)
+    rows = []
+    for rep in replications:
+        materials = load_materials(rep["maps"], rep["soms"], rep["demos"], rep["grip_distance"])
+        network = rep["network"]
+        for net, path in enumerate(rep["weights"]):
+            weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+            mapping = mapping_of(net, network["networks"])
+            cue, target = network["categorisation_cue"], network["target"]
+            trials = network_trials(
+                materials, weights, net, mapping, cue, target, config, rep["seed"]
+            )
+            rows += [{"replication": rep["seed"], **row} for row in trials]
+        print(f"replication at seed {rep['seed']}: {len(rep['weights'])} networks tested")
+    trials = pd.DataFrame(rows)
+    tables = {"trials": trials, "summary": summary(trials, config), "errors": errors(trials)}
+    for name, table in tables.items():
+        with atomic_path(outputs[name]) as tmp:
+            table.to_csv(tmp, index=False, float_format="%.6g")

@@ -51,6 +51,9 @@ BOOK_DATA = {
     "size_motor.csv": "data/size_dose/motor.csv",
     "size_geometry.csv": "data/size_dose/geometry.csv",
     "size_dose_response.png": "data/size_dose/dose_response.png",
+    "signatures_summary.csv": "data/signatures/summary.csv",
+    "signatures_errors.csv": "data/signatures/errors.csv",
+    "signatures.png": "data/signatures/signatures.png",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }
@@ -82,7 +85,7 @@ FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif
 FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if config["robustness"] else ())]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
-    "robot", "size_dose",
+    "robot", "size_dose", "signatures",
 ]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES

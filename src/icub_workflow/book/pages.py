@@ -24,7 +24,7 @@ from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import MAIN
 
 from . import text
-from .scorecard import scorecard
+from .scorecard import scorecard, signature_scale
 
 
 def _json(path) -> dict:
@@ -453,6 +453,57 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     return values, {"size_tests": tests.assign(verdict=tests.apply(text.verdict_word, axis=1))}
 
 
+#: A signature's name in the book's words.
+SIGNATURE_NAMES = {"grows_with_rt": "The effect grows with reaction time",
+                   "extinction": "The effect fades after the object disappears",
+                   "brief_exposure": "A brief masked glimpse gives the same effect",
+                   "advance_cueing": "No effect when the response is cued in advance"}  # fmt: skip
+
+
+def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """The chapter "The model against what people do": each signature's verdict (a Claim on its
+    estimate and Holm p), the errors apart, and the table of one row per signature."""
+    summary = pd.read_csv(inputs["signatures_summary.csv"])
+    summary = summary.fillna({"reason": "", "verdict": "", "level": ""})
+    errors = pd.read_csv(inputs["signatures_errors.csv"])
+    declared = {e["signature"]: e for e in config["signatures"]["list"]}
+    verdicts = summary[summary["family"] == "signatures"]
+    values: dict = {key: config["signatures"][key] for key in ("trials", "visual_noise",
+                                                                "quantiles", "margin")}  # fmt: skip
+    rows = []
+    for _, row in verdicts.iterrows():
+        name = row["signature"]
+        for stat in ("estimate", "ci_low", "ci_high", "p", "p_adjusted"):
+            values[f"{name}_{stat}"] = float(row[stat])
+        rests = (f"signatures.{name}_estimate", f"signatures.{name}_p_adjusted")
+        values[f"{name}_verdict"] = text.Claim(row["verdict"], rests)
+        values[f"{name}_scale"] = signature_scale(row)
+        est = (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; "
+               f"Holm p {row['p_adjusted']:.2g}") if np.isfinite(row["estimate"]) else (
+            row["reason"] or "–")  # fmt: skip
+        rows.append({"signature": SIGNATURE_NAMES[name],
+                     "people": f"{declared[name]['finding']} ({declared[name]['citation']})",
+                     "model condition": row["condition"], "model result": est,
+                     "verdict": row["verdict"], "measured at": signature_scale(row)})  # fmt: skip
+    view = errors[errors["condition"] == "in_view"].iloc[0]
+    values |= {"wrong_congruent": float(view["wrong_congruent"]),
+               "wrong_incongruent": float(view["wrong_incongruent"]),
+               "wrong_p_adjusted": float(view["p_adjusted"])}  # fmt: skip
+    depends = view["p_adjusted"] < science.ALPHA
+    values["errors_verdict"] = text.Claim(
+        "depend on congruency" if depends else "are not shown to depend on congruency",
+        ("signatures.wrong_p_adjusted",),
+    )
+    counts = verdicts["verdict"].value_counts()
+    values["shown"] = text.Claim(
+        text.listing([SIGNATURE_NAMES[n].lower() for n in verdicts.loc[
+            verdicts["verdict"] == "shown", "signature"]], "none"),
+        tuple(f"signatures.{n}_p_adjusted" for n in verdicts["signature"]))  # fmt: skip
+    values["counts"] = ", ".join(f"{counts[w]} {w}" for w in (
+        "shown", "not shown", "opposite", "not testable here") if w in counts)  # fmt: skip
+    return values, {"signatures": pd.DataFrame(rows)}
+
+
 def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
                   scale: dict[str, dict[str, int]], sweep_jobs: Mapping[str, object] | None = None
                   ) -> tuple[dict, dict[str, pd.DataFrame]]:  # fmt: skip
@@ -465,12 +516,14 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     curve = science.curve_summary(np.array([c["rmse"] for c in curves]), config["network"][
         "phase1_iterations"], curves[0]["iteration"].to_numpy())  # fmt: skip
     read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
-        "readings_summary", "size_summary", "robot_variants", "robot_confirmation")}  # fmt: skip
+        "readings_summary", "size_summary", "robot_variants", "robot_confirmation",
+        "signatures_summary")}  # fmt: skip
     score_values, score_table = scorecard(anova, curve, *read.values())
     pages, tables = {}, {}
     for page, (values, shown) in {
         "beyond": beyond(inputs, config, ablation_cue), "readings": readings(inputs, config),
         "robot_test": robot_test(inputs, config), "size": size_study(inputs, config),
+        "signatures": signatures(inputs, config),
     }.items():  # fmt: skip
         pages[page], tables = values, tables | shown
     pages["robustness"], sweep = robustness(inputs, config, sweep_jobs)

@@ -39,7 +39,7 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
 
 
 def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFrame,
-              variants: pd.DataFrame, confirmation: pd.DataFrame
+              variants: pd.DataFrame, confirmation: pd.DataFrame, signatures: pd.DataFrame
               ) -> tuple[dict, pd.DataFrame]:  # fmt: skip
     """The scorecard's values (for ``findings.json``'s ``index``) and its table."""
     values: dict[str, object] = {}
@@ -106,4 +106,39 @@ def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFra
             "A larger network, chosen then confirmed on fresh seeds, holds the object",
             "not asked", f"{int(row['networks'])} fresh networks × "
             f"{int(row['trials'] // row['networks'])} grasping trials", "robot_test")  # fmt: skip
+    for _, row in signatures[signatures["family"] == "signatures"].iterrows():
+        prefix, name = f"score_signature_{row['signature']}", row["signature"]
+        said = {f"{prefix}_estimate": float(row["estimate"]),
+                f"{prefix}_p_holm": float(row["p_adjusted"]),
+                f"{prefix}_verdict": text.Claim(row["verdict"], (
+                    f"index.{prefix}_estimate", f"index.{prefix}_p_holm"))}  # fmt: skip
+        result = (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; Holm p "
+                  f"{row['p_adjusted']:.2g} (signatures)" if pd.notna(row["estimate"])
+                  else str(row["reason"]))  # fmt: skip
+        add(prefix, (said, result), SIGNATURE_CLAIMS[name], SIGNATURE_PEOPLE[name],
+            signature_scale(row), "signatures")  # fmt: skip
     return values, pd.DataFrame(rows)
+
+
+#: The scorecard's rows for the human signatures: the claim, and what people showed.
+SIGNATURE_CLAIMS = {
+    "grows_with_rt": "The congruency effect grows with reaction time (delta-plot slope)",
+    "extinction": "The effect fades when the object is blanked early",
+    "brief_exposure": "A one-step masked glimpse gives the in-view effect (equivalence)",
+    "advance_cueing": "No effect when the response is cued before the object",
+}
+SIGNATURE_PEOPLE = {
+    "grows_with_rt": "people: grows (Tucker & Ellis 2001)",
+    "extinction": "people: fades (Tucker & Ellis 2001)",
+    "brief_exposure": "people: the same (Tucker & Ellis 2004)",
+    "advance_cueing": "people: absent (Tucker & Ellis 2001)",
+}
+
+
+def signature_scale(row) -> str:
+    """Where a signature's verdict was made: networks of one replication, or replications."""
+    if int(row["replications"]) > 1:
+        return f"{int(row['units'])} replications of 12 networks (full scale)"
+    if not row["units"]:
+        return "not posed" if isinstance(row["reason"], str) and row["reason"] else "no data"
+    return f"{int(row['units'])} networks, one replication"

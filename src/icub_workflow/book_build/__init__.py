@@ -17,5 +17,6 @@ TABLES = (
     "robot_confirmation",
     "robot_cells",
     "size_tests",
+    "signatures",
 )
 FULL_SCALE_TABLES = ("sweep",)
