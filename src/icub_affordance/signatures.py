@@ -244,6 +244,7 @@ SUMMARY_COLUMNS = [
     "verdict",
     "replications",
     "units",
+    "of",
     "reason",
 ]
 
@@ -272,10 +273,14 @@ def _slopes(curves: pd.DataFrame, x: str, points: int) -> pd.DataFrame:
     return groups[[x, "effect"]].apply(one).rename("slope").reset_index()
 
 
-def _rt_rows(trials: pd.DataFrame, config: SignatureConfig) -> list[dict]:
-    """The effect growing with reaction time: the effect per RT bin, and its slope over bins."""
+def _rt_rows(trials: pd.DataFrame, effects: pd.DataFrame, config: SignatureConfig) -> list[dict]:
+    """The effect growing with reaction time: the in-view effect over all correct trials (the
+    effect whose shape the bins show), the effect per RT bin, and its slope over bins."""
     bins = delta_bins(trials, config.quantiles)
-    rows = [
+    view = effects[effects["condition"] == "in_view"]
+    rows = [_row("grows_with_rt", "in view, all correct trials", "all",
+                 over_units(view, "effect"), LEVELS_FAMILY)]  # fmt: skip
+    rows += [
         _row("grows_with_rt", "in view, RT bin", f"q{q}",
              over_units(bins[bins["bin"] == q], "effect"), LEVELS_FAMILY)
         for q in range(1, config.quantiles + 1)
@@ -344,13 +349,17 @@ def summary(trials: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
     for entry in config.list:
         name = entry["signature"]
         if name == "grows_with_rt":
-            rows += _rt_rows(trials, config)
+            rows += _rt_rows(trials, effects, config)
         elif name in ("extinction", "brief_exposure"):
             rows += _hidden_rows(effects, entry, config)
         else:  # advance_cueing: no condition the model can express
             row = _row(name, "required response before the object", "", {}, FAMILY)
             rows.append(row | {"reason": "no input names a grip apart from an object"})
-    return _with_verdicts(pd.DataFrame(rows), config)[SUMMARY_COLUMNS]
+    table = _with_verdicts(pd.DataFrame(rows), config)
+    # what a test's units are out of: the replications with several, else the networks
+    reps = trials["replication"].nunique()
+    table["of"] = np.where(table["units"] > 0, reps if reps > 1 else trials["network"].nunique(), 0)
+    return table[SUMMARY_COLUMNS]
 
 
 def errors(trials: pd.DataFrame) -> pd.DataFrame:

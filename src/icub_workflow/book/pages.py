@@ -24,7 +24,7 @@ from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import MAIN
 
 from . import text
-from .scorecard import scorecard, signature_scale
+from .scorecard import scorecard, signature_result, signature_scale
 
 
 def _json(path) -> dict:
@@ -478,13 +478,23 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         rests = (f"signatures.{name}_estimate", f"signatures.{name}_p_adjusted")
         values[f"{name}_verdict"] = text.Claim(row["verdict"], rests)
         values[f"{name}_scale"] = signature_scale(row)
-        est = (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; "
-               f"Holm p {row['p_adjusted']:.2g}") if np.isfinite(row["estimate"]) else (
-            row["reason"] or "–")  # fmt: skip
+        est = signature_result(row)
         rows.append({"signature": SIGNATURE_NAMES[name],
                      "people": f"{declared[name]['finding']} ({declared[name]['citation']})",
                      "model condition": row["condition"], "model result": est,
                      "verdict": row["verdict"], "measured at": signature_scale(row)})  # fmt: skip
+    overall = summary[(summary["signature"] == "grows_with_rt") & (summary["level"] == "all")]
+    for _, row in overall.iterrows():  # the in-view effect whose shape the signatures test
+        for stat in ("estimate", "ci_low", "ci_high", "p_adjusted"):
+            values[f"in_view_{stat}"] = float(row[stat])
+        found = row["p_adjusted"] < science.ALPHA
+        word = ("is shown (incongruent slower)" if row["estimate"] > 0 else "is reversed") if (
+            found) else "is not shown"  # fmt: skip
+        values["in_view_verdict"] = text.Claim(
+            word,
+            ("signatures.in_view_estimate", "signatures.in_view_p_adjusted"),
+        )
+        values["in_view_scale"] = signature_scale(row)
     view = errors[errors["condition"] == "in_view"].iloc[0]
     values |= {"wrong_congruent": float(view["wrong_congruent"]),
                "wrong_incongruent": float(view["wrong_incongruent"]),

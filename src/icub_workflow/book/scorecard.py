@@ -112,9 +112,7 @@ def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFra
                 f"{prefix}_p_holm": float(row["p_adjusted"]),
                 f"{prefix}_verdict": text.Claim(row["verdict"], (
                     f"index.{prefix}_estimate", f"index.{prefix}_p_holm"))}  # fmt: skip
-        result = (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; Holm p "
-                  f"{row['p_adjusted']:.2g} (signatures)" if pd.notna(row["estimate"])
-                  else str(row["reason"]))  # fmt: skip
+        result = signature_result(row)
         add(prefix, (said, result), SIGNATURE_CLAIMS[name], SIGNATURE_PEOPLE[name],
             signature_scale(row), "signatures")  # fmt: skip
     return values, pd.DataFrame(rows)
@@ -135,10 +133,20 @@ SIGNATURE_PEOPLE = {
 }
 
 
+def signature_result(row) -> str:
+    """A signature test's result cell: estimate, interval and Holm p (for an equivalence, the
+    TOST's), or why there is none."""
+    if pd.isna(row["estimate"]):
+        return str(row["reason"]) or "–"
+    test = "equivalence (TOST) " if "equivalence" in str(row["condition"]) else ""
+    return (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; {test}Holm p "
+            f"{row['p_adjusted']:.2g} (signatures)")  # fmt: skip
+
+
 def signature_scale(row) -> str:
     """Where a signature's verdict was made: networks of one replication, or replications."""
-    if int(row["replications"]) > 1:
-        return f"{int(row['units'])} replications of 12 networks (full scale)"
     if not row["units"]:
         return "not posed" if isinstance(row["reason"], str) and row["reason"] else "no data"
-    return f"{int(row['units'])} networks, one replication"
+    if int(row["replications"]) > 1:
+        return f"{int(row['units'])} of {int(row['of'])} replications (full scale)"
+    return f"{int(row['units'])} of {int(row['of'])} networks, one replication"
