@@ -99,10 +99,12 @@ def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.
           "networks": 12, "trials": 48}]
     )  # fmt: skip
     signatures = pd.DataFrame(
-        [{"signature": "grows_with_rt", "condition": "in view, effect over RT bins", "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007,
+        [{"signature": "grows_with_rt", "condition": "in view, effect over RT bins",
+          "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007,
           "p_adjusted": 0.01, "verdict": "shown", "family": "signatures", "replications": 1,
           "units": 12, "of": 12, "reason": ""},
-         {"signature": "advance_cueing", "condition": "not posed", "estimate": np.nan, "ci_low": np.nan, "ci_high": np.nan,
+         {"signature": "advance_cueing", "condition": "not posed",
+          "estimate": np.nan, "ci_low": np.nan, "ci_high": np.nan,
           "p_adjusted": np.nan, "verdict": "not testable here", "family": "signatures",
           "replications": 0, "units": 0, "of": 0,
           "reason": "no input names a grip apart from an object"}]
