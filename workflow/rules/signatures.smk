@@ -4,27 +4,6 @@
 # that the build makes (with robustness, every readings.seeds replication as well).
 
 
-def signature_replications():
-    """Each replication of the config's own reading (its cue timing and Goal response) that
-    this build makes: its run's seed, model inputs, settings and weights."""
-    cue = config["network"]["categorisation_cue"]
-    goal = config["soms"]["goal_response"]
-    rows = [r for r in PLAN.readings if r["cue"] == cue and r["goal_response"] == goal]
-    return [
-        {
-            "seed": PLAN.config(row["run"])["seed"],
-            **model_inputs({"folder": PLAN.folder(row["run"])}),
-            "grip_distance": PLAN.config(row["run"])["grip_distance"],
-            "network": settings(PLAN.config(row["run"])["network"]),
-            "weights": [
-                PLAN.path(row["run"], f"train/net{net}/weights.npz")
-                for net in PLAN.networks(row["run"])
-            ],
-        }
-        for row in rows
-    ]
-
-
 SIGNATURE_REPLICATIONS = signature_replications()
 
 
