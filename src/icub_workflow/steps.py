@@ -171,8 +171,9 @@ def signature_tables(
             )
             rows += [{"replication": rep["seed"], **row} for row in trials]
         print(f"replication at seed {rep['seed']}: {len(rep['weights'])} networks tested")
-    trials = pd.DataFrame(rows)
-    tables = {"trials": trials, "summary": summary(trials, config), "errors": errors(trials)}
-    for name, table in tables.items():
+    with atomic_path(outputs["trials"]) as tmp:
+        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.6g")
+    trials = pd.read_csv(outputs["trials"])  # as readers see it: a recomputation from it agrees
+    for name, table in {"summary": summary(trials, config), "errors": errors(trials)}.items():
         with atomic_path(outputs[name]) as tmp:
             table.to_csv(tmp, index=False, float_format="%.6g")
