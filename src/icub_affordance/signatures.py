@@ -34,6 +34,15 @@ IN_VIEW = 9
 #: The family of the signatures' verdict tests (one per chapter), and of the tests beside them.
 FAMILY, LEVELS_FAMILY, ERRORS_FAMILY = "signatures", "signatures: levels", "signatures: errors"
 VERDICTS = ("shown", "not shown", "opposite", "not testable here")
+#: Each signature this module has a condition for (config ``signatures.list``): the test its
+#: verdict comes from, the directions that test can expect, and whether it has levels (the
+#: steps the object is seen). The config's schema and checks read it from here.
+TESTS: dict[str, tuple[str, tuple[str, ...], bool]] = {
+    "grows_with_rt": ("slope", ("positive", "negative"), False),
+    "extinction": ("slope", ("positive", "negative"), True),
+    "brief_exposure": ("equivalence", ("same",), True),
+    "advance_cueing": ("none", ("absent",), False),
+}
 
 
 @dataclass(frozen=True)

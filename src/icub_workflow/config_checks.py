@@ -118,13 +118,17 @@ def _allowed(schema: Mapping[str, Any]) -> str:
 
 
 def load_schema(path: str | Path) -> dict[str, Any]:
-    """The config's JSON schema (workflow/schemas/config.schema.yaml), with the measures' names
-    filled in from where they are declared (``icub_affordance.measures.MEASURES``): a measure
-    added there is a valid ``readings.measures`` entry and needs an equivalence margin."""
+    """The config's JSON schema (workflow/schemas/config.schema.yaml), with the measures' and the
+    signatures' names filled in from where they are declared (``icub_affordance.measures.
+    MEASURES``, ``icub_affordance.signatures.TESTS``): a measure added there is a valid
+    ``readings.measures`` entry and needs an equivalence margin."""
     from icub_affordance.measures import MEASURES
+    from icub_affordance.signatures import TESTS
 
     schema = yaml.safe_load(Path(path).read_text())
     schema["$defs"]["measure"]["enum"] = list(MEASURES)
+    entry = schema["properties"]["signatures"]["properties"]["list"]["items"]["properties"]
+    entry["signature"]["enum"] = list(TESTS)
     readings = schema["properties"]["readings"]["properties"]
     readings["equivalence_margin"]["required"] = list(MEASURES)
     return schema
@@ -173,21 +177,13 @@ def check_schema(config: Mapping[str, Any], schema: Mapping[str, Any], prefix: s
 # ---- rules between keys -------------------------------------------------------------------------
 
 
-# Each signature's model condition, the test its verdict may come from and the directions that
-# test can expect (book: "The model against what people do"). Whether a condition has levels.
-SIGNATURE_TESTS: dict[str, tuple[str, tuple[str, ...], bool]] = {
-    "grows_with_rt": ("slope", ("positive", "negative"), False),
-    "extinction": ("slope", ("positive", "negative"), True),
-    "brief_exposure": ("equivalence", ("same",), True),
-    "advance_cueing": ("none", ("absent",), False),
-}
-
-
 def _signature_problems(entries: list[Mapping[str, Any]], key) -> Iterator[str]:
+    from icub_affordance.signatures import TESTS
+
     seen: set[str] = set()
     for i, entry in enumerate(entries):
         name, where = entry["signature"], key(f"signatures.list.{i}")
-        test, expected, has_levels = SIGNATURE_TESTS[name]
+        test, expected, has_levels = TESTS[name]
         if name in seen:
             yield f"{where}: the signature {name} is listed twice. Fix: keep one entry."
         seen.add(name)
