@@ -417,7 +417,13 @@ def holm_within_families(table: pd.DataFrame, family="family", p="p", p_holm="p_
 def family_tables():
     """The summary and differences of three replications of every reading, on the RMSE, the
     correct-trial RMSE, the wrong-grip rate and RMSE per grip distance with its null control and
-    its excess over it."""
+    its excess over it (fresh copies each call; the tables are computed once)."""
+    summ, diffs = _family_tables()
+    return summ.copy(), diffs.copy()
+
+
+@functools.cache
+def _family_tables():
     table = readings_table(seeds=(1, 2, 3))
     trials = {
         row["run"]: run_trials(0.02 + 0.01 * row["seed"], 0.005 * (row["cue"] == "all_steps"),

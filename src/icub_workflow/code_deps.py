@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import ast
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from functools import cache
 from pathlib import Path
 
@@ -22,6 +22,7 @@ class CodeGraph:
     def __init__(self, roots: Sequence[str | Path]) -> None:
         self.roots = tuple(Path(root) for root in roots)
 
+    @cache  # noqa: B019 (one graph per workflow, alive as long as it)
     def find(self, module: str) -> Path | None:
         """The file of a dotted module name under the roots (a package: its `__init__.py`)."""
         parts = module.split(".")
@@ -45,7 +46,7 @@ class CodeGraph:
         `module` is the source's own dotted name, for its relative imports (None: a script).
         """
         found: set[str] = set()
-        for node in ast.walk(ast.parse(source)):
+        for node in _statements(ast.parse(source).body):
             if isinstance(node, ast.Import):
                 names = [alias.name for alias in node.names]
             elif isinstance(node, ast.ImportFrom):
@@ -82,6 +83,17 @@ class CodeGraph:
                 seen.add(module)
                 todo |= self._direct(module) - seen
         return sorted({self.find(m) for m in seen})
+
+
+def _statements(nodes: Iterable[ast.AST]) -> Iterator[ast.AST]:
+    """Every statement in ``nodes`` and in the blocks nested in them (functions, classes, ``if``,
+    ``try``, ``with``, loops, ``match``): where an import can stand, without visiting the
+    expressions, which hold none and are most of a module's nodes (every Snakemake start reads
+    the project's modules)."""
+    for node in nodes:
+        yield node
+        for block in ("body", "orelse", "finalbody", "handlers", "cases"):
+            yield from _statements(getattr(node, block, ()))
 
 
 _CODE_CELL = re.compile(r"^```\{code-cell\}[^\n]*\n(.*?)^```", re.DOTALL | re.MULTILINE)
