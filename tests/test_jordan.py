@@ -72,7 +72,7 @@ def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
     np.testing.assert_array_equal(w0.W1, Weights.init(hidden, 0.5, np.random.default_rng(1)).W1)
 
 
-# Trains one network of the paper's size on the synthetic materials, and five together, and
+# Trains one network of the paper's size on the synthetic materials, and thirteen together, and
 # prints a digest of the weights and the learning curves; with "uncached", from kernels compiled
 # afresh without a cache.
 KERNEL_RUN = """
@@ -82,15 +82,18 @@ from icub_affordance.train import synthetic_materials
 from conftest import train_config
 import icub_affordance.jordan_kernel as kernel
 from icub_affordance.train import train_network, train_networks
-if sys.argv[1] == "uncached":  # the same options, less the cache
-    for name in ("train_schedule", "train_lanes"):
+if sys.argv[1] == "uncached":  # the same options, less the cache (the kernel the wrappers
+    # call first: they find it among the module's globals when they compile)
+    for name in ("train_schedule", "_train_lanes", "train_lanes4", "train_lanes8"):
         compiled = getattr(kernel, name)
         options = {k: v for k, v in compiled.targetoptions.items() if k != "nopython"}
         setattr(kernel, name, numba.njit(**options)(compiled.py_func))
+    kernel.LANE_KERNELS = {4: kernel.train_lanes4, 8: kernel.train_lanes8}
 m = synthetic_materials()
 trained = [train_network(m, train_config(), "B", seed=7)]
-trained += train_networks(m, train_config(iterations=600, phase1_iterations=300), ["A"] * 5,
-                          [1, 2, 3, 4, 5])
+# thirteen: eight in eight lanes, four in four, one alone
+trained += train_networks(m, train_config(iterations=600, phase1_iterations=300), ["A"] * 13,
+                          list(range(1, 14)))
 digest = hashlib.sha256()
 for weights, curve in trained:
     digest.update(curve["rmse"].tobytes())
@@ -295,15 +298,16 @@ def test_a_rate_per_iteration_is_what_the_torch_loop_does_with_that_rate():
 @pytest.mark.parametrize("hidden", [10, 40])
 @pytest.mark.parametrize("rate", ["constant", "anneal"])
 def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
-    """train_networks (a run's networks four at a time in a vector's lanes) gives every network
-    the bytes train_network gives it alone, weights and learning curve: both cue timings, the
-    paper's 10 hidden units and the robot variants' 40, a constant and a falling rate; six
-    networks, so the second group of four is filled with copies."""
+    """train_networks (a run's networks eight or four at a time in a vector's lanes) gives every
+    network the bytes train_network gives it alone, weights and learning curve: both cue
+    timings, the paper's 10 hidden units and the robot variants' 40, a constant and a falling
+    rate; six networks (eight lanes, two of them copies) and eleven (eight lanes, then four with
+    one copy)."""
     from icub_affordance.train import train_networks
 
     m = synthetic_materials()
-    mappings, seeds = ["A", "A", "A", "B", "B", "B"], [11, 12, 13, 14, 15, 16]
-    for cue in ("first_step", "all_steps"):
+    for cue, n in (("first_step", 6), ("all_steps", 6), ("first_step", 11)):
+        mappings, seeds = ["A"] * (n // 2) + ["B"] * (n - n // 2), list(range(11, 11 + n))
         config = train_config(
             hidden=hidden, iterations=240, phase1_iterations=120, categorisation_cue=cue,
             learning_rate_schedule=rate, curve_rows=0,
@@ -317,6 +321,18 @@ def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
             assert curve.keys() == alone_curve.keys()
             for key in curve:
                 assert curve[key].tobytes() == alone_curve[key].tobytes(), key
+
+
+def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_alone():
+    from icub_affordance.jordan import lane_groups
+
+    def widths(n):
+        return [(len(group), lanes) for group, lanes in lane_groups(n)]
+
+    assert widths(12) == [(8, 8), (4, 4)] and widths(13) == [(8, 8), (4, 4), (1, 1)]
+    assert widths(6) == [(6, 8)] and widths(5) == [(4, 4), (1, 1)] and widths(3) == [(3, 4)]
+    assert widths(1) == [(1, 1)] and widths(0) == []
+    assert [i for group, _ in lane_groups(21) for i in group] == list(range(21))
 
 
 def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alone():

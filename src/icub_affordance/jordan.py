@@ -202,10 +202,23 @@ def _run_ends(contexts: np.ndarray) -> np.ndarray:
     return run_ends
 
 
-#: How many networks :func:`train_together` trains side by side (one per lane of a 4-wide vector)
-LANES = 4
+def lane_groups(n: int) -> list[tuple[list[int], int]]:
+    """How :func:`train_together` trains networks 0..n-1: groups and the kernel's lanes for each
+    (1: alone). Eight at a time while six or more are left (eight lanes train eight networks in
+    about 1.3 times four's time, so even a group of six and two copies beats four and two
+    copies), then four (a group of two or three filled with copies), a last one alone (faster on
+    its own than beside three copies)."""
+    groups, start = [], 0
+    while start < n:
+        left = n - start
+        lanes = 8 if left >= 6 else 4 if left >= 2 else 1
+        groups.append((list(range(start, start + min(lanes, left))), lanes))
+        start += min(lanes, left)
+    return groups
 
-# A lane's arrays in ``jordan_kernel.train_lanes`` from a state's: (key, transposed)
+
+# A lane's arrays in the lanes kernels (``jordan_kernel.train_lanes4``...) from a state's:
+# (key, transposed)
 _LANE_ARRAYS = (
     ("W1pT", True), ("b1", False), ("W2T", True), ("b2", False), ("U", False), ("moved", False),
     ("lr_p", False), ("d_hid", False), ("lr_h", False), ("d_out", False),
@@ -227,12 +240,12 @@ def train_together(
     iteration, as :meth:`TrainingState.train` would.
 
     Every state ends with the bits :meth:`TrainingState.train` gives it alone: the networks are
-    trained four at a time, network l of a group in lane l of 4-wide vectors, each lane doing
-    its network's operations in its network's order (``jordan_kernel.train_lanes``). A last
-    group of two or three is filled with copies of its first network, trained and dropped; a
-    last network alone is trained alone.
+    trained eight or four at a time (:func:`lane_groups`), network l of a group in lane l of 8-
+    or 4-wide vectors, each lane doing its network's operations in its network's order
+    (``jordan_kernel.train_lanes8``, ``train_lanes4``). A short group is filled with copies of
+    its first network, trained and dropped; a last network alone is trained alone.
     """
-    from .jordan_kernel import train_lanes
+    from .jordan_kernel import LANE_KERNELS
 
     n = len(states)
     if not (len(learning_rates) == len(grips) == len(schedules) == n):
@@ -264,14 +277,13 @@ def train_together(
         if rate.ndim and rate.shape != (length,):
             raise ValueError(f"{rate.shape} learning rates for a schedule of {length} iterations")
         rates.append(np.broadcast_to(rate, (length,)))
-    rmse = []
-    for start in range(0, n, LANES):
-        group = list(range(start, min(start + LANES, n)))
-        if len(group) == 1:  # alone, it trains faster on its own than with three copies
+    rmse = []  # in the networks' order: the groups are
+    for group, width in lane_groups(n):
+        if width == 1:
             i = group[0]
             rmse.append(states[i].train(rates[i], contexts, demos, grips[i], schedules[i], targets))
             continue
-        lanes = group + [group[0]] * (LANES - len(group))  # a short group: copies of its first
+        lanes = group + [group[0]] * (width - len(group))  # a short group: copies of its first
 
         def stacked(arrays, lanes=lanes):
             return np.ascontiguousarray(np.stack([arrays[i] for i in lanes], axis=-1))
@@ -280,8 +292,8 @@ def train_together(
             key: stacked([s.arrays[key].T if transposed else s.arrays[key] for s in states])
             for key, transposed in _LANE_ARRAYS
         }
-        out = np.empty((length, LANES))
-        train_lanes(
+        out = np.empty((length, width))
+        LANE_KERNELS[width](
             a["W1pT"], a["b1"], a["W2T"], a["b2"], a["U"], a["moved"], first["gram"],
             a["lr_p"], a["d_hid"], a["lr_h"], a["d_out"], stacked(rates), context_ids, run_ends,
             demos, targets, stacked([np.asarray(g, dtype=np.int64) for g in grips]),

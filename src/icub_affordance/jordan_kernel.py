@@ -38,9 +38,10 @@ code, and a cold compile, a cache load and an uncached compile give the same bit
 checks). The kernel calls only this file's compiled functions and reads no global of another
 module (whose change the cache would not see): every size comes from the arrays.
 
-``train_lanes`` trains four networks of one run at once, network l in lane l of 4-wide vectors,
-each lane making its network's operations in its network's order, so that each ends with the
-bits it has when trained alone (``jordan.train_together``; the section at the end of this file).
+``train_lanes4`` and ``train_lanes8`` train four or eight networks of one run at once, network l
+in lane l of 4- or 8-wide vectors, each lane making its network's operations in its network's
+order, so that each ends with the bits it has when trained alone (``jordan.train_together``; the
+section at the end of this file).
 
 Kept apart from ``jordan`` so that only training pays numba's import (about 0.5 s).
 """
@@ -267,24 +268,28 @@ def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
                     W1cT[i, j] -= ci * moved[q, j]
 
 
-# --- Networks side by side: four networks in the four lanes of a vector ----------------------
+# --- Networks side by side: one network in each lane of a vector ----------------------------
 #
-# ``train_lanes`` trains four networks of one run at once (same shapes, same schedule length,
-# same contexts; their own weights, schedules, mappings and rates), network l in lane l of every
-# 4-wide vector: each array of the state has a last axis of 4, and every vector operation below
-# is one IEEE operation per lane, the very operation the per-network kernel makes on that
-# network's number. The order of every sum (over the inputs, the hidden units, the outputs, a
-# sequence's squared errors) is that of ``train_schedule``; no fused multiply-add, no
-# reassociation. So each lane ends with the bits its network has when trained alone (a test
-# checks, ``tests/test_jordan.py``).
+# ``train_lanes4`` and ``train_lanes8`` train four or eight networks of one run at once (same
+# shapes, same schedule length, same contexts; their own weights, schedules, mappings and rates),
+# network l in lane l of every vector: each array of the state has a last axis of 4 or 8, and
+# every vector operation below is one IEEE operation per lane, the very operation the
+# per-network kernel makes on that network's number. The order of every sum (over the inputs,
+# the hidden units, the outputs, a sequence's squared errors) is that of ``train_schedule``; no
+# fused multiply-add, no reassociation. So each lane ends with the bits its network has when
+# trained alone, whatever the width (a test checks, ``tests/test_jordan.py``).
 #
-# The vectors are explicit (the intrinsics below emit LLVM's <4 x double> loads, stores and
-# arithmetic) rather than left to the compiler, which does not vectorise a loop of 4: numba's
-# loop vectoriser wants longer loops, and its SLP vectoriser is off.
+# The vectors are explicit (the intrinsics below emit LLVM's <4 x double> or <8 x double>
+# loads, stores and arithmetic) rather than left to the compiler, which does not vectorise a
+# loop of 4: numba's loop vectoriser wants longer loops, and its SLP vectoriser is off. The
+# width is a compile-time constant of ``_train_lanes`` (a literal argument, one compiled kernel
+# per width). A step is mostly chains of dependent operations (the sigmoid's polynomial, the
+# sums), so eight lanes, two vectors' work in flight where the CPU has 256-bit registers, train
+# eight networks in about 1.3 times the time of four (``benchmarks/train_speed.py``).
 #
 # What differs from ``train_schedule`` is only where numbers live, never what is computed:
-# - W2 is kept once, as (16, hidden, 4): the per-network kernel's second, transposed copy (kept
-#   for contiguous sums) holds the same bits, and here every sum runs over lanes anyway.
+# - W2 is kept once, as (16, hidden, lanes): the per-network kernel's second, transposed copy
+#   (kept for contiguous sums) holds the same bits, and here every sum runs over lanes anyway.
 # - Each network's runs of equal contexts are its own (a categorisation trial with the cue at
 #   the first step has two runs, a grasping trial one), so the lanes do not start and end runs
 #   together: the current context's part of the hidden input is held per lane in ``cur`` (the
@@ -293,23 +298,28 @@ def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
 #   point of that network's arithmetic as alone). The step's arithmetic itself is the same in
 #   every lane whatever its run.
 
-_VEC = ir.VectorType(ir.DoubleType(), 4)
-
 
 class _Lanes(types.Type):
-    """Four float64, one per network: LLVM's <4 x double>."""
+    """``width`` float64, one per network: LLVM's <width x double>."""
 
-    def __init__(self):
-        super().__init__(name="Lanes4")
+    def __init__(self, width: int):
+        self.width = width
+        super().__init__(name=f"Lanes{width}")
 
 
-_lanes = _Lanes()
+def _vec(width: int) -> ir.VectorType:
+    return ir.VectorType(ir.DoubleType(), width)
+
+
+def _width(value) -> int:
+    """A literal integer argument's value (the lanes' count the kernel was compiled for)."""
+    return value.literal_value
 
 
 @register_model(_Lanes)
 class _LanesModel(models.PrimitiveModel):
     def __init__(self, dmm, fe_type):
-        super().__init__(dmm, fe_type, _VEC)
+        super().__init__(dmm, fe_type, _vec(fe_type.width))
 
 
 def _element(context, builder, array_type, array, index_type, index):
@@ -319,9 +329,10 @@ def _element(context, builder, array_type, array, index_type, index):
     return builder.gep(data, [index], inbounds=True)
 
 
-def _vector_at(context, builder, sig, args, k):
-    pointer = _element(context, builder, sig.args[k], args[k], sig.args[-1], args[-1])
-    return builder.bitcast(pointer, _VEC.as_pointer())
+def _vector_at(context, builder, sig, args, k, index, width):
+    """``width`` lanes from element ``args[index]`` of the array ``args[k]``."""
+    pointer = _element(context, builder, sig.args[k], args[k], sig.args[index], args[index])
+    return builder.bitcast(pointer, _vec(width).as_pointer())
 
 
 def _float_array(array) -> bool:
@@ -329,23 +340,25 @@ def _float_array(array) -> bool:
 
 
 @intrinsic
-def _load(typingctx, array, index):
-    """The four lanes at ``array.flat[index:index + 4]``."""
-    if _float_array(array):
+def _load(typingctx, array, index, width):
+    """The lanes at ``array.flat[index:index + width]``."""
+    if _float_array(array) and isinstance(width, types.IntegerLiteral):
+        n = _width(width)
 
         def codegen(context, builder, sig, args):
-            return builder.load(_vector_at(context, builder, sig, args, 0), align=8)
+            return builder.load(_vector_at(context, builder, sig, args, 0, 1, n), align=8)
 
-        return _lanes(array, index), codegen
+        return _Lanes(n)(array, index, width), codegen
 
 
 @intrinsic
 def _store(typingctx, array, value, index):
     """``array.flat[index:index + 4] = value``."""
-    if _float_array(array) and value == _lanes:
+    if _float_array(array) and isinstance(value, _Lanes):
+        n = value.width
 
         def codegen(context, builder, sig, args):
-            builder.store(args[1], _vector_at(context, builder, sig, args, 0), align=8)
+            builder.store(args[1], _vector_at(context, builder, sig, args, 0, 2, n), align=8)
             return context.get_dummy_value()
 
         return types.none(array, value, index), codegen
@@ -378,58 +391,65 @@ def _put(typingctx, array, index, value):
 
 
 @intrinsic
-def _gather(typingctx, array, i0, i1, i2, i3):
-    """The lanes ``array.flat[i0]``, ..., ``array.flat[i3]``."""
-    if _float_array(array):
+def _gather_at(typingctx, array, idx, off, width):
+    """The lanes ``array.flat[idx[l] + off]``, l < width (``idx`` a C-contiguous int64 array)."""
+    indices = isinstance(idx, types.Array) and idx.dtype == types.int64 and idx.layout == "C"
+    if _float_array(array) and indices and isinstance(width, types.IntegerLiteral):
+        n = _width(width)
 
         def codegen(context, builder, sig, args):
-            value = ir.Constant(_VEC, ir.Undefined)
-            for lane in range(4):
-                pointer = _element(context, builder, sig.args[0], args[0], sig.args[1 + lane],
-                                   args[1 + lane])  # fmt: skip
+            value = ir.Constant(_vec(n), ir.Undefined)
+            idx_data = context.make_array(sig.args[1])(context, builder, args[1]).data
+            off = context.cast(builder, args[2], sig.args[2], types.intp)
+            for lane in range(n):
+                k = builder.load(builder.gep(idx_data, [ir.IntType(64)(lane)], inbounds=True))
+                at = builder.add(k, off)
+                pointer = _element(context, builder, sig.args[0], args[0], types.intp, at)
                 value = builder.insert_element(value, builder.load(pointer), ir.IntType(32)(lane))
             return value
 
-        return _lanes(array, i0, i1, i2, i3), codegen
+        return _Lanes(n)(array, idx, off, width), codegen
 
 
 @intrinsic
-def _splat(typingctx, x):
-    """The same number in the four lanes (a compile-time constant)."""
-    if isinstance(x, types.Literal | types.Float):
+def _splat(typingctx, x, width):
+    """The same number in every lane (a compile-time constant)."""
+    if isinstance(x, types.Literal | types.Float) and isinstance(width, types.IntegerLiteral):
+        n = _width(width)
 
         def codegen(context, builder, sig, args):
             value = context.cast(builder, args[0], sig.args[0], types.float64)
-            vector = ir.Constant(_VEC, ir.Undefined)
-            for lane in range(4):
+            vector = ir.Constant(_vec(n), ir.Undefined)
+            for lane in range(n):
                 vector = builder.insert_element(vector, value, ir.IntType(32)(lane))
             return vector
 
-        return _lanes(x), codegen
+        return _Lanes(n)(x, width), codegen
 
 
 @intrinsic
 def _select(typingctx, mask, a, b):
     """``a`` in the lanes where ``mask`` is not 0.0, ``b`` in the others: bits chosen, not
     computed."""
-    if mask == _lanes and a == _lanes and b == _lanes:
+    if isinstance(mask, _Lanes) and mask == a == b:
+        n = mask.width
 
         def codegen(context, builder, sig, args):
-            zero = ir.Constant(_VEC, [ir.DoubleType()(0.0)] * 4)
+            zero = ir.Constant(_vec(n), [ir.DoubleType()(0.0)] * n)
             return builder.select(builder.fcmp_ordered("!=", args[0], zero), args[1], args[2])
 
-        return _lanes(mask, a, b), codegen
+        return mask(mask, a, b), codegen
 
 
 def _arithmetic(operation):
     @intrinsic
     def apply(typingctx, a, b):
-        if a == _lanes and b == _lanes:
+        if isinstance(a, _Lanes) and a == b:
 
             def codegen(context, builder, sig, args):
                 return getattr(builder, operation)(args[0], args[1])
 
-            return _lanes(a, b), codegen
+            return a(a, b), codegen
 
     return apply
 
@@ -439,85 +459,84 @@ _sub = _arithmetic("fsub")
 _mul = _arithmetic("fmul")
 
 # The sigmoid 1 / (1 + exp(-z)) with ``_neg_exp``'s exponential, lane by lane: the same
-# operations in the same order on each number. Sixteen numbers at a time (four vectors whose
-# chains of dependent operations interleave, so the processor overlaps them).
+# operations in the same order on each number. Four vectors' numbers at a time (their chains of
+# dependent operations interleave, so the processor overlaps them).
 _TAYLOR = (
     1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
     1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0,
 )  # fmt: skip
 
 
-def _sigmoid_of(width: int):
-    vector = ir.VectorType(ir.DoubleType(), width)
-    integers = ir.VectorType(ir.IntType(64), width)
+@intrinsic
+def _sigmoid(typingctx, z, index, lanes, blocks):
+    """``z.flat[index:index + lanes * blocks] = 1 / (1 + exp(-z))`` (``_neg_exp``'s exp): the
+    numbers of ``blocks`` vectors of ``lanes`` at once (both literal integers)."""
+    literal = isinstance(lanes, types.IntegerLiteral) and isinstance(blocks, types.IntegerLiteral)
+    if _float_array(z) and literal:
+        width = _width(lanes) * _width(blocks)
+        vector = ir.VectorType(ir.DoubleType(), width)
+        integers = ir.VectorType(ir.IntType(64), width)
 
-    def constant(x, of=vector):
-        return ir.Constant(of, [of.element(x)] * width)
+        def constant(x, of=vector):
+            return ir.Constant(of, [of.element(x)] * width)
 
-    @intrinsic
-    def sigmoid(typingctx, z, index):
-        """``z.flat[index:index + width] = 1 / (1 + exp(-z))`` (``_neg_exp``'s exp)."""
-        if _float_array(z):
+        def codegen(context, builder, sig, args):
+            pointer = builder.bitcast(
+                _element(context, builder, sig.args[0], args[0], sig.args[1], args[1]),
+                vector.as_pointer(),
+            )
+            x = builder.fsub(constant(-0.0), builder.load(pointer, align=8))
+            # max(x, -700.0) then min(x, 700.0), as numba computes them
+            x = builder.select(builder.fcmp_ordered(">", constant(-700.0), x),
+                               constant(-700.0), x)  # fmt: skip
+            x = builder.select(builder.fcmp_ordered("<", constant(700.0), x),
+                               constant(700.0), x)  # fmt: skip
+            name = f"llvm.floor.v{width}f64"
+            floor = builder.module.globals.get(name) or ir.Function(
+                builder.module, ir.FunctionType(vector, [vector]), name
+            )
+            k = builder.fadd(builder.fmul(x, constant(1.4426950408889634)), constant(0.5))
+            k = builder.call(floor, [k])
+            r = builder.fsub(
+                builder.fsub(x, builder.fmul(k, constant(0.6931471803691238))),
+                builder.fmul(k, constant(1.9082149292705877e-10)),
+            )
+            p = constant(1.0 / 6227020800.0)
+            for c in _TAYLOR:
+                p = builder.fadd(builder.fmul(p, r), constant(c))
+            # int64(k) for |k| <= 1011: through int32, one instruction instead of four
+            k = builder.sext(builder.fptosi(k, ir.VectorType(ir.IntType(32), width)), integers)
+            bits = builder.shl(builder.add(k, constant(1023, integers)),
+                               constant(52, integers))  # fmt: skip
+            e = builder.fmul(p, builder.bitcast(bits, vector))
+            builder.store(builder.fdiv(constant(1.0), builder.fadd(constant(1.0), e)),
+                          pointer, align=8)  # fmt: skip
+            return context.get_dummy_value()
 
-            def codegen(context, builder, sig, args):
-                pointer = builder.bitcast(
-                    _element(context, builder, sig.args[0], args[0], sig.args[1], args[1]),
-                    vector.as_pointer(),
-                )
-                x = builder.fsub(constant(-0.0), builder.load(pointer, align=8))
-                # max(x, -700.0) then min(x, 700.0), as numba computes them
-                x = builder.select(builder.fcmp_ordered(">", constant(-700.0), x),
-                                   constant(-700.0), x)  # fmt: skip
-                x = builder.select(builder.fcmp_ordered("<", constant(700.0), x),
-                                   constant(700.0), x)  # fmt: skip
-                name = f"llvm.floor.v{width}f64"
-                floor = builder.module.globals.get(name) or ir.Function(
-                    builder.module, ir.FunctionType(vector, [vector]), name
-                )
-                k = builder.fadd(builder.fmul(x, constant(1.4426950408889634)), constant(0.5))
-                k = builder.call(floor, [k])
-                r = builder.fsub(
-                    builder.fsub(x, builder.fmul(k, constant(0.6931471803691238))),
-                    builder.fmul(k, constant(1.9082149292705877e-10)),
-                )
-                p = constant(1.0 / 6227020800.0)
-                for c in _TAYLOR:
-                    p = builder.fadd(builder.fmul(p, r), constant(c))
-                # int64(k) for |k| <= 1011: through int32, one instruction instead of four
-                k = builder.sext(builder.fptosi(k, ir.VectorType(ir.IntType(32), width)), integers)
-                bits = builder.shl(builder.add(k, constant(1023, integers)),
-                                   constant(52, integers))  # fmt: skip
-                e = builder.fmul(p, builder.bitcast(bits, vector))
-                builder.store(builder.fdiv(constant(1.0), builder.fadd(constant(1.0), e)),
-                              pointer, align=8)  # fmt: skip
-                return context.get_dummy_value()
-
-            return types.none(z, index), codegen
-
-    return sigmoid
-
-
-_sigmoid_4 = _sigmoid_of(4)
-_sigmoid_16 = _sigmoid_of(16)
+        return types.none(z, index, lanes, blocks), codegen
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
-def train_lanes(
+def _train_lanes(
     W1p, b1, W2, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
-    demos, targets, grips, tasks, objects, sequences, rmse,
+    demos, targets, grips, tasks, objects, sequences, rmse, lanes,
 ):  # fmt: skip
-    """Train four networks side by side over their schedules, in place; each sequence's RMSE
-    (before its updates) to ``rmse`` (iterations, 4).
+    """Train ``lanes`` networks side by side over their schedules, in place; each sequence's
+    RMSE (before its updates) to ``rmse`` (iterations, lanes). ``lanes`` (4 or 8) must be a
+    literal: called through :func:`train_lanes4` or :func:`train_lanes8`.
 
-    The state of :func:`train_schedule` with a last axis of 4 (network l in lane l), its weights
-    laid out for sums over lanes: ``W1p`` (hidden, 16, 4) from the proprioceptive input (the
-    per-network ``W1pT`` transposed), ``b1`` (hidden, 4), ``W2`` (16, hidden, 4), ``b2`` (16, 4),
-    ``U`` and ``moved`` (contexts, hidden, 4), ``lr_p`` (16, 4), ``d_hid`` and ``lr_h`` (hidden,
-    4), ``d_out`` (16, 4); ``gram`` (contexts, contexts), the contexts' dot products, the same
-    for the four. The schedules: ``rates``, ``tasks``, ``objects``, ``sequences`` (iterations,
-    4); ``grips`` (objects, tasks, 4) each network's target grips; ``context_ids``,
-    ``run_ends``, ``demos``, ``targets`` shared, as in :func:`train_schedule`.
+    The state of :func:`train_schedule` with a last axis of ``lanes`` (network l in lane l), its
+    weights laid out for sums over lanes: ``W1p`` (hidden, 16, lanes) from the proprioceptive
+    input (the per-network ``W1pT`` transposed), ``b1`` (hidden, lanes), ``W2`` (16, hidden,
+    lanes), ``b2`` (16, lanes), ``U`` and ``moved`` (contexts, hidden, lanes), ``lr_p`` (16,
+    lanes), ``d_hid`` and ``lr_h`` (hidden, lanes), ``d_out`` (16, lanes); ``gram`` (contexts,
+    contexts), the contexts' dot products, the same for all. The schedules: ``rates``,
+    ``tasks``, ``objects``, ``sequences`` (iterations, lanes); ``grips`` (objects, tasks, lanes)
+    each network's target grips; ``context_ids``, ``run_ends``, ``demos``, ``targets`` shared,
+    as in :func:`train_schedule`.
     """
+    numba.literally(lanes)
+    L = lanes  # the lanes, a constant of each compiled kernel
     n_hid = W1p.shape[0]
     n_pro = W1p.shape[1]
     n_out = W2.shape[0]
@@ -527,8 +546,8 @@ def train_lanes(
     n_grips = demos.shape[1]
     n_seq = demos.shape[2]
     seq_size = demos.shape[3] * demos.shape[4]
-    one = _splat(1.0)
-    zero = _splat(0.0)
+    one = _splat(1.0, L)
+    zero = _splat(0.0, L)
     # flat views: every index below is computed, never wrapped or checked
     W1pf = W1p.reshape(W1p.size)
     W2f = W2.reshape(W2.size)
@@ -546,27 +565,28 @@ def train_lanes(
     demosf = demos.reshape(demos.size)
     targetsf = targets.reshape(targets.size)
     # this step's numbers, lane by lane
-    p = np.empty(n_pro * 4)
-    goal = np.empty(n_out * 4)
-    h = np.empty(n_hid * 4)
-    y = np.empty(n_out * 4)
-    back = np.empty(n_hid * 4)  # the hidden deltas' sums, then the runs' updates
-    cur = np.empty(n_hid * 4)  # each lane's current context's part of the hidden input
-    run_sum = np.empty(n_hid * 4)  # each lane's run's summed hidden deltas
-    sq = np.empty(4)
-    lr = np.empty(4)
-    lr_cc = np.empty(4)
-    run = np.empty(4, dtype=np.int64)  # each lane's current context
-    is_end = np.empty(4)  # 1.0 in the lanes whose run ends at this step
-    own = np.empty(4)  # 1.0 in the lanes whose run ends with this context
-    other = np.empty(4)  # 1.0 in the lanes whose ending run moves this context
-    run_end = np.empty(4, dtype=np.int64)
-    seq_at = np.empty(4, dtype=np.int64)
-    ctx_at = np.empty(4, dtype=np.int64)
-    w1 = n_pro * 4  # one hidden unit's row of W1p
-    w2 = n_hid * 4  # one output's row of W2
+    p = np.empty(n_pro * L)
+    goal = np.empty(n_out * L)
+    h = np.empty(n_hid * L)
+    y = np.empty(n_out * L)
+    back = np.empty(n_hid * L)  # the hidden deltas' sums, then the runs' updates
+    cur = np.empty(n_hid * L)  # each lane's current context's part of the hidden input
+    run_sum = np.empty(n_hid * L)  # each lane's run's summed hidden deltas
+    sq = np.empty(L)
+    lr = np.empty(L)
+    lr_cc = np.empty(L)
+    run = np.empty(L, dtype=np.int64)  # each lane's current context
+    is_end = np.empty(L)  # 1.0 in the lanes whose run ends at this step
+    own = np.empty(L)  # 1.0 in the lanes whose run ends with this context
+    other = np.empty(L)  # 1.0 in the lanes whose ending run moves this context
+    run_end = np.empty(L, dtype=np.int64)
+    seq_at = np.empty(L, dtype=np.int64)
+    ctx_at = np.empty(L, dtype=np.int64)
+    pos = np.empty(L, dtype=np.int64)
+    w1 = n_pro * L  # one hidden unit's row of W1p
+    w2 = n_hid * L  # one output's row of W2
     for it in range(tasks.shape[0]):
-        for lane in range(4):
+        for lane in range(L):
             lr[lane] = rates[it, lane]
             sq[lane] = 0.0
             run_end[lane] = 0
@@ -575,22 +595,16 @@ def train_lanes(
             grip = grips[o, k, lane]
             seq_at[lane] = ((o * n_grips + grip) * n_seq + sequences[it, lane]) * seq_size
             ctx_at[lane] = (o * n_tasks + k) * steps
-        lrv = _load(lr, 0)
+        lrv = _load(lr, 0, L)
         for s in range(steps):
             # the postures fed back and the next ones, gathered lane by lane
-            a0 = seq_at[0] + s * n_pro
-            a1 = seq_at[1] + s * n_pro
-            a2 = seq_at[2] + s * n_pro
-            a3 = seq_at[3] + s * n_pro
+            for lane in range(L):
+                pos[lane] = seq_at[lane] + s * n_pro
             for i in range(n_pro):
-                _store(p, _gather(demosf, a0 + i, a1 + i, a2 + i, a3 + i), i * 4)
-            a0 += n_pro
-            a1 += n_pro
-            a2 += n_pro
-            a3 += n_pro
+                _store(p, _gather_at(demosf, pos, i, L), i * L)
             for m in range(n_out):
-                _store(goal, _gather(targetsf, a0 + m, a1 + m, a2 + m, a3 + m), m * 4)
-            for lane in range(4):
+                _store(goal, _gather_at(targetsf, pos, n_pro + m, L), m * L)
+            for lane in range(L):
                 if s == run_end[lane]:  # the lane's run of equal contexts starts
                     at = ctx_at[lane] + s
                     r = _get(idsf, at)
@@ -598,143 +612,143 @@ def train_lanes(
                     run_end[lane] = _get(endsf, at)
                     lr_cc[lane] = lr[lane] * _get(gramf, r * n_unique + r)
                     for j in range(n_hid):
-                        _put(cur, j * 4 + lane, _get(Uf, (r * n_hid + j) * 4 + lane))
-                        _put(run_sum, j * 4 + lane, 0.0)
+                        _put(cur, j * L + lane, _get(Uf, (r * n_hid + j) * L + lane))
+                        _put(run_sum, j * L + lane, 0.0)
             # forward: the hidden units, four at a time (four sums in flight), W1p updated by
             # the last step first
             j = 0
             while j < n_hid:
-                a = j * 4
+                a = j * L
                 if j + 4 <= n_hid:
-                    d0 = _load(d_hidf, a)
-                    d1 = _load(d_hidf, a + 4)
-                    d2 = _load(d_hidf, a + 8)
-                    d3 = _load(d_hidf, a + 12)
-                    s0 = _add(_load(cur, a), _load(b1f, a))
-                    s1 = _add(_load(cur, a + 4), _load(b1f, a + 4))
-                    s2 = _add(_load(cur, a + 8), _load(b1f, a + 8))
-                    s3 = _add(_load(cur, a + 12), _load(b1f, a + 12))
+                    d0 = _load(d_hidf, a, L)
+                    d1 = _load(d_hidf, a + L, L)
+                    d2 = _load(d_hidf, a + 2 * L, L)
+                    d3 = _load(d_hidf, a + 3 * L, L)
+                    s0 = _add(_load(cur, a, L), _load(b1f, a, L))
+                    s1 = _add(_load(cur, a + L, L), _load(b1f, a + L, L))
+                    s2 = _add(_load(cur, a + 2 * L, L), _load(b1f, a + 2 * L, L))
+                    s3 = _add(_load(cur, a + 3 * L, L), _load(b1f, a + 3 * L, L))
                     for i in range(n_pro):
-                        lp = _load(lr_pf, i * 4)
-                        pi = _load(p, i * 4)
-                        b = j * w1 + i * 4
-                        w = _sub(_load(W1pf, b), _mul(lp, d0))
+                        lp = _load(lr_pf, i * L, L)
+                        pi = _load(p, i * L, L)
+                        b = j * w1 + i * L
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d0))
                         _store(W1pf, w, b)
                         s0 = _add(s0, _mul(w, pi))
                         b += w1
-                        w = _sub(_load(W1pf, b), _mul(lp, d1))
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d1))
                         _store(W1pf, w, b)
                         s1 = _add(s1, _mul(w, pi))
                         b += w1
-                        w = _sub(_load(W1pf, b), _mul(lp, d2))
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d2))
                         _store(W1pf, w, b)
                         s2 = _add(s2, _mul(w, pi))
                         b += w1
-                        w = _sub(_load(W1pf, b), _mul(lp, d3))
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d3))
                         _store(W1pf, w, b)
                         s3 = _add(s3, _mul(w, pi))
                     _store(h, s0, a)
-                    _store(h, s1, a + 4)
-                    _store(h, s2, a + 8)
-                    _store(h, s3, a + 12)
-                    _sigmoid_16(h, a)  # overlapping the next block's sums
+                    _store(h, s1, a + L)
+                    _store(h, s2, a + 2 * L)
+                    _store(h, s3, a + 3 * L)
+                    _sigmoid(h, a, L, 4)  # overlapping the next block's sums
                     j += 4
                 elif j + 2 <= n_hid:  # two at a time
-                    d0 = _load(d_hidf, a)
-                    d1 = _load(d_hidf, a + 4)
-                    s0 = _add(_load(cur, a), _load(b1f, a))
-                    s1 = _add(_load(cur, a + 4), _load(b1f, a + 4))
+                    d0 = _load(d_hidf, a, L)
+                    d1 = _load(d_hidf, a + L, L)
+                    s0 = _add(_load(cur, a, L), _load(b1f, a, L))
+                    s1 = _add(_load(cur, a + L, L), _load(b1f, a + L, L))
                     for i in range(n_pro):
-                        lp = _load(lr_pf, i * 4)
-                        pi = _load(p, i * 4)
-                        b = j * w1 + i * 4
-                        w = _sub(_load(W1pf, b), _mul(lp, d0))
+                        lp = _load(lr_pf, i * L, L)
+                        pi = _load(p, i * L, L)
+                        b = j * w1 + i * L
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d0))
                         _store(W1pf, w, b)
                         s0 = _add(s0, _mul(w, pi))
                         b += w1
-                        w = _sub(_load(W1pf, b), _mul(lp, d1))
+                        w = _sub(_load(W1pf, b, L), _mul(lp, d1))
                         _store(W1pf, w, b)
                         s1 = _add(s1, _mul(w, pi))
                     _store(h, s0, a)
-                    _store(h, s1, a + 4)
-                    _sigmoid_4(h, a)
-                    _sigmoid_4(h, a + 4)
+                    _store(h, s1, a + L)
+                    _sigmoid(h, a, L, 1)
+                    _sigmoid(h, a + L, L, 1)
                     j += 2
                 else:
-                    d0 = _load(d_hidf, a)
-                    s0 = _add(_load(cur, a), _load(b1f, a))
+                    d0 = _load(d_hidf, a, L)
+                    s0 = _add(_load(cur, a, L), _load(b1f, a, L))
                     for i in range(n_pro):
-                        b = j * w1 + i * 4
-                        w = _sub(_load(W1pf, b), _mul(_load(lr_pf, i * 4), d0))
+                        b = j * w1 + i * L
+                        w = _sub(_load(W1pf, b, L), _mul(_load(lr_pf, i * L, L), d0))
                         _store(W1pf, w, b)
-                        s0 = _add(s0, _mul(w, _load(p, i * 4)))
+                        s0 = _add(s0, _mul(w, _load(p, i * L, L)))
                     _store(h, s0, a)
-                    _sigmoid_4(h, a)
+                    _sigmoid(h, a, L, 1)
                     j += 1
             # forward: the motor outputs, four at a time, W2 updated by the last step first
             m = 0
             while m < n_out:
-                a = m * 4
+                a = m * L
                 if m + 4 <= n_out:
-                    d0 = _load(d_outf, a)
-                    d1 = _load(d_outf, a + 4)
-                    d2 = _load(d_outf, a + 8)
-                    d3 = _load(d_outf, a + 12)
-                    s0 = _load(b2f, a)
-                    s1 = _load(b2f, a + 4)
-                    s2 = _load(b2f, a + 8)
-                    s3 = _load(b2f, a + 12)
+                    d0 = _load(d_outf, a, L)
+                    d1 = _load(d_outf, a + L, L)
+                    d2 = _load(d_outf, a + 2 * L, L)
+                    d3 = _load(d_outf, a + 3 * L, L)
+                    s0 = _load(b2f, a, L)
+                    s1 = _load(b2f, a + L, L)
+                    s2 = _load(b2f, a + 2 * L, L)
+                    s3 = _load(b2f, a + 3 * L, L)
                     for j in range(n_hid):
-                        lh = _load(lr_hf, j * 4)
-                        hj = _load(h, j * 4)
-                        b = m * w2 + j * 4
-                        w = _sub(_load(W2f, b), _mul(lh, d0))
+                        lh = _load(lr_hf, j * L, L)
+                        hj = _load(h, j * L, L)
+                        b = m * w2 + j * L
+                        w = _sub(_load(W2f, b, L), _mul(lh, d0))
                         _store(W2f, w, b)
                         s0 = _add(s0, _mul(w, hj))
                         b += w2
-                        w = _sub(_load(W2f, b), _mul(lh, d1))
+                        w = _sub(_load(W2f, b, L), _mul(lh, d1))
                         _store(W2f, w, b)
                         s1 = _add(s1, _mul(w, hj))
                         b += w2
-                        w = _sub(_load(W2f, b), _mul(lh, d2))
+                        w = _sub(_load(W2f, b, L), _mul(lh, d2))
                         _store(W2f, w, b)
                         s2 = _add(s2, _mul(w, hj))
                         b += w2
-                        w = _sub(_load(W2f, b), _mul(lh, d3))
+                        w = _sub(_load(W2f, b, L), _mul(lh, d3))
                         _store(W2f, w, b)
                         s3 = _add(s3, _mul(w, hj))
                     _store(y, s0, a)
-                    _store(y, s1, a + 4)
-                    _store(y, s2, a + 8)
-                    _store(y, s3, a + 12)
-                    _sigmoid_16(y, a)  # overlapping the next block's sums
+                    _store(y, s1, a + L)
+                    _store(y, s2, a + 2 * L)
+                    _store(y, s3, a + 3 * L)
+                    _sigmoid(y, a, L, 4)  # overlapping the next block's sums
                     m += 4
                 else:
-                    d0 = _load(d_outf, a)
-                    s0 = _load(b2f, a)
+                    d0 = _load(d_outf, a, L)
+                    s0 = _load(b2f, a, L)
                     for j in range(n_hid):
-                        b = m * w2 + j * 4
-                        w = _sub(_load(W2f, b), _mul(_load(lr_hf, j * 4), d0))
+                        b = m * w2 + j * L
+                        w = _sub(_load(W2f, b, L), _mul(_load(lr_hf, j * L, L), d0))
                         _store(W2f, w, b)
-                        s0 = _add(s0, _mul(w, _load(h, j * 4)))
+                        s0 = _add(s0, _mul(w, _load(h, j * L, L)))
                     _store(y, s0, a)
-                    _sigmoid_4(y, a)
+                    _sigmoid(y, a, L, 1)
                     m += 1
             # backward: deltas of 0.5 * squared error; the output biases' update
-            sqv = _load(sq, 0)
+            sqv = _load(sq, 0, L)
             for m in range(n_out):
-                a = m * 4
-                ym = _load(y, a)
-                err = _sub(ym, _load(goal, a))
+                a = m * L
+                ym = _load(y, a, L)
+                err = _sub(ym, _load(goal, a, L))
                 dm = _mul(_mul(err, ym), _sub(one, ym))
                 _store(d_outf, dm, a)  # the pending update of W2 from here on
-                _store(b2f, _sub(_load(b2f, a), _mul(lrv, dm)), a)
+                _store(b2f, _sub(_load(b2f, a, L), _mul(lrv, dm)), a)
                 sqv = _add(sqv, _mul(err, err))
             _store(sq, sqv, 0)
             # the hidden deltas (their sums over the outputs with W2 as this step updated it),
             # four at a time, and with each the hidden side of the SGD step: the biases and the
             # context's part now, the weights pending
-            lcc = _load(lr_cc, 0)
+            lcc = _load(lr_cc, 0, L)
             j = 0
             while j < n_hid:
                 if j + 4 <= n_hid:
@@ -743,79 +757,103 @@ def train_lanes(
                     s2 = zero
                     s3 = zero
                     for m in range(n_out):
-                        dm = _load(d_outf, m * 4)
-                        b = m * w2 + j * 4
-                        s0 = _add(s0, _mul(_load(W2f, b), dm))
-                        s1 = _add(s1, _mul(_load(W2f, b + 4), dm))
-                        s2 = _add(s2, _mul(_load(W2f, b + 8), dm))
-                        s3 = _add(s3, _mul(_load(W2f, b + 12), dm))
+                        dm = _load(d_outf, m * L, L)
+                        b = m * w2 + j * L
+                        s0 = _add(s0, _mul(_load(W2f, b, L), dm))
+                        s1 = _add(s1, _mul(_load(W2f, b + L, L), dm))
+                        s2 = _add(s2, _mul(_load(W2f, b + 2 * L, L), dm))
+                        s3 = _add(s3, _mul(_load(W2f, b + 3 * L, L), dm))
                     _store(back, s0, 0)
-                    _store(back, s1, 4)
-                    _store(back, s2, 8)
-                    _store(back, s3, 12)
+                    _store(back, s1, L)
+                    _store(back, s2, 2 * L)
+                    _store(back, s3, 3 * L)
                     n = 4
                 elif j + 2 <= n_hid:
                     s0 = zero
                     s1 = zero
                     for m in range(n_out):
-                        dm = _load(d_outf, m * 4)
-                        b = m * w2 + j * 4
-                        s0 = _add(s0, _mul(_load(W2f, b), dm))
-                        s1 = _add(s1, _mul(_load(W2f, b + 4), dm))
+                        dm = _load(d_outf, m * L, L)
+                        b = m * w2 + j * L
+                        s0 = _add(s0, _mul(_load(W2f, b, L), dm))
+                        s1 = _add(s1, _mul(_load(W2f, b + L, L), dm))
                     _store(back, s0, 0)
-                    _store(back, s1, 4)
+                    _store(back, s1, L)
                     n = 2
                 else:
                     s0 = zero
                     for m in range(n_out):
-                        s0 = _add(s0, _mul(_load(W2f, m * w2 + j * 4), _load(d_outf, m * 4)))
+                        s0 = _add(s0, _mul(_load(W2f, m * w2 + j * L, L), _load(d_outf, m * L, L)))
                     _store(back, s0, 0)
                     n = 1
                 for k in range(n):
-                    a = (j + k) * 4
-                    hv = _load(h, a)
-                    dh = _mul(_mul(_load(back, k * 4), hv), _sub(one, hv))
+                    a = (j + k) * L
+                    hv = _load(h, a, L)
+                    dh = _mul(_mul(_load(back, k * L, L), hv), _sub(one, hv))
                     _store(d_hidf, dh, a)
                     _store(lr_hf, _mul(lrv, hv), a)
-                    _store(b1f, _sub(_load(b1f, a), _mul(lrv, dh)), a)
-                    _store(cur, _sub(_load(cur, a), _mul(lcc, dh)), a)
-                    _store(run_sum, _add(_load(run_sum, a), dh), a)
+                    _store(b1f, _sub(_load(b1f, a, L), _mul(lrv, dh)), a)
+                    _store(cur, _sub(_load(cur, a, L), _mul(lcc, dh)), a)
+                    _store(run_sum, _add(_load(run_sum, a, L), dh), a)
                 j += n
             for i in range(n_pro):
-                _store(lr_pf, _mul(lrv, _load(p, i * 4)), i * 4)
+                _store(lr_pf, _mul(lrv, _load(p, i * L, L)), i * L)
             # the runs that end here: their update of W1c, seen by the other contexts (a lane
             # whose run goes on keeps its numbers: chosen, not recomputed)
             ending = False
-            for lane in range(4):
+            for lane in range(L):
                 ends = s + 1 == run_end[lane]
                 ending = ending or ends
                 is_end[lane] = 1.0 if ends else 0.0
             if ending:
-                r0 = run[0]
-                r1 = run[1]
-                r2 = run[2]
-                r3 = run[3]
                 for j in range(n_hid):
-                    a = j * 4
-                    _store(back, _mul(_load(run_sum, a), lrv), a)  # the run's lr * summed deltas
+                    a = j * L
+                    _store(back, _mul(_load(run_sum, a, L), lrv), a)  # the run's lr * summed deltas
                 for q in range(n_unique):
-                    for lane in range(4):
+                    for lane in range(L):
                         r = run[lane]
                         g = _get(gramf, q * n_unique + r)
                         own[lane] = is_end[lane] if q == r else 0.0
                         other[lane] = is_end[lane] if q != r and g != 0.0 else 0.0
-                    g = _gather(gramf, q * n_unique + r0, q * n_unique + r1, q * n_unique + r2,
-                                q * n_unique + r3)  # fmt: skip
-                    is_own = _load(own, 0)
-                    is_other = _load(other, 0)
+                    g = _gather_at(gramf, run, q * n_unique, L)
+                    is_own = _load(own, 0, L)
+                    is_other = _load(other, 0, L)
                     for j in range(n_hid):
-                        a = j * 4
-                        at = (q * n_hid + j) * 4
-                        rs = _load(back, a)
-                        u = _load(Uf, at)
+                        a = j * L
+                        at = (q * n_hid + j) * L
+                        rs = _load(back, a, L)
+                        u = _load(Uf, at, L)
                         u = _select(is_other, _sub(u, _mul(g, rs)), u)
-                        _store(Uf, _select(is_own, _load(cur, a), u), at)
-                        mv = _load(movedf, at)
+                        _store(Uf, _select(is_own, _load(cur, a, L), u), at)
+                        mv = _load(movedf, at, L)
                         _store(movedf, _select(is_own, _add(mv, rs), mv), at)
-        for lane in range(4):
+        for lane in range(L):
             rmse[it, lane] = np.sqrt(sq[lane] / (steps * n_out))
+
+
+# One compiled kernel per width: each passes its width as a literal (a constant of the code).
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def train_lanes4(
+    W1p, b1, W2, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
+    demos, targets, grips, tasks, objects, sequences, rmse,
+):  # fmt: skip
+    """:func:`_train_lanes` for four networks (every array's last axis 4)."""
+    _train_lanes(
+        W1p, b1, W2, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
+        demos, targets, grips, tasks, objects, sequences, rmse, 4,
+    )  # fmt: skip
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
+def train_lanes8(
+    W1p, b1, W2, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
+    demos, targets, grips, tasks, objects, sequences, rmse,
+):  # fmt: skip
+    """:func:`_train_lanes` for eight networks (every array's last axis 8)."""
+    _train_lanes(
+        W1p, b1, W2, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
+        demos, targets, grips, tasks, objects, sequences, rmse, 8,
+    )  # fmt: skip
+
+
+#: The kernel for each width, by its number of lanes.
+LANE_KERNELS = {4: train_lanes4, 8: train_lanes8}
