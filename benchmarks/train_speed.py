@@ -7,7 +7,7 @@ project's trainer is a compiled loop (icub_affordance.jordan_kernel): its first 
 compiles it or loads it from numba's cache, shown on its own line; `single_s` is the best of
 three networks after that (each a full 12,000-iteration training, `train_network`), what every
 further network of a job costs. `batch12_s` is the best of three trainings of a run's 12
-networks of the paper's size together (`train_networks`: four at a time in a vector's lanes,
+networks of the paper's size together (`train_networks`: eight, then four, in a vector's lanes,
 each network's bits as trained alone), the config's settings and mappings.
 `wide_s` is one long, wide network of the robot test (40 hidden units, 768,000 iterations,
 the config's other settings) trained by the project's trainer: its CPU seconds; `wide12_s` the

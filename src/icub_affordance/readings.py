@@ -124,20 +124,25 @@ def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
     return with_excess(trials)
 
 
-def contrasts(df: pd.DataFrame, measure: str) -> dict[str, dict]:
+def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None) -> dict[str, dict]:
     """A measure's contrasts: ``stats.within_network_fit`` for a measure that a network can lack
     in a cell (``measures.MISSING_BY_DESIGN``: the per-network contrasts would drop that
-    network), the per-network contrasts otherwise."""
+    network), the per-network contrasts otherwise. ``means``: ``network_object_means(df,
+    measure)``, when the caller has it already."""
     if can_lack_cells(measure):
         return within_network_fit(df, measure)
-    return network_contrasts(df, measure)
+    return network_contrasts(df, measure, means)
 
 
-def defined_object_means(df: pd.DataFrame, measure: str) -> dict[str, dict[str, float]]:
+def defined_object_means(
+    df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None
+) -> dict[str, dict[str, float]]:
     """``stats.object_means`` over the networks with a defined value (means over the defined
-    trials): every object kept, its ``n_networks`` the networks defined there."""
-    out = object_means(df, measure)
-    per_net = network_object_means(df, measure).dropna(subset=[measure])
+    trials): every object kept, its ``n_networks`` the networks defined there. ``means``: as for
+    ``contrasts``."""
+    means = network_object_means(df, measure) if means is None else means
+    out = object_means(df, measure, means)
+    per_net = means.dropna(subset=[measure])
     counts = per_net.groupby(["mapping", "object"]).size()
     for key, entry in out.items():
         mapping, obj = key.split("_", 1)
@@ -154,14 +159,14 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
     out: dict[str, dict] = {}
     for mode in MODES:
         df = categorisation_trials(trials, mode)
-        out[mode] = {
-            measure: {
-                "contrasts": contrasts(df, measure),
+        out[mode] = {}
+        for measure in analysed(measures):
+            means = network_object_means(df, measure)  # each network's per object, once
+            out[mode][measure] = {
+                "contrasts": contrasts(df, measure, means),
                 "means": cell_means(df.dropna(subset=[measure]), measure),
-                "object_means": defined_object_means(df, measure),
+                "object_means": defined_object_means(df, measure, means),
             }
-            for measure in analysed(measures)
-        }
     return out
 
 

@@ -140,15 +140,27 @@ def coded(means: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def per_network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> pd.DataFrame:
+def network_cells(data: pd.DataFrame, depvar: str) -> pd.DataFrame:
+    """Each network's mean of ``depvar`` per coded congruency x size cell (a row per network, a
+    column per cell), from a coded table of per-object means (``coded``). Where each network
+    has one object per cell (the design), the values are laid out as they are: the mean of one
+    value is that value, so this is ``pivot_table``'s result without its grouping's cost."""
+    keys = ["network", "congruency", "size"]
+    if data.duplicated(keys).any():
+        return data.pivot_table(index="network", columns=keys[1:], values=depvar, aggfunc="mean")
+    return data.set_index(keys)[depvar].unstack(keys[1:])
+
+
+def per_network_contrasts(
+    df: pd.DataFrame, depvar: str = "rmse", means: pd.DataFrame | None = None
+) -> pd.DataFrame:
     """One row per network (index ``network``): its mapping (-0.5 A, +0.5 B), its mean over the
     four congruency x size cells, and each within-network contrast (``WITHIN``: incongruent -
     congruent, small - large, and the difference of the congruency differences small - large).
-    A network missing a cell (say, a robot measure undefined where nothing touched) is left out."""
-    data = coded(network_object_means(df, depvar))
-    cells = data.pivot_table(
-        index="network", columns=["congruency", "size"], values=depvar, aggfunc="mean"
-    )
+    A network missing a cell (say, a robot measure undefined where nothing touched) is left out.
+    ``means``: ``network_object_means(df, depvar)``, when the caller has it already."""
+    data = coded(network_object_means(df, depvar) if means is None else means)
+    cells = network_cells(data, depvar)
     full = [(c, s) for c in (-0.5, 0.5) for s in (-0.5, 0.5)]
     cells = cells.reindex(columns=pd.MultiIndex.from_tuples(full)).dropna()
     ci, cc = 0.5, -0.5  # incongruent, congruent
@@ -261,9 +273,7 @@ def simple_effects(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str
     Where congruency and size interact, these, not the main effects, say where a difference
     lies."""
     data = coded(network_object_means(df, depvar))
-    cells = data.pivot_table(
-        index="network", columns=["congruency", "size"], values=depvar, aggfunc="mean"
-    ).dropna()
+    cells = network_cells(data, depvar).dropna()
     mapping = data.groupby("network")["mapping"].first().reindex(cells.index).to_numpy()
     out = {}
     for name, (plus, minus) in SIMPLE.items():
@@ -272,7 +282,9 @@ def simple_effects(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str
     return out
 
 
-def network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
+def network_contrasts(
+    df: pd.DataFrame, depvar: str = "rmse", means: pd.DataFrame | None = None
+) -> dict[str, dict[str, float]]:
     """The analysis used for inference (book/notes.md, "Testing and statistics"): per term of
     ``TERMS``, the estimate (coded as ``CODING``), its standard error, t, degrees of freedom, 95%
     t-interval and p, from per-network contrasts. The network is the unit: each network's four
@@ -280,8 +292,8 @@ def network_contrasts(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[
     cells, tested over the networks with the mapping (between networks) as a covariate. For a
     balanced design the estimates equal a mixed model's; the tests, unlike a random-intercept
     model's Wald z, assume no common error across the three within contrasts and use t with
-    networks - 2 df."""
-    return contrast_tests(per_network_contrasts(df, depvar))
+    networks - 2 df. ``means``: as for ``per_network_contrasts``."""
+    return contrast_tests(per_network_contrasts(df, depvar, means))
 
 
 def difference_tests(
@@ -351,9 +363,12 @@ def holm(pvalues) -> np.ndarray:
     return out
 
 
-def object_means(df: pd.DataFrame, depvar: str = "rmse") -> dict[str, dict[str, float]]:
-    """Per object and mapping, the mean over networks of each network's mean (and its n)."""
-    per_net = network_object_means(df, depvar)
+def object_means(
+    df: pd.DataFrame, depvar: str = "rmse", means: pd.DataFrame | None = None
+) -> dict[str, dict[str, float]]:
+    """Per object and mapping, the mean over networks of each network's mean (and its n).
+    ``means``: ``network_object_means(df, depvar)``, when the caller has it already."""
+    per_net = network_object_means(df, depvar) if means is None else means
     out = {}
     for (mapping, obj), group in per_net.groupby(["mapping", "object"]):
         out[f"{mapping}_{obj}"] = {
