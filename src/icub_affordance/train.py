@@ -348,9 +348,9 @@ def train_networks(
     after: list[Phase1] | None = None,
 ) -> list[tuple[Weights, dict[str, np.ndarray]]]:
     """:func:`train_network` of several networks of one run (network i: ``mappings[i]``,
-    ``seeds[i]``, and ``after[i]`` its phase 1 when given), trained side by side, four at a
-    time in a vector's lanes (``jordan.train_together``): each network's weights and learning
-    curve are the bits :func:`train_network` gives it alone, in the order given."""
+    ``seeds[i]``, and ``after[i]`` its phase 1 when given), trained side by side, eight or
+    four at a time in a vector's lanes (``jordan.train_together``): each network's weights and
+    learning curve are the bits :func:`train_network` gives it alone, in the order given."""
     _check_together(mappings, seeds)
     trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]
     if after is None:
