@@ -179,7 +179,8 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
     shutil.copytree(REPO / "benchmarks", work / "benchmarks")
     done = dry_run_rules(work, "--rerun-triggers", "mtime")
     assert done == set(), f"the finished run is not up to date: {done}"
-    imports = imported_by_python({s: script_sources(s) for s in {*rule_scripts().values()}})
+    scripts = sorted({*rule_scripts().values()})
+    imports = imported_by_python({s: script_sources(s) for s in scripts})
     inputs = job_inputs(work)
     in_target = set(inputs)
     modules = sorted({m for files in imports.values() for m in files})

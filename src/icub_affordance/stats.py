@@ -142,13 +142,15 @@ def coded(means: pd.DataFrame) -> pd.DataFrame:
 
 def network_cells(data: pd.DataFrame, depvar: str) -> pd.DataFrame:
     """Each network's mean of ``depvar`` per coded congruency x size cell (a row per network, a
-    column per cell), from a coded table of per-object means (``coded``). Where each network
-    has one object per cell (the design), the values are laid out as they are: the mean of one
-    value is that value, so this is ``pivot_table``'s result without its grouping's cost."""
+    column per cell), from a coded table of per-object means (``coded``): ``pivot_table``'s
+    result. Where each network has one object per cell (the design), without its grouping's
+    cost: the mean of one value is that value, and the undefined values, all-undefined cells
+    and the order are handled as ``pivot_table`` handles them."""
     keys = ["network", "congruency", "size"]
     if data.duplicated(keys).any():
         return data.pivot_table(index="network", columns=keys[1:], values=depvar, aggfunc="mean")
-    return data.set_index(keys)[depvar].unstack(keys[1:])
+    cells = data.dropna(subset=[depvar]).set_index(keys)[depvar].unstack(keys[1:])
+    return cells.dropna(axis=1, how="all").sort_index(axis=1)
 
 
 def per_network_contrasts(
