@@ -133,6 +133,19 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["confirmation"].update(robustness_networks=8),
             ["robot.confirmation.robustness_networks", "8", "at least 12", "Fix"],
         ),
+        # the claims' confirmation on a seed another part of the build uses, or twice
+        (
+            lambda c: c["confirmation"].update(seeds=[101, 2009]),
+            ["confirmation.seeds", "[2009]", "seed", "Fix"],
+        ),
+        (
+            lambda c: c["confirmation"].update(robustness_seeds=[110, 111]),
+            ["confirmation.robustness_seeds", "repeats", "Fix"],
+        ),
+        (
+            lambda c: c["confirmation"].update(seeds=[11, 101]),
+            ["confirmation.seeds", "[11]", "size_dose.seeds", "Fix"],
+        ),
         # a signature tested by what its condition cannot give, twice, or without its levels
         (
             lambda c: c["signatures"]["list"][0].update(test="equivalence", expected="same"),

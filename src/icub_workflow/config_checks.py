@@ -205,6 +205,7 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
         return f"config key {prefix}{name}"
 
     yield from _signature_problems(config["signatures"]["list"], key)
+    yield from _claims_problems(config, key)
 
     network = config["network"]
     iterations, phase1 = network["iterations"], network["phase1_iterations"]
@@ -400,6 +401,32 @@ def check_config(config: Mapping[str, Any], prefix: str = "") -> None:
         raise ConfigError(problems[0])
     if problems:
         raise ConfigError(f"{len(problems)} problems:\n  - " + "\n  - ".join(problems))
+
+
+def _claims_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """The claims' replications must be fresh: no seed of theirs may be a seed another
+    part of the build uses (the config's, the readings' full scale, the size study's, the
+    sweep's), and the seeds of the default build and of the full scale must differ."""
+    declared = config["confirmation"]
+    ours = [*declared["seeds"], *declared["robustness_seeds"]]
+    if len(set(ours)) != len(ours):
+        yield (
+            f"{key('confirmation.robustness_seeds')}: {declared['robustness_seeds']} repeats a "
+            f"seed of confirmation.seeds ({declared['seeds']}). Fix: list seeds not in both."
+        )
+    others = {
+        "seed": [config["seed"]],
+        "readings.seeds": config["readings"]["seeds"],
+        "size_dose.seeds": config["size_dose"]["seeds"],
+        "sweep.seeds": config["sweep"]["seeds"],
+    }
+    for name, seeds in others.items():
+        shared = sorted(set(ours) & set(seeds))
+        if shared:
+            yield (
+                f"{key('confirmation.seeds')}: {shared} also seed {name}; a confirmation runs on "
+                f"replications no other part of the build uses. Fix: choose other seeds."
+            )
 
 
 # ---- the scene ----------------------------------------------------------------------------------
