@@ -65,29 +65,25 @@ def test_a_page_whose_first_block_is_prose_has_no_in_brief():
 # -- the scorecard, on outputs made here ----------------------------------------------------------
 
 
-def term(estimate, p, family="confirmatory"):
-    return {"estimate": estimate, "ci_low": estimate - 0.01, "ci_high": estimate + 0.01,
-            "p": p, "p_holm": p, "family": family, "df": 10, "t": 3.0}  # fmt: skip
+def claim_rows(congruency_p=0.001, size=-0.026) -> pd.DataFrame:
+    """The confirmatory family's summary (data/claims/summary.csv) for two of its tests."""
+    rows = []
+    for effect, estimate, p in (("congruency", 0.04, congruency_p), ("size", size, 0.01)):
+        rows.append({"cue": "first_step", "mode": "closed_loop", "measure": "rmse",
+                     "effect": effect, "replications": 10, "estimable": 10,
+                     "not_estimable": 0, "estimate": estimate, "ci_low": estimate - 0.01,
+                     "ci_high": estimate + 0.01, "p": p, "p_holm": p,
+                     "family": "confirmatory", "family_size": 2,
+                     "direction": "none" if p >= 0.05 else "paper" if estimate > 0 else
+                     "reversed"})  # fmt: skip
+    return pd.DataFrame(rows)
 
 
 def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.93, 0.99)):
-    anova = {
-        "closed_loop": {
-            "n_networks": 12,
-            "correct_rt": {"congruency": term(0.01, 0.2), "size": term(0.0, 1.0)},
-        },
-        "contrasts": {"closed_loop": {"congruency": term(0.04, congruency_p),
-                                      "size": term(size, 0.01)}},
-    }  # fmt: skip
-    curve = {"start": 0.22, "end": 0.047}
-    readings = pd.DataFrame(
-        [{"reading": r, "cue": c, "measure": "rmse", "effect": "congruency", "replications": 1,
-          "diff": 0.006, "ci_low": -0.003, "ci_high": 0.016, "p": 0.2, "p_holm": 1.0,
-          "family": "exploration: readings"}
-         for r, c in (("first_step+fixed", "first_step"), ("all_steps+fixed", "all_steps"))]
-    )  # fmt: skip
+    learning = pd.DataFrame({"seed": range(101, 111), "networks": 12, "start": 0.22,
+                             "end": np.linspace(0.045, 0.049, 10)})  # fmt: skip
     size_rows = pd.DataFrame(
-        [{"dose": d, "cue": "first_step", "measure": "rmse", "replications": 6, "diff": x,
+        [{"dose": d, "cue": "first_step", "measure": "rmse", "replications": 10, "diff": x,
           "ci_low": x - 0.005, "ci_high": x + 0.005, "p": 0.001, "p_holm": 0.001,
           "family": "size study: declared"} for d, x in (("0.0", dose0), ("equal_grips", 0.01))]
     )  # fmt: skip
@@ -101,15 +97,16 @@ def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.
     signatures = pd.DataFrame(
         [{"signature": "grows_with_rt", "condition": "in view, effect over RT bins",
           "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007,
-          "p_adjusted": 0.01, "verdict": "shown", "family": "signatures", "replications": 1,
-          "units": 12, "of": 12, "reason": ""},
+          "p_adjusted": 0.01, "verdict": "shown", "family": "signatures", "replications": 10,
+          "units": 10, "of": 10, "reason": ""},
          {"signature": "advance_cueing", "condition": "not posed",
           "estimate": np.nan, "ci_low": np.nan, "ci_high": np.nan,
           "p_adjusted": np.nan, "verdict": "not testable here", "family": "signatures",
           "replications": 0, "units": 0, "of": 0,
           "reason": "no input names a grip apart from an object"}]
     )  # fmt: skip
-    return anova, curve, readings, size_rows, variants, confirmation, signatures
+    claims = claim_rows(congruency_p, size)
+    return claims, learning, size_rows, variants, confirmation, signatures
 
 
 def verdicts(*args, **kwargs) -> dict[str, str]:
@@ -119,13 +116,15 @@ def verdicts(*args, **kwargs) -> dict[str, str]:
     return words
 
 
+CONGRUENCY = "score_claim_first_step_closed_loop_rmse_congruency_verdict"
+SIZE = "score_claim_first_step_closed_loop_rmse_size_verdict"
+
+
 def test_each_scorecard_verdict_follows_its_test():
     base = verdicts()
     assert base["score_learn_verdict"] == "reproduced"
-    assert base["score_congruency_all_verdict"] == "reproduced"
-    assert base["score_size_all_verdict"] == "reversed"
-    assert base["score_congruency_correct_verdict"] == "not shown"
-    assert base["score_reading_verdict"] == "not shown"
+    assert base[CONGRUENCY] == "confirmed"
+    assert base[SIZE] == "reversed"
     assert base["score_size_maps_verdict"] == "reversed"
     assert base["score_size_grips_verdict"] == "reproduced"
     assert base["score_robot_own_verdict"] == "falls short"
@@ -134,12 +133,24 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_signature_grows_with_rt_verdict"] == "shown"
     assert base["score_signature_advance_cueing_verdict"] == "not testable here"
     # flip each statistic: its verdict, and only its, follows
-    assert verdicts(congruency_p=0.2)["score_congruency_all_verdict"] == "not shown"
-    assert verdicts(size=0.026)["score_size_all_verdict"] == "reproduced"
+    assert verdicts(congruency_p=0.2)[CONGRUENCY] == "not shown"
+    assert verdicts(size=0.026)[SIZE] == "confirmed"
     assert verdicts(dose0=0.02)["score_size_maps_verdict"] == "reproduced"
     assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
     changed = verdicts(congruency_p=0.2)
-    assert {k for k in base if base[k] != changed[k]} == {"score_congruency_all_verdict"}
+    assert {k for k in base if base[k] != changed[k]} == {CONGRUENCY}
+
+
+def test_every_scorecard_row_about_the_model_rests_on_ten_replications_or_says_so():
+    _, table = scorecard.scorecard(*score_inputs())
+    model = table[~table["chapter"].isin(["robot_test"])]
+    for scale in model["measured at"]:
+        if scale == "not posed":  # a signature the model cannot express: nothing was measured
+            continue
+        found = [int(n) for n in re.findall(r"(\d+) (?:of \d+ )?replications", scale)]
+        assert found and max(found) >= 10, scale
+    claims = table[table["claim or question"].str.startswith(("Congruent", "Large"))]
+    assert claims["this build"].str.contains("confirmatory").all()
 
 
 def test_each_scorecard_verdict_rests_on_the_numbers_beside_it():

@@ -143,8 +143,8 @@ def test_the_default_and_the_test_config_pass():
             ["confirmation.robustness_seeds", "repeats", "Fix"],
         ),
         (
-            lambda c: c["confirmation"].update(seeds=[11, 101]),
-            ["confirmation.seeds", "[11]", "size_dose.seeds", "Fix"],
+            lambda c: c["confirmation"].update(seeds=[1, 101]),
+            ["confirmation.seeds", "[1]", "sweep.seeds", "Fix"],
         ),
         # a signature tested by what its condition cannot give, twice, or without its levels
         (

@@ -46,29 +46,24 @@ def test_the_ablation_is_the_other_cue_timing(plan, config):
     assert plan.whole == [MAIN, *config["runs"], plan.ablation]
 
 
-def test_a_reading_at_the_configs_settings_is_the_configs_own_run(plan, config):
+def test_each_reading_is_a_run_of_its_settings_at_each_confirmation_seed(plan, config):
+    """A reading's runs have its cue timing and Goal response at its seed; the readings at the
+    config's Goal response under the declared cues are the confirmation's replications, none of
+    them the config's own run (seed 2009 is not among the fresh seeds)."""
     rows = plan.readings
     cues, goals = config["readings"]["categorisation_cue"], config["readings"]["goal_response"]
-    assert len(rows) == len(cues) * len(goals)  # one replication each without robustness
+    seeds = config["confirmation"]["seeds"]
+    assert len(rows) == len(cues) * len(goals) * len(seeds)
     for row in rows:
         run = plan.config(row["run"])
         assert run["network"]["categorisation_cue"] == row["cue"]
         assert run["soms"]["goal_response"] == row["goal_response"]
-        assert run["seed"] == row["seed"] == config["seed"]
-    own = next(
-        r
-        for r in rows
-        if r["cue"] == config["network"]["categorisation_cue"]
-        and r["goal_response"] == config["soms"]["goal_response"]
-    )
-    assert own["run"] == MAIN
-    other_cue = next(
-        r
-        for r in rows
-        if r["cue"] != config["network"]["categorisation_cue"]
-        and r["goal_response"] == config["soms"]["goal_response"]
-    )
-    assert other_cue["run"] == plan.ablation
+        assert run["seed"] == row["seed"] and row["seed"] in seeds
+        assert row["run"] not in (MAIN, plan.ablation)
+    # the readings of one seed share its demonstrations
+    for seed in seeds:
+        demos = {plan.stage_run(r["run"], "demos") for r in rows if r["seed"] == seed}
+        assert len(demos) == 1
 
 
 def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equal(plan, config):
@@ -80,9 +75,12 @@ def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equa
     # a robot variant changes only the network: the config's demonstrations and maps
     variant = next(row["run"] for row in plan.robot_variants if row["run"] != MAIN)
     assert plan.stage_run(variant, "demos") == plan.stage_run(variant, "soms") == MAIN
-    # a reading with the other Goal response: the config's demonstrations, its own maps
-    grows = next(r["run"] for r in plan.readings if r["goal_response"] != "fixed")
-    assert plan.stage_run(grows, "demos") == MAIN and plan.makes(grows, "soms")
+    # a reading with the other Goal response: its seed's demonstrations, its own maps
+    grows = next(r for r in plan.readings if r["goal_response"] != "fixed")
+    fixed = next(r for r in plan.readings if r["goal_response"] == "fixed"
+                 and r["seed"] == grows["seed"] and r["cue"] == grows["cue"])  # fmt: skip
+    assert plan.stage_run(grows["run"], "demos") == plan.stage_run(fixed["run"], "demos")
+    assert plan.makes(grows["run"], "soms") and not plan.makes(grows["run"], "demos")
     # sweep points of one seed share theirs; of another seed, make their own
     points = list(plan.sweep)
     by_seed: dict[int, list[str]] = {}
@@ -134,11 +132,17 @@ def test_confirmations_train_fresh_networks_of_the_chosen_variant(plan, config):
     assert len(robust.networks(run)) == confirmation["robustness_networks"]
 
 
-def test_robustness_adds_a_replication_per_reading_seed(config):
-    plan = plan_runs(config | {"robustness": True})
-    seeds = [config["seed"], *config["readings"]["seeds"]]
+@pytest.mark.parametrize("robustness", [False, True])
+def test_every_reading_is_replicated_at_the_confirmations_seeds(config, robustness):
+    """The readings' replications are the confirmation's: every reading at each of its seeds
+    (the full scale's too), none at the config's own seed, each run its seed's."""
+    plan = plan_runs(config | {"robustness": robustness})
+    declared = config["confirmation"]
+    seeds = [*declared["seeds"], *(declared["robustness_seeds"] if robustness else [])]
     readings = {(r["reading"]) for r in plan.readings}
-    assert len(plan.readings) == len(readings) * len(dict.fromkeys(seeds))
+    assert len(plan.readings) == len(readings) * len(seeds) and len(seeds) >= 10
+    assert {r["seed"] for r in plan.readings} == set(seeds)
+    assert config["seed"] not in seeds
     for row in plan.readings:
         assert plan.config(row["run"])["seed"] == row["seed"]
 
@@ -152,7 +156,7 @@ def test_a_configured_run_is_planned_and_its_name_kept(config):
 
 def test_the_test_config_plans_few_runs():
     plan = plan_runs(load_test_config() | {"robustness": False})
-    assert len(plan.runs) < 20
+    assert len(plan.runs) < 25  # two replications of 4 readings and of 4 size runs, and the rest
     assert all(plan.networks(run) for run in plan.runs)
 
 
@@ -170,8 +174,9 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
     assert set(grouped) == expected
     for name, runs in groups.items():
         assert {f"seed{plan.config(run)['seed']}" for run in runs} == {name}
-    # the readings at the config's seed; the size study at its own seeds
-    seeds = {config["seed"], *config["size_dose"]["seeds"][: config["size_dose"]["replications"]]}
+    # the readings at the confirmation's seeds; the size study at its own seeds
+    study = config["size_dose"]
+    seeds = {*config["confirmation"]["seeds"], *study["seeds"][: study["replications"]]}
     assert set(groups) == {f"seed{seed}" for seed in seeds}
 
 
@@ -256,7 +261,7 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
     controls = study["removal"] + study["equal_grips"]
     per_replication = len(study["categorisation_cue"]) * (len(study["doses"]) + controls)
     assert plan.scale() == {
-        "reading_seeds": 1,
+        "reading_seeds": len(config["confirmation"]["seeds"]),
         "readings": len(readings["categorisation_cue"]) * len(readings["goal_response"]),
         "size_runs": per_replication * study["replications"],
         "size_replications": study["replications"],
@@ -265,7 +270,8 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
         "sweep": 0,
     }
     full = plan_runs(config | {"robustness": True}).scale()
-    assert full["reading_seeds"] == 1 + len(readings["seeds"])
+    declared = config["confirmation"]
+    assert full["reading_seeds"] == len(declared["seeds"]) + len(declared["robustness_seeds"])
     assert full["size_runs"] == per_replication * study["robustness_replications"]
     assert full["size_replications"] == study["robustness_replications"]
     assert full["fresh"] == config["robot"]["confirmation"]["robustness_networks"]

@@ -18,9 +18,10 @@ from icub_affordance.signatures import (
     LEVELS_FAMILY,
     SUMMARY_COLUMNS,
     SignatureConfig,
-    delta_bins,
+    bin_effects,
     network_trials,
     over_units,
+    replication_effects,
     summary,
     verdict,
     visual_inputs,
@@ -76,43 +77,118 @@ def test_trials_are_seeded_and_cover_every_condition_object_and_trial():
     assert len(one) == len(config.conditions()) * len(m.objects) * config.trials
 
 
-def synthetic_trials(slope_per_bin: float, networks: int = 12, seed: int = 0) -> pd.DataFrame:
-    """Correct in-view trials whose incongruent RMSEs exceed the congruent ones by an amount that
-    grows with the trial's rank (a delta plot of known slope), plus one all-wrong network."""
+#: Under mapping A the big ball and the small cube are categorised with their natural grip.
+CONGRUENT_A = {"big_ball": True, "small_ball": False, "big_cube": False, "small_cube": True}
+SIZES = {"big_ball": "large", "small_ball": "small", "big_cube": "large", "small_cube": "small"}
+
+
+def synthetic_trials(slope_per_bin: float, replications: int = 5, networks: int = 12,
+                     seed: int = 0, object_offset: float = 0.0) -> pd.DataFrame:  # fmt: skip
+    """Correct in-view trials whose incongruent RMSEs exceed the congruent ones of a network by
+    an amount that grows with the trial's rank (a delta plot of known slope); small objects'
+    RMSE higher by ``object_offset``."""
     rng = np.random.default_rng(seed)
     rows = []
-    for net in range(networks):
-        base = np.sort(rng.normal(0.1, 0.01, 20))
-        for i, value in enumerate(base):
-            q = i * 4 // 20  # its bin, 0-3
-            for congruent, extra in ((True, 0.0), (False, 0.005 + slope_per_bin * q)):
-                rows.append({"replication": 1, "network": net, "condition": "in_view",
-                             "k": IN_VIEW, "congruent": congruent, "correct": True,
-                             "rmse": value + extra + rng.normal(0, 1e-4)})  # fmt: skip
+    for rep in range(1, replications + 1):
+        for net in range(networks):
+            mapping = "A" if net < networks // 2 else "B"
+            speed = rng.normal(0.1, 0.01)
+            for obj, congruent_a in CONGRUENT_A.items():
+                congruent = congruent_a if mapping == "A" else not congruent_a
+                base = np.sort(rng.normal(speed, 0.01, 20))
+                for i, value in enumerate(base):
+                    q = i * 4 // 20  # its bin, 0-3
+                    extra = 0.0 if congruent else 0.005 + slope_per_bin * q
+                    extra += object_offset if SIZES[obj] == "small" else 0.0
+                    rows.append({"replication": rep, "network": net, "mapping": mapping,
+                                 "condition": "in_view", "k": IN_VIEW, "object": obj,
+                                 "size": SIZES[obj], "congruent": congruent, "trial": i,
+                                 "correct": True,
+                                 "rmse": value + extra + rng.normal(0, 1e-4)})  # fmt: skip
     return pd.DataFrame(rows)
+
+
+def by_hand_bin_effects(trials: pd.DataFrame) -> pd.DataFrame:
+    """Each replication's per-bin effect recomputed without the estimator: per network x
+    object, the correct trials' RMSEs in 4 bins of equal count; per network the mean of its two
+    incongruent objects minus its two congruent ones; the mean of the two mappings' means."""
+    rows = []
+    for (rep, net, _obj), g in trials.groupby(["replication", "network", "object"]):
+        values = np.sort(g["rmse"].to_numpy())
+        for q in range(4):
+            rows.append({"replication": rep, "network": net, "mapping": g["mapping"].iloc[0],
+                         "congruent": g["congruent"].iloc[0], "bin": q + 1,
+                         "v": values[q * 5 : (q + 1) * 5].mean()})  # fmt: skip
+    cells = pd.DataFrame(rows)
+    sign = np.where(cells["congruent"], -0.5, 0.5)
+    per_net = cells.assign(v=cells["v"] * sign).groupby(
+        ["replication", "bin", "mapping", "network"])["v"].sum()  # fmt: skip
+    return per_net.groupby(["replication", "bin", "mapping"]).mean().groupby(
+        ["replication", "bin"]).mean().rename("effect").reset_index()  # fmt: skip
 
 
 def test_the_delta_plot_slope_is_recomputed_independently():
     trials = synthetic_trials(0.002)
-    bins = delta_bins(trials, 4)
-    net0 = trials[trials["network"] == 0]
-    inc = np.sort(net0[~net0["congruent"]]["rmse"])
-    con = np.sort(net0[net0["congruent"]]["rmse"])
-    by_hand = [inc[i * 5 : (i + 1) * 5].mean() - con[i * 5 : (i + 1) * 5].mean() for i in range(4)]
-    assert np.allclose(bins[bins["network"] == 0]["effect"], by_hand)
-    slopes = [sps.linregress(range(1, 5), g["effect"]).slope for _, g in bins.groupby("network")]
-    test = over_units(pd.DataFrame({"replication": 1, "s": slopes}), "s")
+    bins = bin_effects(trials, 4)
+    full = bins[bins["dropped"] == -1].sort_values(["replication", "bin"])
+    by_hand = by_hand_bin_effects(trials).sort_values(["replication", "bin"])
+    assert np.allclose(full["effect"], by_hand["effect"])
+    slopes = [sps.linregress(range(1, 5), g["effect"]).slope
+              for _, g in by_hand.groupby("replication")]  # fmt: skip
+    config = declared()
+    table = summary(trials, SignatureConfig(**{**vars(config), "list": [config.list[0]]}))
+    row = table[table["level"] == "slope"].iloc[0]
     reference = sps.ttest_1samp(slopes, 0.0)
-    assert test["estimate"] == pytest.approx(np.mean(slopes))
-    assert test["p"] == pytest.approx(reference.pvalue) and test["df"] == len(slopes) - 1
+    assert row["estimate"] == pytest.approx(np.mean(slopes))
+    assert row["p"] == pytest.approx(reference.pvalue) and row["df"] == len(slopes) - 1
+    assert row["units"] == row["replications"] == 5
 
 
-def test_over_units_takes_the_replications_means_when_there_are_several():
-    values = pd.DataFrame({"replication": np.repeat([1, 2, 3], 4), "v": np.arange(12.0)})
+def test_objects_are_not_pooled_a_mixture_of_objects_makes_no_effect():
+    """Small objects slower, no congruency effect within any cell, and the incongruent correct
+    trials mostly small objects (most incongruent large-object trials wrong): the estimator
+    finds no effect where the pooled difference of means finds one."""
+    trials = synthetic_trials(0.0, object_offset=0.02)
+    trials.loc[~trials["congruent"], "rmse"] -= 0.005  # take the built-in effect away
+    # every trial of a network x object alike, so which of them are correct selects nothing
+    cell = ["replication", "network", "object"]
+    trials["rmse"] = trials.groupby(cell)["rmse"].transform("mean")
+    drop = (~trials["congruent"]) & (trials["size"] == "large") & (trials["trial"] >= 4)
+    trials.loc[drop, "correct"] = False
+    effects = replication_effects(trials)
+    full = effects[effects["dropped"] == -1]
+    assert np.abs(full["effect"]).max() < 1e-3
+    ok = trials[trials["correct"]]
+    pooled = ok[~ok["congruent"]]["rmse"].mean() - ok[ok["congruent"]]["rmse"].mean()
+    assert pooled > 0.005
+
+
+def test_over_units_takes_one_value_per_replication_and_counts_the_undefined():
+    values = pd.DataFrame({"replication": [1, 2, 3, 4], "v": [1.0, 2.0, np.nan, 4.0]})
     test = over_units(values, "v")
-    means = [1.5, 5.5, 9.5]
-    assert test["df"] == 2 and test["replications"] == 3
-    assert test["p"] == pytest.approx(sps.ttest_1samp(means, 0.0).pvalue)
+    assert test["df"] == 2 and test["replications"] == 4 and test["not_estimable"] == 1
+    assert test["p"] == pytest.approx(sps.ttest_1samp([1.0, 2.0, 4.0], 0.0).pvalue)
+    # per-network values (the error rates) count once per replication, by their mean
+    networks = pd.DataFrame({"replication": np.repeat([1, 2, 3], 4), "v": np.arange(12.0)})
+    test = over_units(networks, "v")
+    assert test["df"] == 2 and test["units"] == 3
+    assert test["p"] == pytest.approx(sps.ttest_1samp([1.5, 5.5, 9.5], 0.0).pvalue)
+
+
+def test_the_leave_one_network_out_range_brackets_the_estimate():
+    trials = synthetic_trials(0.002, replications=3)
+    config = declared()
+    table = summary(trials, SignatureConfig(**{**vars(config), "list": [config.list[0]]}))
+    view = table[table["level"] == "all"].iloc[0]
+    assert view["lono_low"] <= view["estimate"] <= view["lono_high"]
+    assert view["lono_low"] < view["lono_high"]
+    # by hand: replication 1 without network 0
+    effects = replication_effects(trials)
+    one = effects[(effects["replication"] == 1) & (effects["dropped"] == 0)]["effect"].iloc[0]
+    full = effects[effects["dropped"] == -1].set_index("replication")["effect"]
+    shifted = full.mean() + (one - full.loc[1]) / 3
+    assert view["lono_low"] <= shifted <= view["lono_high"]
+    assert view["fewest_networks_per_cell"] == 12
 
 
 def test_the_summary_holds_the_contract_and_holm_within_each_family():
@@ -126,6 +202,15 @@ def test_the_summary_holds_the_contract_and_holm_within_each_family():
     assert np.allclose(levels["p_adjusted"], multipletests(levels["p"], method="holm")[1])
     slope = table[table["family"] == FAMILY].iloc[0]
     assert slope["verdict"] == "shown" and slope["estimate"] > 0
+
+
+def test_no_signature_is_judged_while_the_in_view_effect_is_not_established():
+    config = declared()
+    trials = synthetic_trials(0.002)
+    trials.loc[~trials["congruent"], "rmse"] -= 0.0125  # the in-view effect now reversed
+    table = summary(trials, SignatureConfig(**{**vars(config), "list": [config.list[0]]}))
+    slope = table[table["family"] == FAMILY].iloc[0]
+    assert slope["verdict"] == "not assessable" and "in-view" in slope["reason"]
 
 
 @pytest.mark.parametrize(
@@ -142,6 +227,8 @@ def test_the_summary_holds_the_contract_and_holm_within_each_family():
          {"estimate": 0.03, "p_adjusted": 0.6, "p_difference_adjusted": 0.051}, "not shown"),
         ("none", "absent", {"estimate": np.nan}, "not testable here"),
         ("slope", "positive", {"estimate": np.nan, "p_adjusted": np.nan}, "not testable here"),
+        ("slope", "positive", {"estimate": 0.01, "p_adjusted": 0.001,
+                               "in_view_established": False}, "not assessable"),
     ],
 )  # fmt: skip
 def test_each_verdict_word_follows_its_statistic_across_the_threshold(test, expected, row, word):

@@ -27,7 +27,7 @@ power at the SD's point estimate and at the ends of its 95% chi-square interval.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -141,3 +141,146 @@ def pilot_power(
             }
         )
     return pd.DataFrame(rows, columns=[*TEST_KEYS, *POWER_COLUMNS])
+
+
+#: The columns of data/claims/summary.csv after ``TEST_KEYS``.
+SUMMARY_COLUMNS: tuple[str, ...] = (
+    "replications",
+    "estimable",
+    "not_estimable",
+    "estimate",
+    "se",
+    "ci_low",
+    "ci_high",
+    "t",
+    "df",
+    "p",
+    "family",
+    "family_size",
+    "p_holm",
+    "direction",
+    "lono_low",
+    "lono_high",
+    "fewest_networks_per_cell",
+)
+
+#: A test's direction: the paper's or against it (Holm p below alpha), neither, or no test.
+DIRECTIONS = ("paper", "reversed", "none", "not assessable")
+
+
+def replication_estimates(
+    rows: Sequence[Mapping[str, Any]],
+    analyses: Sequence[Mapping[str, Any]],
+    declaration: Mapping[str, Any],
+) -> pd.DataFrame:
+    """One row per replication and declared test: its estimate (NaN where undefined), from each
+    replication's ``readings.analyse_measures`` result (``analyses``, in the order of ``rows``:
+    cue, seed, run); for the correct-trial RMSE with its networks per cell and its
+    leave-one-network-out range."""
+    out = []
+    for row, analysis in zip(rows, analyses, strict=True):
+        if row["cue"] not in declaration["cues"]:
+            continue
+        for mode, measure, effect in itertools.product(
+            declaration["modes"], declaration["measures"], declaration["effects"]
+        ):
+            term = analysis[mode][measure]["contrasts"][effect]
+            cells = term.get("cells", {})
+            out.append(
+                {"cue": row["cue"], "mode": mode, "measure": measure, "effect": effect}
+                | {"seed": row["seed"], "run": row["run"]}
+                | {k: term.get(k, np.nan) for k in ("estimate", "p", "lono_low", "lono_high")}
+                | {"fewest_networks_per_cell": min(cells.values()) if cells else np.nan}
+            )
+    return pd.DataFrame(out)
+
+
+def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
+    """Each declared test over the replications (``SUMMARY_COLUMNS``; module docstring): the
+    mean of the defined estimates with its t-test (df = estimable - 1), no test with fewer than
+    ``min_replications``; Holm's p over the family's tests with a p; the direction. For the
+    correct-trial RMSE, the widest leave-one-network-out range of the replications' estimates
+    and the fewest networks that carried a cell in any replication."""
+    from .stats import holm, t_term
+
+    alpha, least = float(declaration["alpha"]), int(declaration["min_replications"])
+    rows = []
+    for test in declared_tests(declaration):
+        mask = np.logical_and.reduce([estimates[k] == v for k, v in test.items()])
+        group = estimates[mask]
+        values = group["estimate"].to_numpy(dtype=float)
+        defined = values[np.isfinite(values)]
+        n = len(defined)
+        if n >= max(least, 2):
+            term = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
+        else:
+            term = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
+        rows.append(
+            test
+            | {"replications": int(len(values)), "estimable": n, "not_estimable": len(values) - n}
+            | {k: term[k] for k in ("estimate", "se", "ci_low", "ci_high", "t", "df", "p")}
+            | {
+                "lono_low": float(group["lono_low"].min()),
+                "lono_high": float(group["lono_high"].max()),
+                "fewest_networks_per_cell": float(group["fewest_networks_per_cell"].min()),
+            }
+        )
+    table = pd.DataFrame(rows)
+    table["family"] = FAMILY
+    table["p_holm"] = holm(table["p"].to_numpy(dtype=float))
+    table["family_size"] = int(np.isfinite(table["p"].to_numpy(dtype=float)).sum())
+    pairs = zip(table["estimate"], table["p_holm"], strict=True)
+    table["direction"] = [direction(e, p, alpha) for e, p in pairs]
+    return table[[*TEST_KEYS, *SUMMARY_COLUMNS]]
+
+
+def direction(estimate: float, p_holm: float, alpha: float) -> str:
+    """``DIRECTIONS``: a significant test in the paper's direction (positive: incongruent or
+    small higher) or against it; neither; no test."""
+    if not np.isfinite(p_holm):
+        return "not assessable"
+    if p_holm >= alpha:
+        return "none"
+    return "paper" if estimate > 0 else "reversed"
+
+
+#: The columns a pilot table must have (config ``confirmation.pilot``).
+PILOT_COLUMNS: tuple[str, ...] = (*TEST_KEYS, "seed", "estimate")
+
+
+def read_pilot(path: str) -> pd.DataFrame:
+    """The pilot's table, refused with the fix if it lacks a column or a declared test."""
+    from pathlib import Path
+
+    if not Path(path).is_file():
+        raise FileNotFoundError(
+            f"{path}: the confirmation's pilot (config confirmation.pilot) is missing. Fix: "
+            "restore it from git (it is tracked), or remake it: tools/confirmation_pilot.py"
+        )
+    table = pd.read_csv(path)
+    missing = [c for c in PILOT_COLUMNS if c not in table]
+    if missing:
+        raise ValueError(
+            f"{path}: the pilot lacks the columns {missing} (it needs {list(PILOT_COLUMNS)}). "
+            "Fix: remake it with tools/confirmation_pilot.py"
+        )
+    return table
+
+
+def learning(curves: Sequence[pd.DataFrame], seeds: Sequence[int], networks: int,
+             phase1_iterations: int) -> pd.DataFrame:  # fmt: skip
+    """Per replication (its ``networks`` curves, in the order of ``seeds``), the training RMSE
+    at the start and at the end (``findings.curve_summary``: the first 10 iterations, the last
+    500), averaged over its networks."""
+    from .findings import curve_summary
+
+    rows = []
+    for i, seed in enumerate(seeds):
+        group = curves[i * networks : (i + 1) * networks]
+        summary = curve_summary(
+            np.array([c["rmse"] for c in group]), phase1_iterations,
+            group[0]["iteration"].to_numpy(),
+        )  # fmt: skip
+        rows.append({"seed": seed, "networks": networks, "start": summary["start"],
+                     "end": summary["end"]})  # fmt: skip
+    return pd.DataFrame(rows)

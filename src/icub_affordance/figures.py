@@ -560,26 +560,27 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     """The human signatures on the model: (a) the delta plot, the congruency effect on
     correct-trial RMSE per reaction-time bin, in view; (b) the effect against the steps the
     object was seen, blanked or masked after them (9: in view); (c) the wrong-grip rates, errors
-    apart. Means over networks (over replications' means with several), standard errors."""
+    apart. Means over the replications' estimates (the one correct-trial estimator), standard
+    errors over replications."""
     import pandas as pd
 
-    from .signatures import IN_VIEW, delta_bins, network_effects
+    from .signatures import IN_VIEW, bin_effects, network_errors, replication_effects
 
     def unit_means(table, by, column):
+        table = table[table["dropped"] == -1] if "dropped" in table else table
         table = table.dropna(subset=[column])
-        if table["replication"].nunique() > 1:
-            table = table.groupby(["replication", by])[column].mean().reset_index()
+        table = table.groupby(["replication", by])[column].mean().reset_index()
         g = table.groupby(by)[column]
         return g.mean(), g.std(ddof=1) / np.sqrt(g.count())
 
     fig, axes = plt.subplots(1, 3, figsize=(12.5, 3.6))
-    mean, sem = unit_means(delta_bins(trials, quantiles), "bin", "effect")
+    mean, sem = unit_means(bin_effects(trials, quantiles), "bin", "effect")
     axes[0].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color="C0")
     axes[0].set_xticks(range(1, quantiles + 1))
     axes[0].set_xlabel("reaction-time bin (correct trials, fastest first)")
     axes[0].set_ylabel("incongruent - congruent RMSE")
     axes[0].set_title("(a) the effect over reaction time", fontsize=10)
-    effects = network_effects(trials)
+    effects = replication_effects(trials)
     view = effects[effects["condition"] == "in_view"]
     for kind, colour, label in (
         ("extinction", "C3", "blanked"),
@@ -595,6 +596,7 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     axes[1].set_title("(b) the effect when the object goes", fontsize=10)
     axes[1].legend(fontsize=8)
     names = {"brief_exposure": "masked", "extinction": "blanked", "in_view": "in view"}
+    effects = network_errors(trials)
     labels = [f"{names[c]}\nk={k}" for c, k in effects.groupby(["condition", "k"]).groups]
     for column, colour, label in (("wrong_congruent", "C0", "congruent"),
                                   ("wrong_incongruent", "C3", "incongruent")):  # fmt: skip
@@ -609,4 +611,51 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     for ax in axes:
         ax.grid(alpha=0.3)
     fig.tight_layout()
+    save(fig, path)
+
+
+#: The forest plot's colour for each direction of a declared test (``claims.DIRECTIONS``).
+DIRECTION_COLOURS = {"paper": "#1b7837", "reversed": "#b2182b", "none": "#636363",
+                     "not assessable": "#bdbdbd"}  # fmt: skip
+
+
+def claims_forest(summary, path) -> None:
+    """The paper's two claims at a glance: each declared test's mean over the replications with
+    its 95% interval, one panel per claim, a row per cue timing x test mode x measure; the
+    paper's direction (positive: incongruent or small higher) shaded; the colour the test's
+    direction at Holm's p (confirmed, reversed, not shown, not assessable)."""
+    from matplotlib.patches import Patch
+
+    effects = list(dict.fromkeys(summary["effect"]))
+    fig, axes = plt.subplots(1, len(effects), figsize=(5.2 * len(effects), 4.2), sharey=True)
+    axes = np.atleast_1d(axes)
+    names = {"rmse": "all-trial RMSE", "rmse_correct": "correct-trial RMSE",
+             "closed_loop": "closed loop", "teacher_forced": "teacher forced",
+             "first_step": "cue at the first step", "all_steps": "cue at every step"}  # fmt: skip
+    titles = {"congruency": "congruency (incongruent − congruent)",
+              "size": "size (small − large)"}  # fmt: skip
+    for ax, effect in zip(axes, effects, strict=True):
+        rows = summary[summary["effect"] == effect].reset_index(drop=True)
+        y = np.arange(len(rows))[::-1]
+        finite = rows[["ci_low", "ci_high", "estimate"]].to_numpy(dtype=float)
+        reach = np.nanmax(np.abs(finite)) if np.isfinite(finite).any() else 0.01
+        ax.axvspan(0, 1.15 * reach, color="#1b7837", alpha=0.06)
+        ax.axvline(0, color="black", lw=0.8)
+        for yi, (_, row) in zip(y, rows.iterrows(), strict=True):
+            colour = DIRECTION_COLOURS[row["direction"]]
+            if np.isfinite(row["ci_low"]):
+                ax.plot([row["ci_low"], row["ci_high"]], [yi, yi], color=colour, lw=2)
+            ax.plot(row["estimate"], yi, "o", color=colour, ms=6)
+        labels = [f"{names[r['cue']]}, {names[r['mode']]}\n{names[r['measure']]} "
+                  f"({int(r['estimable'])} repl.)" for _, r in rows.iterrows()]  # fmt: skip
+        ax.set_yticks(y, labels, fontsize=7.5)
+        ax.set_xlim(-1.15 * reach, 1.15 * reach)
+        ax.set_title(titles.get(effect, effect), fontsize=10)
+        ax.set_xlabel("difference in RMSE (paper's direction shaded)")
+        ax.grid(axis="x", alpha=0.3)
+    words = {"paper": "confirmed", "reversed": "reversed", "none": "not shown",
+             "not assessable": "not assessable"}  # fmt: skip
+    handles = [Patch(color=c, label=words[d]) for d, c in DIRECTION_COLOURS.items()]
+    fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
     save(fig, path)

@@ -78,7 +78,7 @@ LABELS: dict[str, str] = {
 DERIVED: dict[str, tuple[str, ...]] = {"rmse_correct": ("rmse", "wrong_grip")}
 
 #: The measures a network can lack in a cell by design (no correct trial of an object): their
-#: contrasts come from ``stats.within_network_fit``, which keeps such a network, never from the
+#: contrasts come from ``stats.correct_trial_effects``, which keeps such a network, never from the
 #: per-network contrasts, which drop it. Declared here, never read off the data.
 MISSING_BY_DESIGN: frozenset[str] = frozenset({"rmse_correct"})
 

@@ -22,7 +22,7 @@ test (TOST, with a margin declared in config) can say that. Each table names, pe
 its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
 
 A measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``: the correct-trial
-RMSE) is tested with ``stats.within_network_fit``, which keeps such a network; its differences
+RMSE) is tested with ``stats.correct_trial_effects``, which keeps such a network; its differences
 between readings cannot be paired by network (``difference_replications``).
 """
 
@@ -45,6 +45,7 @@ from .spec import MODES
 from .stats import (
     categorisation_trials,
     cell_means,
+    correct_trial_effects,
     difference_tests,
     equivalence,
     holm,
@@ -53,7 +54,6 @@ from .stats import (
     object_means,
     t_term,
     with_outcomes,
-    within_network_fit,
 )
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
@@ -86,6 +86,7 @@ SUMMARY_COLUMNS = [
     "p",
     "p_holm",
     "family",
+    "not_estimable",
 ]
 
 #: The columns of data/readings/differences.csv: one row per comparison (the readings ``a`` and
@@ -125,12 +126,12 @@ def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
 
 
 def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None) -> dict[str, dict]:
-    """A measure's contrasts: ``stats.within_network_fit`` for a measure that a network can lack
+    """A measure's contrasts: ``stats.correct_trial_effects`` for a measure that a network can lack
     in a cell (``measures.MISSING_BY_DESIGN``: the per-network contrasts would drop that
     network), the per-network contrasts otherwise. ``means``: ``network_object_means(df,
     measure)``, when the caller has it already."""
     if can_lack_cells(measure):
-        return within_network_fit(df, measure)
+        return correct_trial_effects(df, measure)
     return network_contrasts(df, measure, means)
 
 
@@ -171,12 +172,13 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
 
 
 def flat_term(term: dict) -> dict:
-    """A term as one table row: ``within_network_fit``'s networks per cell as ``cells_{cell}``
-    columns."""
-    cells = term.get("cells", {})
-    return {k: v for k, v in term.items() if k != "cells"} | {
-        f"cells_{cell}": n for cell, n in cells.items()
-    }
+    """A term as one table row: ``stats.correct_trial_effects``' networks per cell as
+    ``cells_{cell}`` columns, per mapping and cell as ``cells_{mapping}_{cell}``."""
+    nested = ("cells", "cells_by_mapping")
+    flat = {k: v for k, v in term.items() if k not in nested}
+    for key in nested:
+        flat |= {f"cells_{cell}": n for cell, n in term.get(key, {}).items()}
+    return flat
 
 
 def replication_rows(
@@ -184,7 +186,7 @@ def replication_rows(
 ) -> pd.DataFrame:
     """One row per reading, replication, measure and effect: the contrasts' estimate, its
     interval, df and p. ``table`` holds the readings' rows (reading, cue, goal_response, seed,
-    run), ``analyses`` each row's ``analyse_measures`` result. A ``within_network_fit``'s
+    run), ``analyses`` each row's ``analyse_measures`` result. A ``correct_trial_effects``'
     networks per cell are the ``cells_{cell}`` columns."""
     rows = []
     for row, analysis in zip(table, analyses, strict=True):
@@ -197,16 +199,23 @@ def replication_rows(
 
 def over_replications(terms: pd.DataFrame) -> dict[str, float]:
     """An effect over its replications (rows with each one's ``estimate``, ``ci_low``,
-    ``ci_high``, ``df``, ``p``): with one, that replication's own test; with several, the mean
-    estimate and a t-test of the estimates (df = replications - 1)."""
+    ``ci_high``, ``df``, ``p``): with one, that replication's own test; with several, the mean of
+    the defined estimates and a t-test of them (df = defined - 1); a replication whose estimate
+    is undefined is left out and counted (``not_estimable``), as the confirmation does."""
     if len(terms) == 1:
         row = terms.iloc[0]
         term = {k: float(row[k]) for k in ("estimate", "ci_low", "ci_high", "df", "p")}
         term["se"] = float(row["se"]) if "se" in row else float("nan")
+        missing = int(not np.isfinite(term["estimate"]))
     else:
         estimates = terms["estimate"].to_numpy(dtype=float)
-        n = len(estimates)
-        term = t_term(estimates.mean(), estimates.std(ddof=1) / np.sqrt(n), n - 1)
+        defined = estimates[np.isfinite(estimates)]
+        n = len(defined)
+        missing = len(estimates) - n
+        if n >= 2:
+            term = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
+        else:
+            term = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
     return {
         "diff": term["estimate"],
         "ci_low": term["ci_low"],
@@ -214,6 +223,7 @@ def over_replications(terms: pd.DataFrame) -> dict[str, float]:
         "df": term["df"],
         "p": term["p"],
         "se": term["se"],
+        "not_estimable": missing,
     }
 
 
@@ -251,7 +261,7 @@ def summary(replications: pd.DataFrame) -> pd.DataFrame:
         test = over_replications(group)
         rows.append(
             dict(zip(keys, key, strict=True))
-            | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p")}
+            | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p", "not_estimable")}
             | {
                 "replications": len(group),
                 "n_paper": int((significant & (estimates > 0)).sum()),
@@ -279,11 +289,11 @@ def welch_df(se_a: float, se_b: float, df_a: float, df_b: float) -> float:
 def unpaired_difference(a: pd.DataFrame, b: pd.DataFrame, measure: str) -> dict[str, dict]:
     """A minus B for a measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``):
     a network's contrast is then undefined, so the runs cannot be paired by network. Each term
-    is the difference of the two runs' ``stats.within_network_fit`` estimates, with
+    is the difference of the two runs' ``stats.correct_trial_effects`` estimates, with
     se = sqrt(se_a^2 + se_b^2) and Welch-Satterthwaite df. Conservative: the two runs' networks
     are the same networks (same seeds, same mappings), whose estimates correlate positively, and
     the unpaired se ignores that covariance."""
-    fa, fb = within_network_fit(a, measure), within_network_fit(b, measure)
+    fa, fb = correct_trial_effects(a, measure), correct_trial_effects(b, measure)
     out = {}
     for effect in EFFECTS:
         ta, tb = fa[effect], fb[effect]

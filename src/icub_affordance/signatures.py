@@ -26,14 +26,14 @@ import pandas as pd
 from .findings import ALPHA
 from .jordan import Weights, run_closed_loop
 from .spec import CATEGORISATION, OBJECTS
-from .stats import equivalence, holm, t_term
+from .stats import correct_trial_effects, equivalence, holm, t_term
 from .train import N_VISUAL, Materials, context, target_grip
 
 #: Where the object is in view at every step: a trial's 9 steps.
 IN_VIEW = 9
 #: The family of the signatures' verdict tests (one per chapter), and of the tests beside them.
 FAMILY, LEVELS_FAMILY, ERRORS_FAMILY = "signatures", "signatures: levels", "signatures: errors"
-VERDICTS = ("shown", "not shown", "opposite", "not testable here")
+VERDICTS = ("shown", "not shown", "opposite", "not assessable", "not testable here")
 #: Each signature this module has a condition for (config ``signatures.list``): the test its
 #: verdict comes from, the directions that test can expect, and whether it has levels (the
 #: steps the object is seen). The config's schema and checks read it from here.
@@ -146,49 +146,87 @@ def network_trials(
     return rows
 
 
-# ---- per network ---------------------------------------------------------------------------
+# ---- per replication: the one estimator -----------------------------------------------------
 
 
-def network_effects(trials: pd.DataFrame) -> pd.DataFrame:
-    """Per replication, network and condition: the congruency effect on correct-trial RMSE
-    (incongruent minus congruent; NaN where a network has no correct trial of one kind) and the
-    wrong-grip rates."""
+def estimator_rows(trials: pd.DataFrame) -> pd.DataFrame:
+    """``trials`` as the correct-trial estimator reads them (``stats.correct_trial_effects``):
+    congruency and size as cell names, ``rmse_correct`` the RMSE where the grip was right."""
+    out = trials.copy()
+    out["congruency"] = np.where(out["congruent"].astype(bool), "congruent", "incongruent")
+    out["rmse_correct"] = out["rmse"].where(out["correct"].astype(bool))
+    return out
 
-    def one(g: pd.DataFrame) -> pd.Series:
-        ok = g[g["correct"]]
-        inc, con = ok[~ok["congruent"]]["rmse"], ok[ok["congruent"]]["rmse"]
-        wrong = 1.0 - g.groupby("congruent")["correct"].mean()
-        return pd.Series(
-            {
-                "effect": inc.mean() - con.mean() if len(inc) and len(con) else np.nan,
-                "wrong_congruent": wrong.get(True, np.nan),
-                "wrong_incongruent": wrong.get(False, np.nan),
-            }
-        )
 
+def _congruency(rows: pd.DataFrame) -> list[dict[str, float]]:
+    """One replication's congruency effect on correct-trial RMSE by the one estimator: a row
+    with every network (``dropped`` -1) and a row without each network in turn (``dropped``
+    its index), for leave-one-network-out ranges of every statistic built on it; with the
+    fewest networks carrying a cell."""
+    term = correct_trial_effects(rows, left_out=True)["congruency"]
+    fewest = min(term["cells"].values()) if term["cells"] else 0
+    full = {"dropped": -1, "effect": term["estimate"], "fewest_networks_per_cell": fewest}
+    return [full] + [
+        {"dropped": int(n), "effect": v, "fewest_networks_per_cell": fewest}
+        for n, v in term["left_out"].items()
+    ]
+
+
+def replication_effects(trials: pd.DataFrame) -> pd.DataFrame:
+    """Per replication, condition and k: the congruency effect on correct-trial RMSE (incongruent
+    minus congruent) by ``stats.correct_trial_effects``, the estimator every chapter uses: each
+    network x object's mean over its correct trials is an observation, the fit has an intercept
+    per network and the cell terms, so networks keep their other cells when one has no correct
+    trial and objects are not pooled (a pooled mean would compare different mixtures of
+    objects: correct incongruent trials are mostly of some objects, and correct-trial RMSE
+    differs by object). Rows with ``dropped`` >= 0 are the estimate without that network."""
+    rows = estimator_rows(trials)
+    out = []
+    for (rep, kind, k), g in rows.groupby(["replication", "condition", "k"], sort=True):
+        out += [{"replication": rep, "condition": kind, "k": k} | r for r in _congruency(g)]
+    return pd.DataFrame(out)
+
+
+def network_errors(trials: pd.DataFrame) -> pd.DataFrame:
+    """Per replication, network and condition: the wrong-grip rates of congruent and
+    incongruent trials (errors, reported apart from reaction time)."""
     keys = ["replication", "network", "condition", "k"]
-    return (
-        trials.groupby(keys, sort=True)[["correct", "congruent", "rmse"]].apply(one).reset_index()
+    wrong = 1.0 - trials.groupby([*keys, "congruent"])["correct"].mean()
+    table = wrong.unstack("congruent").rename(
+        columns={True: "wrong_congruent", False: "wrong_incongruent"}
     )
+    return table.reindex(columns=["wrong_congruent", "wrong_incongruent"]).reset_index()
 
 
-def delta_bins(trials: pd.DataFrame, quantiles: int) -> pd.DataFrame:
-    """Per replication and network, in view: the congruency effect in each reaction-time bin
-    (each congruency's correct trials sorted by RMSE and cut into ``quantiles`` bins of equal
-    count, as in a delta plot); a network with fewer correct trials of a kind than bins has none."""
+def bin_rows(trials: pd.DataFrame, quantiles: int) -> pd.DataFrame:
+    """In view: each network x object's correct trials sorted by RMSE and cut into
+    ``quantiles`` bins of equal count (a delta plot within each cell, so that a bin compares
+    like objects); a row per network, object and bin with the bin's mean RMSE as
+    ``rmse_correct``. A network x object with fewer correct trials than bins has no bins."""
+    view = estimator_rows(trials)
+    view = view[(view["condition"] == "in_view") & view["correct"].astype(bool)]
+    keys = ["replication", "network", "mapping", "object", "congruency", "size"]
     rows = []
-    in_view = trials[(trials["condition"] == "in_view") & trials["correct"]]
-    for (rep, net), g in in_view.groupby(["replication", "network"], sort=True):
-        inc = np.sort(g[~g["congruent"]]["rmse"].to_numpy())
-        con = np.sort(g[g["congruent"]]["rmse"].to_numpy())
-        if min(len(inc), len(con)) < quantiles:
+    for key, g in view.groupby(keys, sort=True):
+        values = np.sort(g["rmse"].to_numpy(dtype=float))
+        if len(values) < quantiles:
             continue
-        bins = zip(np.array_split(inc, quantiles), np.array_split(con, quantiles), strict=True)
-        for q, (a, b) in enumerate(bins, start=1):
-            rows.append(
-                {"replication": rep, "network": net, "bin": q, "effect": a.mean() - b.mean()}
-            )
-    return pd.DataFrame(rows, columns=["replication", "network", "bin", "effect"])
+        for q, part in enumerate(np.array_split(values, quantiles), start=1):
+            rows.append(dict(zip(keys, key, strict=True)) | {"bin": q, "rmse_correct": part.mean()})
+    return pd.DataFrame(rows, columns=[*keys, "bin", "rmse_correct"])
+
+
+def bin_effects(trials: pd.DataFrame, quantiles: int) -> pd.DataFrame:
+    """Per replication and reaction-time bin (``bin_rows``): the congruency effect by the one
+    estimator (rows with ``dropped`` >= 0: without that network, as ``replication_effects``)."""
+    rows = bin_rows(trials, quantiles)
+    out = [
+        {"replication": rep, "bin": q} | r
+        for (rep, q), g in rows.groupby(["replication", "bin"], sort=True)
+        for r in _congruency(g)
+    ]
+    columns = ["replication", "bin", "dropped", "effect", "fewest_networks_per_cell"]
+    return pd.DataFrame(out, columns=columns)
 
 
 def slope(x: np.ndarray, y: np.ndarray) -> float:
@@ -201,28 +239,49 @@ def slope(x: np.ndarray, y: np.ndarray) -> float:
 
 
 def over_units(values: pd.DataFrame, column: str) -> dict[str, float]:
-    """The mean of ``column`` with its t-test: over networks with one replication, over the
-    replications' means with several (networks within a replication share its maps and
-    demonstrations). NaN values (a network without the trials a value needs) are left out."""
-    values = values.dropna(subset=[column])
-    reps = values["replication"].nunique()
-    units = values.groupby("replication")[column].mean() if reps > 1 else values[column]
-    units = units.to_numpy(dtype=float)
-    n = len(units)
+    """The mean of ``column`` over the replications (one value each: networks within a
+    replication share its maps and demonstrations, so the replication is the unit) with its
+    t-test (df = replications - 1). NaN values (a replication whose estimate is undefined) are
+    left out and counted in ``not_estimable``. With a ``dropped`` column (``replication_effects``)
+    the test reads the rows with every network (``dropped`` -1); the others give the
+    leave-one-network-out range of the mean (``lono_low``, ``lono_high``): the mean with one
+    replication's value replaced by its value without one of its networks, over every network."""
+    full = values[values["dropped"] == -1] if "dropped" in values else values
+    # one value per replication (per-network values, as the error rates, by their mean)
+    defined = full.dropna(subset=[column]).groupby("replication")[column].mean()
+    n = len(defined)
     if n < 2:
-        test = t_term(units.mean() if n else np.nan, np.nan, 0.0)
+        test = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
     else:
-        test = t_term(units.mean(), units.std(ddof=1) / np.sqrt(n), n - 1)
-    return test | {"units": n, "replications": reps}
+        test = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
+    reps = int(full["replication"].nunique())
+    test |= {"units": n, "replications": reps, "not_estimable": reps - n}
+    if "dropped" in values and n:
+        others = values[(values["dropped"] != -1) & values["replication"].isin(defined.index)]
+        shifted = (
+            defined.mean()
+            + (others[column].to_numpy(dtype=float) - defined.loc[others["replication"]].to_numpy())
+            / n
+        )
+        shifted = shifted[np.isfinite(shifted)]
+        if len(shifted):
+            test |= {"lono_low": float(shifted.min()), "lono_high": float(shifted.max())}
+    if "fewest_networks_per_cell" in values and len(full):
+        test["fewest_networks_per_cell"] = float(full["fewest_networks_per_cell"].min())
+    return test
 
 
 def verdict(test: str, expected: str, row: Mapping[str, float], alpha: float = ALPHA) -> str:
     """The verdict word of a signature's test (``VERDICTS``). A slope: shown if significant
     (Holm) in the expected direction, opposite if significant against it. Equivalence: shown if
     TOST is significant (Holm), opposite if the difference itself is (``p_difference_adjusted``),
-    else not shown. No test, or no data for one: not testable here."""
+    else not shown. No test, or no data for one: not testable here. A signature describes the
+    shape of the congruency effect, so while the in-view effect is not established
+    (``in_view_established`` False) it is not assessable."""
     if test == "none" or not np.isfinite(row.get("estimate", np.nan)):
         return "not testable here"
+    if not row.get("in_view_established", True):
+        return "not assessable"
     p = row.get("p_adjusted", np.nan)
     if test == "slope":
         if not (np.isfinite(p) and p < alpha):
@@ -254,6 +313,10 @@ SUMMARY_COLUMNS = [
     "replications",
     "units",
     "of",
+    "not_estimable",
+    "lono_low",
+    "lono_high",
+    "fewest_networks_per_cell",
     "reason",
 ]
 
@@ -267,63 +330,87 @@ def _row(signature: str, condition: str, level: str, test: dict, family: str) ->
         "family": family,
         "replications": test.get("replications", 0),
         "units": test.get("units", 0),
+        "not_estimable": test.get("not_estimable", 0),
+        **{key: test.get(key, np.nan) for key in ("lono_low", "lono_high")},
+        "fewest_networks_per_cell": test.get("fewest_networks_per_cell", np.nan),
         "reason": "",
     }
 
 
 def _slopes(curves: pd.DataFrame, x: str, points: int) -> pd.DataFrame:
-    """Per replication and network, the slope of the effect over ``x``; NaN for a network that
-    lacks one of the ``points``."""
-
-    def one(g: pd.DataFrame) -> float:
-        return slope(g[x], g["effect"]) if len(g) == points else np.nan
-
-    groups = curves.dropna(subset=["effect"]).groupby(["replication", "network"])
-    return groups[[x, "effect"]].apply(one).rename("slope").reset_index()
+    """Per replication (and ``dropped`` network, as ``replication_effects``), the slope of its
+    effect over ``x``; NaN where one of the ``points`` is missing."""
+    keys = ["replication", "dropped"]
+    rows = []
+    for (rep, dropped), g in curves.groupby(keys, sort=True):
+        g = g.dropna(subset=["effect"])
+        rows.append({
+            "replication": rep, "dropped": dropped,
+            "slope": slope(g[x], g["effect"]) if len(g) == points else np.nan,
+            "fewest_networks_per_cell": g["fewest_networks_per_cell"].min() if len(g) else 0,
+        })  # fmt: skip
+    return pd.DataFrame(rows, columns=[*keys, "slope", "fewest_networks_per_cell"])
 
 
 def _rt_rows(trials: pd.DataFrame, effects: pd.DataFrame, config: SignatureConfig) -> list[dict]:
-    """The effect growing with reaction time: the in-view effect over all correct trials (the
-    effect whose shape the bins show), the effect per RT bin, and its slope over bins."""
-    bins = delta_bins(trials, config.quantiles)
+    """The effect growing with reaction time: the in-view effect (the effect whose shape the
+    bins show), the effect per RT bin, and its slope over bins."""
+    bins = bin_effects(trials, config.quantiles)
     view = effects[effects["condition"] == "in_view"]
     rows = [_row("grows_with_rt", "in view, all correct trials", "all",
                  over_units(view, "effect"), LEVELS_FAMILY)]  # fmt: skip
-    rows += [
-        _row("grows_with_rt", "in view, RT bin", f"q{q}",
-             over_units(bins[bins["bin"] == q], "effect"), LEVELS_FAMILY)
-        for q in range(1, config.quantiles + 1)
-    ]  # fmt: skip
+    for q in range(1, config.quantiles + 1):
+        one = bins[bins["bin"] == q]
+        rows.append(_row("grows_with_rt", "in view, RT bin", f"q{q}",
+                         over_units(one, "effect"), LEVELS_FAMILY))  # fmt: skip
     slopes = over_units(_slopes(bins, "bin", config.quantiles), "slope")
-    return rows + [_row("grows_with_rt", "in view, effect over RT bins", "slope", slopes, FAMILY)]
+    return rows + [_row("grows_with_rt", "in view, effect over RT bins", "slope",
+                        slopes, FAMILY)]  # fmt: skip
 
 
 def _hidden_rows(
     effects: pd.DataFrame, entry: Mapping[str, Any], config: SignatureConfig
 ) -> list[dict]:
-    """The object hidden after k steps (blanked or masked): the effect at each k minus in view;
-    then the signature's test, the slope over k (in view as k = 9) or the equivalence at the
-    briefest k."""
+    """The object hidden after k steps (blanked or masked): at each k the contrast blanked (or
+    masked) minus in view, per replication; then the signature's test, the slope over k (in view
+    as k = 9) or the equivalence at the briefest k."""
     name, test = entry["signature"], entry["test"]
     what = "blanked" if name == "extinction" else "masked"
-    index = ["replication", "network"]
-    view = effects[effects["condition"] == "in_view"].set_index(index)
-    hidden = effects[effects["condition"] == name].set_index(index)
+    keys = ["replication", "dropped"]
+    view = effects[effects["condition"] == "in_view"]
+    hidden = effects[effects["condition"] == name]
     rows = []
     for k, g in hidden.groupby("k"):
-        diff = over_units((g["effect"] - view["effect"]).rename("d").reset_index(), "d")
-        rows.append(_row(name, f"{what} after k steps, minus in view", f"k={k}", diff,
+        paired = g.merge(view, on=keys, suffixes=("", "_view"))
+        diff = paired[keys].assign(
+            d=paired["effect"] - paired["effect_view"],
+            fewest_networks_per_cell=np.minimum(
+                paired["fewest_networks_per_cell"], paired["fewest_networks_per_cell_view"]
+            ),
+        )
+        tested = over_units(diff, "d")
+        rows.append(_row(name, f"{what} after k steps minus in view", f"k={k}", tested,
                          LEVELS_FAMILY))  # fmt: skip
         if test == "equivalence" and k == min(entry["levels"]):
-            row = _row(name, f"{what} after k steps, minus in view: equivalence", f"k={k}",
-                       diff, FAMILY)  # fmt: skip
-            rows.append(row | {"p": equivalence(diff, config.margin)["p"]})
+            row = _row(name, f"{what} after k steps minus in view: equivalence", f"k={k}",
+                       tested, FAMILY)  # fmt: skip
+            rows.append(row | {"p": equivalence(tested, config.margin)["p"]})
     if test == "slope":
-        curves = pd.concat([hidden.reset_index(), view.reset_index()])
+        curves = pd.concat([hidden, view])
         slopes = over_units(_slopes(curves, "k", len(entry["levels"]) + 1), "slope")
         rows.append(_row(name, f"effect over k, {what} after k steps (k = 9: in view)", "slope",
                          slopes, FAMILY))  # fmt: skip
     return rows
+
+
+def in_view_established(table: pd.DataFrame, alpha: float = ALPHA) -> bool:
+    """Is the in-view congruency effect (the row ``level == "all"``) shown, incongruent
+    slower, at Holm's p within its family below ``alpha``? The signatures describe its shape."""
+    row = table[(table["signature"] == "grows_with_rt") & (table["level"] == "all")]
+    if row.empty:
+        return False
+    p, estimate = float(row["p_adjusted"].iloc[0]), float(row["estimate"].iloc[0])
+    return bool(np.isfinite(p) and p < alpha and estimate > 0)
 
 
 def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
@@ -332,10 +419,11 @@ def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame
     table["p_adjusted"] = np.nan
     for _family, idx in table.groupby("family").groups.items():
         table.loc[idx, "p_adjusted"] = holm(table.loc[idx, "p"])
+    established = in_view_established(table)
     table["verdict"] = ""
     for i, row in table[table["family"] == FAMILY].iterrows():
         entry = config.entry(row["signature"])
-        extra = {}
+        extra = {"in_view_established": established}
         if entry["test"] == "equivalence":  # its difference test, the same level, beside it
             twin = table[
                 (table["signature"] == row["signature"])
@@ -346,14 +434,17 @@ def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame
         word = verdict(entry["test"], entry["expected"], row.to_dict() | extra)
         table.loc[i, "verdict"] = word
         if word == "not testable here" and not row["reason"]:
-            table.loc[i, "reason"] = "too few networks with correct trials of both kinds"
+            table.loc[i, "reason"] = "too few replications with an estimate"
+        if word == "not assessable":
+            table.loc[i, "reason"] = "the in-view congruency effect it describes is not established"
     return table
 
 
 def summary(trials: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
     """One row per signature and condition level (``SUMMARY_COLUMNS``): each signature's verdict
-    test in the family ``signatures``, the tests of its levels beside it (exploration)."""
-    effects = network_effects(trials)
+    test in the family ``signatures``, the tests of its levels beside it (exploration); every
+    estimate over the replications' estimates by the one correct-trial estimator."""
+    effects = replication_effects(trials)
     rows: list[dict] = []
     for entry in config.list:
         name = entry["signature"]
@@ -365,19 +456,18 @@ def summary(trials: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
             row = _row(name, "required response before the object", "", {}, FAMILY)
             rows.append(row | {"reason": "no input names a grip apart from an object"})
     table = _with_verdicts(pd.DataFrame(rows), config)
-    # what a test's units are out of: the replications with several, else the networks
-    reps = trials["replication"].nunique()
-    table["of"] = np.where(table["units"] > 0, reps if reps > 1 else trials["network"].nunique(), 0)
+    table["of"] = np.where(table["units"] > 0, trials["replication"].nunique(), 0)
     return table[SUMMARY_COLUMNS]
 
 
 def errors(trials: pd.DataFrame) -> pd.DataFrame:
     """Errors apart: per condition, the wrong-grip rates of congruent and incongruent trials and
-    the test of their difference (incongruent minus congruent), Holm over the table."""
-    effects = network_effects(trials)
-    effects["wrong_difference"] = effects["wrong_incongruent"] - effects["wrong_congruent"]
+    the test of their difference (incongruent minus congruent) over the replications' means,
+    Holm over the table."""
+    rates = network_errors(trials)
+    rates["wrong_difference"] = rates["wrong_incongruent"] - rates["wrong_congruent"]
     rows = []
-    for (kind, k), g in effects.groupby(["condition", "k"], sort=False):
+    for (kind, k), g in rates.groupby(["condition", "k"], sort=False):
         test = over_units(g, "wrong_difference")
         rows.append(
             {

@@ -390,10 +390,8 @@ def object_means(
 #: correct responses with errors reported apart).
 OUTCOMES = {"contrasts": "rmse", "errors": "wrong_grip", "correct_rt": "rmse_correct"}
 
-#: The family of every test of a run that the config does not declare confirmatory, per mode.
+#: The family of every test of a run, per mode (the confirmatory family is ``claims.FAMILY``).
 EXPLORATION = "exploration: {mode}"
-#: The confirmatory family's name (config ``confirmatory``).
-CONFIRMATORY = "confirmatory"
 
 
 def with_outcomes(trials: pd.DataFrame) -> pd.DataFrame:
@@ -410,27 +408,23 @@ def with_outcomes(trials: pd.DataFrame) -> pd.DataFrame:
 def cell_counts(df: pd.DataFrame, depvar: str) -> dict[str, int]:
     """Per congruency x size cell, the networks with at least one defined ``depvar`` there."""
     defined = df.dropna(subset=[depvar])
+    counts = defined.groupby(["congruency", "size"])["network"].nunique()
     return {
-        f"{c}_{s}": int(defined[(defined["congruency"] == c) & (defined["size"] == s)][
-            "network"].nunique())
+        f"{c}_{s}": int(counts.get((c, s), 0))
         for c in ("congruent", "incongruent")
         for s in ("large", "small")
-    }  # fmt: skip
+    }
 
 
-def within_network_fit(df: pd.DataFrame, depvar: str) -> dict[str, dict[str, float]]:
-    """The within-network effects (``WITHIN`` and each one's difference between mappings) of a
-    measure that a network may lack in some cells: the correct-trial RMSE, where a network that
-    always took the wrong grip on an object has no correct trial of it. Each network x object
-    with a defined value is one observation (its mean over its defined trials); a least-squares
-    model with an intercept per network (which absorbs the network's speed and its mapping) and
-    the coded within terms; t with the residual degrees of freedom (observations - rank). No
-    network is dropped: one with a missing cell still informs the terms its other cells reach.
-    With every cell present the estimates equal ``network_contrasts``' (the tests pool the
-    three contrasts' error, as a repeated-measures ANOVA does). A term the observations do not
-    identify has NaN statistics. ``cells`` counts the networks per cell."""
+def _coded_means(df: pd.DataFrame, depvar: str) -> pd.DataFrame:
+    """Each network x object's mean over its defined ``depvar``, the factors coded: the
+    observations of ``within_network_fit``."""
     data = network_object_means(df.dropna(subset=[depvar]), depvar).dropna(subset=[depvar])
-    data = coded(data)
+    return coded(data)
+
+
+def _within_terms(data: pd.DataFrame, depvar: str) -> dict[str, dict[str, float]]:
+    """``within_network_fit``'s least squares on its observations (``_coded_means``)."""
     names = ["congruency", "size", "congruency:size"]
     both = data["mapping"].nunique() == 2
     c, s, m = (data[k].to_numpy(dtype=float) for k in ("congruency", "size", "mapping"))
@@ -460,8 +454,70 @@ def within_network_fit(df: pd.DataFrame, depvar: str) -> dict[str, dict[str, flo
             term = {k: nan for k in ("estimate", "se", "t", "ci_low", "ci_high", "p")}
             term["df"] = float(dof)
         out[name] = term | {"networks": len(networks), "observations": int(len(y))}
+    return out
+
+
+def within_network_fit(df: pd.DataFrame, depvar: str) -> dict[str, dict[str, float]]:
+    """The within-network effects (``WITHIN`` and each one's difference between mappings) of a
+    measure that a network may lack in some cells: the correct-trial RMSE, where a network that
+    always took the wrong grip on an object has no correct trial of it. Each network x object
+    with a defined value is one observation (its mean over its defined trials); a least-squares
+    model with an intercept per network (which absorbs the network's speed and its mapping) and
+    the coded within terms; t with the residual degrees of freedom (observations - rank). No
+    network is dropped: one with a missing cell still informs the terms its other cells reach.
+    With every cell present the estimates equal ``network_contrasts``' (the tests pool the
+    three contrasts' error, as a repeated-measures ANOVA does). A term the observations do not
+    identify has NaN statistics. ``cells`` counts the networks per cell."""
+    out = _within_terms(_coded_means(df, depvar), depvar)
     cells = cell_counts(df, depvar)
     return {name: term | {"cells": cells} for name, term in out.items()}
+
+
+def cells_by_mapping(df: pd.DataFrame, depvar: str) -> dict[str, int]:
+    """Per mapping and congruency x size cell (``{mapping}_{congruency}_{size}``), the networks
+    with at least one defined ``depvar`` there: under each mapping a cell is one object, so
+    these say which objects' networks carry an estimate."""
+    defined = df.dropna(subset=[depvar])
+    counts = defined.groupby(["mapping", "congruency", "size"])["network"].nunique()
+    return {
+        f"{m}_{c}_{s}": int(counts.get((m, c, s), 0))
+        for m in ("A", "B")
+        for c in ("congruent", "incongruent")
+        for s in ("large", "small")
+    }
+
+
+def correct_trial_effects(
+    df: pd.DataFrame, depvar: str = "rmse_correct", left_out: bool = False
+) -> dict[str, dict]:
+    """THE estimator of the correct-trial RMSE's effects (every chapter that reports the measure
+    calls this one function): ``within_network_fit``'s within terms (network intercepts and cell
+    terms, so a network's other cells count when one has no correct trial), each with the
+    networks per cell (``cells``), per mapping and cell (``cells_by_mapping``) and the
+    leave-one-network-out range of its estimate (``lono_low``, ``lono_high``: the fit refitted
+    without each network in turn, over the refits that still estimate the term; NaN if none
+    does), so a reader sees how far an estimate rests on single networks. ``left_out``: each
+    term also holds ``left_out``, {network: the estimate without it}, for statistics built on
+    the estimates (their own leave-one-network-out range)."""
+    fit = within_network_fit(df, depvar)
+    by_mapping = cells_by_mapping(df, depvar)
+    data = _coded_means(df, depvar)
+    networks = sorted(data["network"].unique())
+    # the same observations less one network's: the fit of the trials without that network
+    refits = [_within_terms(data[data["network"] != n], depvar) for n in networks]
+    out = {}
+    for term in WITHIN:
+        without = np.array([r[term]["estimate"] for r in refits], dtype=float)
+        without = without[np.isfinite(without)]
+        low, high = (float(without.min()), float(without.max())) if len(without) else (
+            float("nan"), float("nan"))  # fmt: skip
+        out[term] = fit[term] | {"cells_by_mapping": by_mapping, "lono_low": low,
+                                 "lono_high": high}  # fmt: skip
+        if left_out:
+            out[term]["left_out"] = {
+                n: float(r[term]["estimate"]) for n, r in zip(networks, refits, strict=True)
+            }
+    return out
 
 
 def outcome_tests(df: pd.DataFrame, outcome: str) -> dict[str, dict[str, float]]:
@@ -475,27 +531,7 @@ def outcome_tests(df: pd.DataFrame, outcome: str) -> dict[str, dict[str, float]]
     if outcome == "errors":
         tests = network_contrasts(df, depvar)
         return {t: tests[t] | {"cells": cell_counts(df, depvar)} for t in WITHIN}
-    fit = within_network_fit(df, depvar)
-    return {t: fit[t] for t in WITHIN}
-
-
-def confirmatory_keys(confirmatory) -> set[tuple[str, str, str]]:
-    """The config's confirmatory tests (``confirmatory.tests``: mode, measure, effect) as
-    (mode, outcome key of ``OUTCOMES``, term) triples; an unknown measure or effect is refused."""
-    by_measure = {measure: key for key, measure in OUTCOMES.items()}
-    keys = set()
-    for test in confirmatory:
-        if test["measure"] not in by_measure:
-            raise ValueError(
-                f"confirmatory test {dict(test)}: measure must be one of {sorted(by_measure)}"
-            )
-        if test["effect"] not in WITHIN or test["mode"] not in MODES:
-            raise ValueError(
-                f"confirmatory test {dict(test)}: effect must be one of {list(WITHIN)}, "
-                f"mode one of {list(MODES)}"
-            )
-        keys.add((test["mode"], by_measure[test["measure"]], test["effect"]))
-    return keys
+    return correct_trial_effects(df, depvar)
 
 
 def adjust_families(tests: list[tuple[str, dict]]) -> None:
@@ -511,19 +547,17 @@ def adjust_families(tests: list[tuple[str, dict]]) -> None:
             term |= {"family": family, "family_size": size, "p_holm": float(p)}
 
 
-def analyse(trials: pd.DataFrame, confirmatory=(), run: str | None = None) -> dict[str, object]:
+def analyse(trials: pd.DataFrame, run: str | None = None) -> dict[str, object]:
     """Everything anova.json holds, for both test modes: the ANOVAs and cell means per mode;
     the tests of the paper's measure and its two parts (``OUTCOMES``): the all-trials RMSE's
     per-network contrasts under ``contrasts`` (the analysis used for inference), and per mode
     ``errors`` (wrong-grip rate) and ``correct_rt`` (correct-trial RMSE); the simple effects
     (``simple_effects``) under ``simple``. Every test names its ``family`` and its ``p_holm``
-    within it: the tests ``confirmatory`` declares (config ``confirmatory.tests``; none for a
-    run other than the config's own) are one family, every other test of a mode is that mode's
-    exploration (``EXPLORATION``, named with ``run`` where it is given: another run's families
-    are its own)."""
+    within it: every test of a mode is that mode's exploration of this run (``EXPLORATION``,
+    named with ``run`` where it is given: another run's families are its own). The paper's
+    claims are confirmed over fresh replications (``claims``), not on one run."""
     result: dict[str, object] = {}
     contrasts, simple = {}, {}
-    declared = confirmatory_keys(confirmatory)
     trials = with_outcomes(trials)
     family: list[tuple[str, dict]] = []
     for mode in MODES:
@@ -548,9 +582,7 @@ def analyse(trials: pd.DataFrame, confirmatory=(), run: str | None = None) -> di
             explore = explore.replace("exploration: ", f"exploration: run {run}, ")
         for outcome in OUTCOMES:
             tests = contrasts[mode] if outcome == "contrasts" else result[mode][outcome]
-            for term, test in tests.items():
-                declared_here = (mode, outcome, term) in declared
-                family.append((CONFIRMATORY if declared_here else explore, test))
+            family += [(explore, test) for test in tests.values()]
         family += [(explore, test) for test in simple[mode].values()]
     adjust_families(family)
     result["contrasts"] = contrasts

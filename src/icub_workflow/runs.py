@@ -17,6 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from icub_affordance.claims import seeds as claim_seeds
 from icub_affordance.spec import AFTER_PHASE1
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.configs import merged
@@ -353,9 +354,11 @@ def _sweep(config: Mapping[str, Any]) -> list[tuple[str, dict[str, Any]]]:
 
 def _readings(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
     """Every combination of cue timing and Goal response (config ``readings``), replicated at
-    the config's seed and, with robustness, at each of ``readings.seeds``."""
+    each of the confirmation's seeds (config ``confirmation``; with robustness its further
+    seeds too): the readings' replications are the confirmation's, whose family is the
+    readings at the config's Goal response."""
     readings = config["readings"]
-    seeds = [config["seed"], *(readings["seeds"] if config["robustness"] else [])]
+    seeds = claim_seeds(config["confirmation"], bool(config["robustness"]))
     table = []
     for cue, goal in itertools.product(readings["categorisation_cue"], readings["goal_response"]):
         for seed in dict.fromkeys(seeds):

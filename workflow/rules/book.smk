@@ -54,14 +54,20 @@ BOOK_DATA = {
     "signatures_summary.csv": "data/signatures/summary.csv",
     "signatures_errors.csv": "data/signatures/errors.csv",
     "signatures.png": "data/signatures/signatures.png",
+    "claims_summary.csv": "data/claims/summary.csv",
+    "claims_replications.csv": "data/claims/replications.csv",
+    "claims_power.csv": "data/claims/power.csv",
+    "claims_learning.csv": "data/claims/learning.csv",
+    "claims_forest.png": "data/claims/forest.png",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }
-# the Goal map under the other response, if a reading uses it (the readings chapter)
+# the Goal map under the other response, if a reading uses it (the readings chapter): its first
+# replication's
 _GROWS = [
     r["run"]
     for r in PLAN.readings
-    if r["goal_response"] == "grows" and r["seed"] == config["seed"]
+    if r["goal_response"] == "grows" and r["seed"] == PLAN.readings[0]["seed"]
 ]
 if _GROWS and config["soms"]["goal_response"] != "grows":
     BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(
@@ -85,7 +91,7 @@ FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif
 FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if config["robustness"] else ())]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
-    "robot", "size_dose", "signatures",
+    "robot", "size_dose", "signatures", "confirmation",
 ]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES

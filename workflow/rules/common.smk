@@ -202,7 +202,7 @@ def run_outputs(run):
     only, not tested in silico), its measures, and its robot test."""
     sweep_point = config["robustness"] and run in PLAN.sweep
     files = run_files(run, tests=run in PLAN.whole or sweep_point or not measured(run))
-    if measured(run):
+    if measured(run) or run == MAIN:  # the book reads the config's own run's measures too
         files += outputs("measures", run)
     if run in PLAN.robot_tested_runs:
         files += robot_files(run)
@@ -259,3 +259,16 @@ def signature_replications():
         }
         for row in rows
     ]
+
+
+def _claim_rows():
+    """The confirmation's replications: the readings' rows at the config's Goal response under
+    each declared cue timing, one per seed (config `confirmation`)."""
+    goal, cues = config["soms"]["goal_response"], config["confirmation"]["cues"]
+    return [r for r in PLAN.readings if r["goal_response"] == goal and r["cue"] in cues]
+
+
+CLAIM_ROWS = _claim_rows()
+# the replications of the config's own reading (its cue timing too): the signatures' networks
+# and the training curves the scorecard's learning row reads
+OWN_READING_ROWS = [r for r in CLAIM_ROWS if r["cue"] == config["network"]["categorisation_cue"]]

@@ -117,8 +117,6 @@ rule stats:
         json="data/{folder}eval/anova.json",
         table="data/{folder}eval/anova_table.md",
     params:
-        # the confirmatory family is the config's own run's alone
-        confirmatory=lambda w: settings(config["confirmatory"]) if run_of(w) == MAIN else [],
         # another run's exploration families carry its name (the own run's none)
         run=lambda w: None if run_of(w) == MAIN else run_of(w),
     log:

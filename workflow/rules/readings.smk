@@ -1,6 +1,6 @@
 # Which reading of the paper reproduces it (the book's reproduction notes): every reading (config
 # `readings`: cue timing x Goal response) is a run of the model (common.smk: PLAN.readings), one
-# replication at the config's seed and, with robustness, one per `readings.seeds`. Each run's
+# replication at each of the confirmation's seeds (config `confirmation`). Each run's
 # trials are scored on the declared measures (rule `measures`, for every run), and the rule
 # `readings` sets each effect against the paper over the replications, and tests the differences
 # between the cue timings and between the Goal responses.

@@ -1,7 +1,7 @@
 # The model against what people do (config `signatures`; the book's chapter of that name): the
 # compatibility effect's human signatures, each with the model condition declared for it, tested
-# at test time on the networks of the config's own reading, one replication per readings seed
-# that the build makes (with robustness, every readings.seeds replication as well).
+# at test time on the networks of the config's own reading, one replication per confirmation
+# seed that the build makes (config `confirmation`).
 
 
 SIGNATURE_REPLICATIONS = signature_replications()

@@ -9,7 +9,7 @@ from icub_affordance.stats import analyse, anova_table_markdown
 
 with redirect_log(snakemake.log[0]):
     trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)
-    result = analyse(trials, [dict(t) for t in snakemake.params.confirmatory], snakemake.params.run)
+    result = analyse(trials, snakemake.params.run)
     write_text(snakemake.output.json, json.dumps(result, indent=2, sort_keys=True) + "\n")
     write_text(snakemake.output.table, anova_table_markdown(result))
     print(anova_table_markdown(result))

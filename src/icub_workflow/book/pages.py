@@ -24,7 +24,7 @@ from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import MAIN
 
 from . import text
-from .scorecard import scorecard, signature_result, signature_scale
+from .scorecard import claims_values, scorecard, signature_result, signature_scale
 
 
 def _json(path) -> dict:
@@ -526,9 +526,12 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     curve = science.curve_summary(np.array([c["rmse"] for c in curves]), config["network"][
         "phase1_iterations"], curves[0]["iteration"].to_numpy())  # fmt: skip
     read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
-        "readings_summary", "size_summary", "robot_variants", "robot_confirmation",
-        "signatures_summary")}  # fmt: skip
-    score_values, score_table = scorecard(anova, curve, *read.values())
+        "claims_summary", "claims_learning", "size_summary", "robot_variants",
+        "robot_confirmation", "signatures_summary")}  # fmt: skip
+    score_values, score_table = scorecard(*read.values())
+    claim_values, claim_table = claims_values(
+        read["claims_summary"], pd.read_csv(inputs["claims_power.csv"]))  # fmt: skip
+    score_values |= claim_values
     pages, tables = {}, {}
     for page, (values, shown) in {
         "beyond": beyond(inputs, config, ablation_cue), "readings": readings(inputs, config),
@@ -543,7 +546,8 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         "reproduce": {"scale": scale | {"full": bool(config["robustness"])}},
         "settings": pd.json_normalize(quoted, sep=".").to_dict("records")[0],
     } | methods(inputs)  # fmt: skip
-    tables |= {"scorecard": score_table} | ({} if sweep is None else {"sweep": sweep})
+    tables |= {"scorecard": score_table, "claims": claim_table}
+    tables |= {} if sweep is None else {"sweep": sweep}
     return traced(pages), tables
 
 

@@ -4,6 +4,7 @@ the scale it was measured at."""
 
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 
 from icub_affordance import findings as science
@@ -38,49 +39,106 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
         f"bar {science.GRASPS:.0%}"  # fmt: skip
 
 
-def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFrame,
+def claim_key(row) -> str:
+    """A declared test's name in findings.json's ``index``."""
+    return "claim_" + "_".join(str(row[k]) for k in ("cue", "mode", "measure", "effect"))
+
+
+def claims_values(summary: pd.DataFrame, power: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
+    """The confirmatory family's values (``claim_<cue>_<mode>_<measure>_<effect>_*``: estimate,
+    interval, Holm p, verdict, power) and its table, a row per declared test."""
+    values: dict[str, object] = {}
+    rows = []
+    keyed = power.set_index(["cue", "mode", "measure", "effect"])
+    for _, row in summary.iterrows():
+        key = claim_key(row)
+        word = text.CLAIM_WORDS[row["direction"]]
+        values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p",
+                                                         "p_holm")}  # fmt: skip
+        values[f"{key}_estimable"] = int(row["estimable"])
+        values[f"{key}_verdict"] = text.Claim(word, (f"index.{key}_estimate",
+                                                     f"index.{key}_p_holm"))  # fmt: skip
+        planned = keyed.loc[(row["cue"], row["mode"], row["measure"], row["effect"])]
+        rows.append({
+            "claim": text.CLAIM_PARTS[row["effect"]], "measure": text.CLAIM_PARTS[row["measure"]],
+            "cue": text.CLAIM_PARTS[row["cue"]], "test": text.CLAIM_PARTS[row["mode"]],
+            "estimate [95% interval]": _interval(row),
+            "replications with an estimate": f"{int(row['estimable'])} of "
+                                             f"{int(row['replications'])}",
+            "Holm p": row["p_holm"], "verdict": word,
+            "power planned (at least)": float(planned["power_at_least"]),
+        })  # fmt: skip
+    for (mode, measure), group in summary.groupby(["mode", "measure"], sort=False):
+        both = [
+            cue
+            for cue, g in group.groupby("cue", sort=False)
+            if set(g.loc[g["direction"] == "paper", "effect"]) >= {"congruency", "size"}
+        ]
+        rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in group.iterrows())
+        said = text.listing((text.CLAIM_PARTS[c] for c in both), "none")
+        values[f"claims_both_{mode}_{measure}"] = text.Claim(said, rests)  # fmt: skip
+    counts = summary["direction"].map(text.CLAIM_WORDS).value_counts()
+    values["claims_counts"] = ", ".join(f"{counts[w]} {w}" for w in text.CLAIM_WORDS.values()
+                                        if w in counts)  # fmt: skip
+    values["claims_family_size"] = int(summary["family_size"].iloc[0])
+    values["claims_replications"] = int(summary["replications"].max())
+    return values, pd.DataFrame(rows)
+
+
+def _interval(row) -> str:
+    if not np.isfinite(row["estimate"]):
+        return "–"
+    if not np.isfinite(row["ci_low"]):
+        return f"{row['estimate']:+.4f} (no test)"
+    return f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]"
+
+
+def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
               variants: pd.DataFrame, confirmation: pd.DataFrame, signatures: pd.DataFrame
               ) -> tuple[dict, pd.DataFrame]:  # fmt: skip
-    """The scorecard's values (for ``findings.json``'s ``index``) and its table."""
+    """The scorecard's values (for ``findings.json``'s ``index``) and its table: the paper's
+    claims from the confirmation's replications (``claims``: data/claims/summary.csv), the
+    learning curve over the same replications, then this project's questions."""
     values: dict[str, object] = {}
     rows: list[dict[str, object]] = []
-    networks = anova["closed_loop"]["n_networks"]
-    own_scale = f"{networks} networks, one set of demonstrations"
+    replications = int(len(learning))
+    networks = int(learning["networks"].iloc[0])
+    scale = f"{replications} replications × {networks} networks"
 
-    def add(prefix, said, claim, paper, scale, chapter) -> None:
+    def add(prefix, said, claim, paper, measured_at, chapter) -> None:
         values.update(said[0])
         rows.append({"claim or question": claim, "paper": paper, "this build": said[1],
-                     "verdict": values[f"{prefix}_verdict"].text, "measured at": scale,
+                     "verdict": values[f"{prefix}_verdict"].text, "measured at": measured_at,
                      "chapter": chapter})  # fmt: skip
 
-    learnt = "reproduced" if curve["end"] <= PAPER_FINAL_RMSE else "not shown"
-    learn = {"score_learn_start": curve["start"], "score_learn_end": curve["end"],
+    end = float(learning["end"].mean())
+    learnt = "reproduced" if end <= PAPER_FINAL_RMSE else "not shown"
+    learn = {"score_learn_start": float(learning["start"].mean()), "score_learn_end": end,
+             "score_learn_end_low": float(learning["end"].min()),
+             "score_learn_end_high": float(learning["end"].max()),
              "score_learn_paper": PAPER_FINAL_RMSE,
              "score_learn_verdict": text.Claim(learnt, ("index.score_learn_end",))}  # fmt: skip
-    add("score_learn", (learn, f"{curve['start']:.3f} → {curve['end']:.3f}"),
-        "The arm learns to grasp (training RMSE)", f"≈0.3 → ≈{PAPER_FINAL_RMSE}", own_scale,
+    add("score_learn", (learn, f"{learn['score_learn_start']:.3f} → {end:.3f} (replications "
+                               f"{learn['score_learn_end_low']:.3f}–"
+                               f"{learn['score_learn_end_high']:.3f})"),
+        "The arm learns to grasp (training RMSE)", f"≈0.3 → ≈{PAPER_FINAL_RMSE}", scale,
         "results")  # fmt: skip
-    for effect, lower in (("congruency", "Congruent"), ("size", "Large")):
-        for trials, measure, term in (
-            ("all", "lower: all-trial RMSE (the paper's measure)",
-             anova["contrasts"]["closed_loop"][effect]),
-            ("correct", "faster: correct-trial RMSE (reaction time)",
-             anova["closed_loop"]["correct_rt"][effect]),
-        ):  # fmt: skip
-            cells = term.get("cells", {})
-            scale = own_scale if not cells else (f"{networks} networks; {min(cells.values())}-"
-                                                 f"{max(cells.values())} with a correct trial "
-                                                 "per cell")  # fmt: skip
-            prefix = f"score_{effect}_{trials}"
-            add(prefix, _tested(prefix, term), f"{lower} {measure}", PAPER_SAYS[effect], scale,
-                "results")  # fmt: skip
+    for _, row in claims.iterrows():
+        key = claim_key(row)
+        word = text.CLAIM_WORDS[row["direction"]]
+        said = {f"{key}_estimate": float(row["estimate"]), f"{key}_p_holm": float(row["p_holm"]),
+                f"score_{key}_verdict": text.Claim(word, (f"index.{key}_estimate",
+                                                          f"index.{key}_p_holm"))}  # fmt: skip
+        p = f"Holm p {row['p_holm']:.2g}" if np.isfinite(row["p_holm"]) else "no test"
+        add(f"score_{key}", (said, f"{_interval(row)}; {p} (confirmatory, "
+                                   f"{int(row['family_size'])} tests)"),
+            f"{text.CLAIM_PARTS[row['effect']]}: {text.CLAIM_PARTS[row['measure']]}; "
+            f"{text.CLAIM_PARTS[row['cue']]}, {text.CLAIM_PARTS[row['mode']]}",
+            PAPER_SAYS[row["effect"]],
+            f"{int(row['replications'])} replications × {networks} networks"
+            + ("" if row["estimable"] == row["replications"]
+               else f" ({int(row['estimable'])} with an estimate)"), "index")  # fmt: skip
     # this project's questions
-    key = (readings["measure"] == "rmse") & (readings["effect"] == "congruency")
-    other = readings[key & (readings["cue"] != readings["cue"].iloc[0])]
-    for _, row in other.head(1).iterrows():
-        add("score_reading", _tested("score_reading", {**row, "estimate": row["diff"]}),
-            f"Congruency under the other cue reading ({row['reading']})", "not asked",
-            f"{int(row['replications'])} replication(s) of 12 networks", "readings")  # fmt: skip
     for dose, name, question in (
         ("0.0", "maps", "Size effect with the maps' size difference removed"),
         ("equal_grips", "grips", "Size effect with each object's grips moved towards one distance"),
@@ -92,19 +150,20 @@ def scorecard(anova: dict, curve: dict, readings: pd.DataFrame, size: pd.DataFra
             said = _tested(f"score_size_{name}", {**row, "estimate": row["diff"]})
             add(f"score_size_{name}", said,
                 f"{question} (cue {row['cue'].replace('_', ' ')})", "not asked",
-                f"{int(row['replications'])} replications of 12 networks", "size")  # fmt: skip
+                f"{int(row['replications'])} replications × {networks} networks",
+                "size")  # fmt: skip
     own = variants[variants["run"] == variants["run"].iloc[0]].iloc[0]
     trials = int(own["grasping_trials"])
     low, high = science.held_interval(round(own["grasping_success"] * trials), trials)
     add("score_robot_own", _held("score_robot_own", own["grasping_success"], low, high, "exact"),
         "The paper's networks, driving the arm, hold the object", "not asked",
-        f"{int(own['networks'])} networks × {trials // int(own['networks'])} grasping trials",
-        "robot_test")  # fmt: skip
+        f"the robot test: this run's {int(own['networks'])} networks × "
+        f"{trials // int(own['networks'])} grasping trials", "robot_test")  # fmt: skip
     for _, row in confirmation[confirmation["seed_set"] == "confirmation"].head(1).iterrows():
         add("score_robot_best",
             _held("score_robot_best", row["share"], row["ci_low"], row["ci_high"], "clustered"),
             "A larger network, chosen then confirmed on fresh seeds, holds the object",
-            "not asked", f"{int(row['networks'])} fresh networks × "
+            "not asked", f"the robot test: {int(row['networks'])} fresh networks × "
             f"{int(row['trials'] // row['networks'])} grasping trials", "robot_test")  # fmt: skip
     for _, row in signatures[signatures["family"] == "signatures"].iterrows():
         prefix, name = f"score_signature_{row['signature']}", row["signature"]
@@ -144,9 +203,7 @@ def signature_result(row) -> str:
 
 
 def signature_scale(row) -> str:
-    """Where a signature's verdict was made: networks of one replication, or replications."""
+    """Where a signature's verdict was made: the replications with an estimate, out of all."""
     if not row["units"]:
         return "not posed" if isinstance(row["reason"], str) and row["reason"] else "no data"
-    if int(row["replications"]) > 1:
-        return f"{int(row['units'])} of {int(row['of'])} replications (full scale)"
-    return f"{int(row['units'])} of {int(row['of'])} networks, one replication"
+    return f"{int(row['units'])} of {int(row['of'])} replications"

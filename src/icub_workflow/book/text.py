@@ -170,3 +170,21 @@ def trend_phrase(term) -> str:
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
     return listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
+
+
+# -- the paper's claims over fresh replications ------------------------------------------------
+
+#: A declared test's verdict word for each ``claims.direction``.
+CLAIM_WORDS = {"paper": "confirmed", "reversed": "reversed", "none": "not shown",
+               "not assessable": "not assessable"}  # fmt: skip
+#: The words of a declared test's parts, for its row of the front page.
+CLAIM_PARTS = {
+    "congruency": "Congruent lower (incongruent − congruent)",
+    "size": "Large lower (small − large)",
+    "rmse": "all-trial RMSE (the paper's measure)",
+    "rmse_correct": "correct-trial RMSE (reaction time)",
+    "closed_loop": "closed loop",
+    "teacher_forced": "teacher forced",
+    "first_step": "cue at the first step",
+    "all_steps": "cue at every step",
+}

@@ -9,6 +9,7 @@
 #: findings are ``icub_workflow.book``'s); at full scale also the sweep's.
 TABLES = (
     "scorecard",
+    "claims",
     "readings_summary",
     "readings_differences",
     "robot_variants",

@@ -1,0 +1,53 @@
+# The paper's claims confirmed on fresh replications (config `confirmation`; the front page):
+# the readings' replications at the config's Goal response are the confirmation's runs (one per
+# declared cue timing and seed), each scored on the declared measures (rule measured_seed*);
+# rule `claims` tests each declared claim over them, Holm over the family, with the design's
+# power from the declared pilot. The forest plot is a plot rule.
+
+
+rule claims:
+    """Every declared test of the paper's claims over the confirmation's replications
+    (data/claims/summary.csv, contract), each replication's estimates, the design's power and
+    the replications' training RMSE."""
+    input:
+        measures=[PLAN.path(row["run"], "eval/measures.json") for row in CLAIM_ROWS],
+        curves=[
+            PLAN.path(row["run"], f"train/net{net}/curve.csv")
+            for row in OWN_READING_ROWS
+            for net in PLAN.networks(row["run"])
+        ],
+        pilot=config["confirmation"]["pilot"],
+        code=script_code("claims"),
+    output:
+        replications="data/claims/replications.csv",
+        summary="data/claims/summary.csv",
+        power="data/claims/power.csv",
+        learning="data/claims/learning.csv",
+    params:
+        rows=CLAIM_ROWS,
+        declaration=settings(config["confirmation"]),
+        seeds=[row["seed"] for row in OWN_READING_ROWS],
+        networks=config["network"]["networks"],
+        phase1_iterations=config["network"]["phase1_iterations"],
+    log:
+        "data/logs/claims/summary.log",
+    benchmark:
+        "data/benchmarks/claims/summary.tsv"
+    script:
+        "../scripts/claims.py"
+
+
+rule claims_figure:
+    """The answer at a glance: every declared test's estimate with its 95% interval, the paper's
+    direction marked, the verdict as its colour (plot only)."""
+    input:
+        summary=rules.claims.output.summary,
+        code=script_code("claims_figure"),
+    output:
+        "data/claims/forest.png",
+    log:
+        "data/logs/claims/figure.log",
+    benchmark:
+        "data/benchmarks/claims/figure.tsv"
+    script:
+        "../scripts/claims_figure.py"
