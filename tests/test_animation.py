@@ -113,3 +113,18 @@ def test_the_films_want_two_networks_one_of_each_mapping():
         filmed_networks(None, settings, [0], ["w0.npz"], ["t0.csv"])
     with pytest.raises(ValueError, match="one of each is needed"):  # 0 and 1 both learn A
         filmed_networks(None, settings, [0, 1], ["w0.npz", "w1.npz"], ["t0.csv", "t1.csv"])
+
+
+def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run(tmp_path):
+    """A confirmation's networks 12..23: 12-17 learned mapping A, 18-23 B (the first half A,
+    as in training). So 12 and 18 are one of each and pass to their files (missing here);
+    12 and 13 are both A; the exploration's 0 and 6 are not networks of this run."""
+    settings = {"networks": 12, "first_network": 12}
+    settings |= {"categorisation_cue": "all_steps", "target": "commands"}
+    files = [str(tmp_path / f"w{n}.npz") for n in (12, 18)], ["t12.csv", "t18.csv"]
+    with pytest.raises(FileNotFoundError, match="w12.npz"):
+        filmed_networks(None, settings, [12, 18], *files)
+    with pytest.raises(ValueError, match="one of each is needed"):
+        filmed_networks(None, settings, [12, 13], *files)
+    with pytest.raises(ValueError, match=r"not the run's \(12..23\)"):
+        filmed_networks(None, settings, [0, 6], *files)

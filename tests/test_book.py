@@ -6,8 +6,10 @@ import json
 import re
 import shutil
 
+import pandas as pd
 import pytest
-from conftest import run_snakemake
+import yaml
+from conftest import load_test_config, run_snakemake
 
 HTML = "book/_build/html"
 
@@ -141,3 +143,43 @@ def test_a_rebuild_from_the_same_outputs_gives_the_same_pages(built, tmp_path):
     # the DAG drawing on the reproduce page, the pipeline's rulegraph.png
     drawn = [(root / HTML / "_images" / "rulegraph.png").read_bytes() for root in (built, copy)]
     assert drawn[0] == drawn[1]
+
+
+def seen(page: str) -> str:
+    """A page's text as a reader sees it (tags dropped, spaces joined)."""
+    return " ".join(re.sub(r"<[^>]+>", " ", page).split())
+
+
+@pytest.mark.slow
+def test_the_robot_chapter_compares_variants_only_where_the_build_tests_them(built, html, tmp_path):
+    """Issue 47: the default build tests the config's own networks alone beside the
+    confirmation, so the robot chapter compares no variants, says that the full scale does,
+    shows the fresh networks' row alone and films the confirmation's fresh networks. Listing the
+    confirmed variant in robot.default (as the full scale tests the whole grid) brings the
+    comparison, the figure of success against training, the exploration's row and films of its
+    networks 0.. into the chapter."""
+    page = seen(html["robot_test"])
+    assert "This build therefore compares no variants" in page and "at full scale only" in page
+    assert "robot_variants.png" not in html["robot_test"] and not re.search(r"\bnan\b", page)
+    assert "best variant" not in page
+    nets = load_test_config()["robot"]["confirmation"]
+    first, count = nets["first_network"], nets["networks"]
+    assert f"networks {first} and {first + count // 2}" in page
+    table = pd.read_csv(built / "data/embodied/confirmation.csv")
+    assert table["seed_set"].tolist() == ["confirmation"]
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    config = load_test_config()
+    config["robot"]["default"] = [{"target": "commands", "hidden": 10, "iterations": 1200}]
+    path = tmp_path / "listed.yaml"
+    path.write_text(yaml.safe_dump(config))
+    result = run_snakemake(copy, "-c2", config=path)
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+    listed = (copy / HTML / "robot_test.html").read_text()
+    words = seen(listed)
+    assert "compares no variants" not in words and "the variant that grasps most often" in words
+    assert "_images/robot_variants.png" in listed and not re.search(r"\bnan\b", words)
+    assert "networks 0 and 2" in words  # the films: the variant's own networks now
+    table = pd.read_csv(copy / "data/embodied/confirmation.csv")
+    assert table["seed_set"].tolist() == ["exploration", "confirmation"]
+    assert f"there it held the object in {table['held'][0]} of {table['trials'][0]}" in words

@@ -82,28 +82,39 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c.update(objects=["small_ball", "big_cube", "small_cube"]),
             ["figures.embodied.object", "big_ball", "objects"],
         ),
-        # a robot variant of the default run outside the grid; an animation of an untested one
+        # a robot variant of the default build outside the grid; an animation of a variant the
+        # default build does not test (not the own networks, robot.default or a confirmation)
         (
             lambda c: c["robot"]["default"].append(
                 {"target": "commands", "hidden": 80, "iterations": 12000}
             ),
-            ["robot.default[3]", "'hidden': 80", "grid", "Fix"],
+            ["robot.default[0]", "'hidden': 80", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["animation"].update(
                 variant={"target": "sensed", "hidden": 40, "iterations": 12000}
             ),
-            ["robot.animation.variant", "'hidden': 40", "robot.default", "Fix"],
+            ["robot.animation.variant", "'hidden': 40", "robot.default", "Fix"]
+            + ["robot.confirmation.variants", "fresh networks"],
         ),
-        # a cue timing outside the grid's
+        # an entry's cue timing outside the grid's (an entry that leaves it out has the network's)
         (
-            lambda c: c["robot"].update(categorisation_cue=["all_steps"]),
-            ["robot.default[1]", "categorisation_cue first_step", "grid", "Fix"],
+            lambda c: (
+                c["robot"].update(categorisation_cue=["all_steps"]),
+                c["robot"]["default"].append(
+                    {"target": "commands", "hidden": 40, "iterations": 768000}
+                ),
+            ),
+            ["robot.default[0]", "categorisation_cue first_step", "grid", "Fix"],
         ),
-        # a learning-rate schedule outside the grid's
+        # a confirmed variant whose cue timing or schedule the grid does not explore
+        (
+            lambda c: c["robot"].update(categorisation_cue=["first_step"]),
+            ["robot.confirmation.variants[0]", "'categorisation_cue': 'all_steps'", "grid"],
+        ),
         (
             lambda c: c["robot"].update(learning_rate_schedule=["constant"]),
-            ["robot.default[2]", "learning_rate_schedule anneal", "grid", "Fix"],
+            ["robot.confirmation.variants[0]", "'learning_rate_schedule': 'anneal'", "grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["tolerance"].update(noise=[0.01, 0.02]),
@@ -113,13 +124,14 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["animation"].update(object="pear"),
             ["robot.animation.object", "pear", "objects"],
         ),
-        # a confirmation of an untested variant, on the exploration's networks, past net99
+        # a confirmation of a variant no exploration tried, on the exploration's networks,
+        # past net99
         (
             lambda c: c["robot"]["confirmation"]["variants"].append(
-                {"categorisation_cue": "first_step", "target": "sensed", "hidden": 20}
+                {"categorisation_cue": "first_step", "target": "sensed", "hidden": 80}
                 | {"iterations": 48000, "learning_rate_schedule": "anneal"}
             ),
-            ["robot.confirmation.variants[1]", "'hidden': 20", "not tested", "Fix"],
+            ["robot.confirmation.variants[1]", "'hidden': 80", "not a variant of the grid", "Fix"],
         ),
         (
             lambda c: c["robot"]["confirmation"].update(first_network=6),
@@ -165,6 +177,25 @@ def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change,
     message = refusal(change)
     for word in words:
         assert word in message, (word, message)
+
+
+def test_a_confirmed_variant_of_the_grid_need_not_be_tested_in_the_default_build():
+    """The exploration is the grid's, tested at full scale: a confirmed variant that the default
+    build does not test on networks 0.. (robot.default empty) passes, and so does an animation
+    of it (its fresh networks are filmed); the same variant outside the grid is refused, once:
+    the animation of a confirmed variant is not a second fault."""
+    config = load_config()
+    config["robot"]["default"] = []
+    entry = {"categorisation_cue": "first_step", "target": "sensed", "hidden": 20}
+    entry |= {"iterations": 48000, "learning_rate_schedule": "anneal"}
+    config["robot"]["confirmation"]["variants"] = [entry]
+    config["robot"]["animation"]["variant"] = entry
+    check_config(config)
+    config["robot"]["hidden"] = [10, 40]
+    with pytest.raises(ConfigError) as info:
+        check_config(config)
+    assert "robot.confirmation.variants[0]" in str(info.value)
+    assert "robot.animation.variant" not in str(info.value)
 
 
 def test_the_default_confirmation_is_fresh_and_large_enough():

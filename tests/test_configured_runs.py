@@ -108,21 +108,24 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
 def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, tmp_path):
     """The cue timing is a dimension of the robot grid: the variant with the config's network
     settings under the other cue is the cue ablation's run (tested on the robot, not retrained);
-    any other is a new run named by its cue timing."""
+    any other is a new run named by its cue timing. The servo-target variant under both cue
+    timings shares one phase 1."""
     config = load_test_config()
     config["robot"]["categorisation_cue"] = ["first_step", "all_steps"]
     own = {k: config["network"][k] for k in ("target", "hidden", "iterations")}
+    commands = {"target": "commands", "hidden": 10, "iterations": 1200}
     config["robot"]["default"] += [
         {"categorisation_cue": "all_steps"} | own,
-        {"categorisation_cue": "all_steps", "target": "commands", "hidden": 10, "iterations": 1200},
+        commands,
+        {"categorisation_cue": "all_steps"} | commands,
     ]
     path = tmp_path / "robot.yaml"
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    # the new variant, and the built one that now shares its phase 1 (the cue acts only after
-    # it: runs.RunPlan.phase1_run) and continues from it, to the same bits as before, so its
-    # robot test and film run again too
+    # the two servo-target variants, which share a phase 1 (the cue acts only after it:
+    # runs.RunPlan.phase1_run) and continue from it; the animated variant, listed now, is
+    # filmed on its networks 0.. instead of the confirmation's fresh ones, so the film runs too
     assert jobs.pop("run_phase1") == 1
     assert jobs.pop("run_train") == 2 and jobs.pop("run_robot_test") == 3
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
@@ -132,7 +135,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
-    shown.add("robot_animation")  # films the retrained variant
+    shown.add("robot_animation")  # films the variant's networks 0.. (listed in robot.default)
     assert set(jobs) <= shown, jobs
 
 
@@ -188,10 +191,17 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     """Config robot.confirmation (issue 24): the confirmed variant is a run of its own whose
     networks are the fresh indices first_network.., trained from the main run's demonstrations
     and maps (none of its own), mapping by place in the run (first half A), tested on the
-    robot; its networks start from other weights than the exploration's, so they end elsewhere.
-    Planned from scratch, the run's jobs are one training job and one robot job."""
+    robot; its networks start from other weights than the exploration's, so they end elsewhere
+    (the exploration's, which this build does not train, trained here from the same files).
+    Planned from scratch, the run's jobs are one training job and one robot job; the table has
+    the fresh networks' row alone (issue 47: robot.default is empty, so the build tests the
+    variant on no other networks)."""
     import numpy as np
     import pandas as pd
+
+    from icub_affordance.train import load_materials
+    from icub_workflow.runs import plan_runs
+    from icub_workflow.steps import train_networks
 
     config = load_test_config()
     confirmation = config["robot"]["confirmation"]
@@ -210,20 +220,27 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     for net in nets:
         assert f"data/runs/{run}/train/net{net}/weights.npz" in plan
     assert sum("rule confirmation_robot_test:" in job for job in jobs) == 1
-    # the built run: fresh networks, their robot trials, and the table
-    for k, net in enumerate(nets):
-        fresh = np.load(built / f"data/runs/{run}/train/net{net}/weights.npz")
-        old = np.load(built / f"data/runs/{explored}/train/net{k:02d}/weights.npz")
+    assert f"data/runs/{explored}/" not in plan  # the exploration is not part of this build
+    # the built run: fresh networks, unlike the exploration's at 0.., their trials, the table
+    data = built / "data"
+    materials = load_materials(*(data / f for f in (
+        "vision/visual_maps.npz", "soms/soms.npz", "demos/demos.npz")))  # fmt: skip
+    weights = [tmp_path / f"explored{k:02d}.npz" for k in range(count)]
+    network = plan_runs(config | {"robustness": False}).config(explored)["network"]
+    curves = [tmp_path / f"curve{k:02d}.csv" for k in range(count)]
+    train_networks(materials, network, config["seed"], list(range(count)), curves, weights)
+    for net, path in zip(nets, weights, strict=True):
+        fresh, old = np.load(data / f"runs/{run}/train/net{net}/weights.npz"), np.load(path)
         assert fresh["W1"].shape == old["W1"].shape and not np.allclose(fresh["W1"], old["W1"])
     trials = pd.read_csv(built / "data/embodied/confirmation_trials.csv")
     assert sorted(trials["network"].unique()) == list(range(first, first + count))
     mapping = trials.drop_duplicates("network").set_index("network")["mapping"]
     assert list(mapping) == ["A"] * (count // 2) + ["B"] * (count // 2)
     table = pd.read_csv(built / "data/embodied/confirmation.csv")
-    assert list(table["seed_set"]) == ["exploration", "confirmation"]
-    assert list(table["run"]) == [explored, run]
-    assert list(table["networks"]) == [config["network"]["networks"], count]
-    assert list(table["trials"]) == [4 * config["network"]["networks"], 4 * count]
+    assert list(table["seed_set"]) == ["confirmation"] and list(table["run"]) == [run]
+    assert list(table["networks"]) == [count] and list(table["trials"]) == [4 * count]
+    span = table["first_network"].item(), table["last_network"].item()
+    assert span == (first, first + count - 1)
 
 
 @pytest.mark.slow  # runs Snakemake

@@ -16,6 +16,7 @@ from icub_affordance.confirmation import (
     clustered_interval,
     confirmation_table,
 )
+from icub_affordance.variants import NetworkVariant
 
 OBJECTS = ("big_ball", "small_ball", "big_cube", "small_cube")
 
@@ -150,6 +151,23 @@ def test_the_table_counts_each_network_and_object_once():
         (expected["ci_low"], expected["ci_high"])
     )
     assert row["design_effect_raw"] == pytest.approx(expected["design_effect_raw"])
+
+
+def test_without_the_exploration_the_table_has_the_confirmations_row_alone():
+    """The default build does not test the variant on the networks it was chosen on (its
+    exploration None): the table is the full table's confirmation row, the same numbers; a
+    variant without a confirmation run is refused."""
+    explored = {n: [True, True, n % 3 > 0, True] for n in range(12)}
+    fresh = {n: [True, n % 2 == 0, True, True] for n in range(12, 24)}
+    both = pd.concat([robot_trials("explore", explored), robot_trials("confirm", fresh)])
+    full = confirmation_table(both, confirmed(exploration="explore", confirmation="confirm"))
+    alone = confirmation_table(
+        robot_trials("confirm", fresh), confirmed(exploration=None, confirmation="confirm")
+    )
+    assert list(alone["seed_set"]) == ["confirmation"] and list(alone["run"]) == ["confirm"]
+    pd.testing.assert_frame_equal(alone, full.iloc[[1]].reset_index(drop=True))
+    with pytest.raises(ValueError, match="no confirmation run"):
+        confirmation_table(both, confirmed(exploration="explore", confirmation=None))
 
 
 def test_the_table_shows_the_misses_per_mapping_and_object():
@@ -331,3 +349,92 @@ def test_every_confirmed_variant_is_in_the_table():
 def test_no_confirmed_variant_says_so():
     out, shown = page(confirmation_csv().iloc[0:0])
     assert shown.empty and out["robot_test"]["confirmation_bar"].startswith("is not tested")
+
+
+# -- the chapter at either scale: the exploration's row, the comparison of variants, the films
+
+
+def test_without_the_exploration_row_the_page_says_where_that_share_is():
+    """The default build's table (the fresh networks' row alone): the bar's verdict and the
+    counts are the confirmation's, as with both rows; the exploration's sentence says the full
+    scale shows that share, and gives no count; with the row, it gives the row's counts."""
+    from icub_workflow.book import pages
+
+    both = confirmation_csv(explore=(30, 0.45, 0.78))
+    alone = both[both["seed_set"] == "confirmation"].reset_index(drop=True)
+    full, fresh = page(both)[0]["robot_test"], page(alone)[0]["robot_test"]
+    assert "exploration_held" not in fresh and full["exploration_held"] == 30
+    for key in ("confirmation_bar", "confirmation_held", "confirmation_ci_low", "bar"):
+        assert fresh[key] == full[key], key
+    assert page(alone)[1]["seed_set"].tolist() == ["confirmation"]
+    said = pages._exploration(page(alone)[1])
+    assert said["explored"] is False and "full scale" in said["exploration_words"]
+    assert not any(ch.isdigit() for ch in said["exploration_words"])
+    said = pages._exploration(page(both)[1])
+    assert said["explored"] is True and "30 of 48" in said["exploration_words"]
+
+
+def robot_config(default: list[dict], robustness: bool = False) -> dict:
+    """The config's sections the robot chapter reads, with ``default`` as robot.default."""
+    from conftest import load_config
+
+    config = load_config() | {"robustness": robustness}
+    return config | {"robot": config["robot"] | {"default": default}}
+
+
+def variants_csv(runs: list[str], palm: list[float], held: list[float]) -> pd.DataFrame:
+    """data/embodied/variants.csv's columns the scope reads: a run's grasping share, palm."""
+    return pd.DataFrame({"run": runs, "grasping_palm_error_mm": palm, "grasping_success": held})
+
+
+def test_the_default_build_compares_no_variants_and_says_the_full_scale_does():
+    """With the own networks alone (the default build), the comparison is left to the full
+    scale in one sentence whose counts are the config's (its grid, networks 0..11), and the
+    effects and palm are the own networks'; with more variants (robot.default's entries, or
+    the grid at full scale) they are compared and the effects are the best variant's."""
+    from icub_workflow.book import pages
+
+    own = variants_csv(["main"], [41.0], [0.2])
+    records = {"own": own.iloc[0].to_dict(), "best": own.iloc[0].to_dict()}
+    config = robot_config([])
+    grid = int(np.prod([len(config["robot"][k]) for k in NetworkVariant.keys()]))
+    alone = pages._robot_scope(config, own, records)
+    assert alone["compared"] is False and alone["grid_variants"] == grid  # the own among them
+    assert alone["explored_networks"] == "0-11" and alone["seed"] == 2009
+    assert f"{grid} variants on networks 0-11" in alone["scope"] and "full scale" in alone["scope"]
+    assert alone["effects_subject"] == "the config's own networks"
+    assert alone["palm_compared"].startswith("the config's own networks' palm ends a median 41.0")
+    assert "best variant" not in " ".join(str(v) for v in alone.values())
+    two = variants_csv(["main", "robot_x"], [41.0, 12.5], [0.2, 0.9])
+    records["best"] = two.iloc[1].to_dict()
+    listed = pages._robot_scope(robot_config([{"target": "commands"}]), two, records)
+    assert listed["compared"] is True and listed["scope"] == ""
+    assert listed["tested_variants"].startswith("2 variants") and "robot.default" in listed[
+        "tested_variants"]  # fmt: skip
+    assert listed["effects_subject"] == "the best variant" and "12.5" in listed["palm_compared"]
+    full = pages._robot_scope(robot_config([], robustness=True), two, records)
+    assert full["tested_variants"].startswith("every variant of the grid")
+
+
+def test_a_confirmed_animation_names_the_fresh_networks_it_films():
+    """The films of a confirmed variant the default build tests only on fresh networks show
+    the confirmation's first network of each mapping (12 and 18 of 12-23); listed in
+    robot.default, its networks 0 and 6."""
+    from icub_workflow.book import pages
+
+    _, shown = page(confirmation_csv())
+    fresh = pages._animated(robot_config([]), shown)
+    assert fresh == {
+        "animated_film": "network 12, the first of its confirmation's fresh networks",
+        "animated_pair": "networks 12 and 18",
+    }
+    entry = load_config_animation()
+    listed = pages._animated(robot_config([entry]), shown)
+    assert listed == {"animated_film": "network 0, its first",
+                      "animated_pair": "networks 0 and 6"}  # fmt: skip
+
+
+def load_config_animation() -> dict:
+    from conftest import load_config
+
+    return dict(load_config()["robot"]["animation"]["variant"])

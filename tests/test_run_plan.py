@@ -228,15 +228,83 @@ def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
     assert all(same.rule_for(run, "train") == "run_train" for run in same.confirmation_runs)
 
 
+#: The variants earlier default builds tested beside the config's own networks: 40 hidden,
+#: 768,000 iterations, under both cue timings and (every step) with the annealed rate.
+EARLIER_DEFAULT = [
+    {"categorisation_cue": "all_steps", "target": "commands", "hidden": 40, "iterations": 768000},
+    {"categorisation_cue": "first_step", "target": "commands", "hidden": 40, "iterations": 768000},
+    {"categorisation_cue": "all_steps", "target": "commands", "hidden": 40, "iterations": 768000}
+    | {"learning_rate_schedule": "anneal"},
+]
+
+
+def with_default(config: dict, entries: list[dict]) -> dict:
+    """The config with ``entries`` as robot.default."""
+    return config | {"robot": config["robot"] | {"default": entries}}
+
+
+def test_the_default_build_tests_the_own_networks_and_the_confirmations_alone(plan, config):
+    """Issue 47: the default build pays for no exploration on the robot: it tests the config's
+    own networks (a job each) and each confirmed variant on its fresh networks, nothing else;
+    the full scale tests every variant of the grid on networks 0.. as well, the confirmed
+    variant's exploration among them."""
+    assert config["robot"]["default"] == []
+    assert plan.robot_runs == [MAIN]
+    assert plan.robot_tested_runs == [MAIN, *plan.confirmation_runs]
+    assert plan.confirmation_runs == ["robot_commands_h40_it768000_all_steps_anneal_confirm"]
+    assert [row["run"] for row in plan.robot_tested] == [MAIN]
+    assert plan.served_by("run_robot_test", "robot_test") == []
+    assert plan.phase1_owners == []  # no variant trains on networks 0.., so no shared phase 1
+    full = plan_runs(config | {"robustness": True})
+    grid = {NetworkVariant.of(v.row(), config["network"]) for v in NetworkVariant.grid(
+        config["robot"])}  # fmt: skip
+    assert {NetworkVariant.from_row(r) for r in full.robot_tested} == grid
+    assert full.robot_tested_runs == [*full.robot_runs, *full.confirmation_runs]
+    explored = [row["exploration"] for row in full.confirmation]
+    assert set(explored) <= set(full.robot_runs) and len(full.robot_runs) == len(grid)
+
+
+def test_the_exploration_row_is_tested_only_where_the_build_tests_its_run(plan, config):
+    """The confirmation table's exploration run: None in the default build (not tested there),
+    the grid's run at full scale, and in the default build once robot.default lists it."""
+    (row,) = plan.confirmation_tested
+    explored = plan.confirmation[0]["exploration"]
+    assert row == plan.confirmation[0] | {"exploration": None}
+    (full,) = plan_runs(config | {"robustness": True}).confirmation_tested
+    assert full == plan.confirmation[0] and full["exploration"] == explored
+    (listed,) = plan_runs(with_default(config, EARLIER_DEFAULT[2:])).confirmation_tested
+    assert listed["exploration"] == explored
+
+
+def test_a_confirmed_animation_films_the_confirmations_fresh_networks(plan, config):
+    """The animated variant is the confirmed one, not tested on networks 0.. in the default
+    build: the films show its confirmation run's first network of each mapping (fresh indices
+    12.., the first half mapping A: 12 and 18; 12 and 30 of the full scale's 36). Listed in
+    robot.default, or the config's own networks, it is filmed on networks 0 and 6; a variant
+    the default build does not test is refused."""
+    entry = config["robot"]["animation"]["variant"]
+    run = plan.confirmation_runs[0]
+    assert plan.animated(entry) == (run, ["12", "18"])
+    assert plan_runs(config | {"robustness": True}).animated(entry) == (run, ["12", "30"])
+    listed = plan_runs(with_default(config, EARLIER_DEFAULT[2:]))
+    assert listed.animated(entry) == (plan.confirmation[0]["exploration"], ["00", "06"])
+    assert plan.animated(config["network"]) == (MAIN, ["00", "06"])
+    with pytest.raises(ValueError, match="not tested in the default build"):
+        plan.animated({"target": "sensed", "hidden": 20, "iterations": 48000})
+
+
 def test_robot_variants_that_differ_only_after_phase_1_share_it(plan, config):
-    """The default's three variants (40 hidden, 768,000 iterations: two cue timings, two
-    schedules) share one phase 1; the config's own run and a confirmation (fresh networks)
-    train whole. With robustness, each tested group of cue timings x schedules shares."""
+    """Earlier defaults' three variants (40 hidden, 768,000 iterations: two cue timings, two
+    schedules), listed in robot.default, share one phase 1; the config's own run and a
+    confirmation (fresh networks) train whole. With robustness, each tested group of cue
+    timings x schedules shares."""
+    listed = plan_runs(with_default(config, EARLIER_DEFAULT))
     first = "robot_commands_h40_it768000"
     for run in (first, f"{first}_all_steps", f"{first}_all_steps_anneal"):
-        assert plan.phase1_run(run) == first
-    assert plan.phase1_run(MAIN) is None
-    assert all(plan.phase1_run(run) is None for run in plan.confirmation_runs)
+        assert listed.phase1_run(run) == first
+    assert listed.phase1_run(MAIN) is None
+    assert all(listed.phase1_run(run) is None for run in listed.confirmation_runs)
+    assert all(plan.phase1_run(run) is None for run in plan.runs)  # the default tests none
     full = plan_runs(config | {"robustness": True})
     owners = {}
     for run in full.runs:

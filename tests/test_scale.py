@@ -191,6 +191,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
         robot["target"], robot["hidden"], robot["iterations"]
     )
     assert counts["run_robot_test"] == variants - own
+    assert counts["confirmation_robot_test"] == 1  # the confirmation, as in the default build
     # the cue ablation, the sweep points (a point that is also a reading's replication is trained
     # with its seed's measured runs) and the robot variants; the readings are measured runs
     assert counts["run_train"] == 1 + points - shared + variants - own
@@ -230,6 +231,10 @@ def planned(dry_run_output: str) -> list[dict[str, str]]:
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
     counts, book_inputs = dry_run(scratch_workflow(tmp_path))
     assert counts["book"] == 1
+    # nor for the robot grid (issue 47): the own networks (a job each) and the confirmation
+    networks = load_test_config()["network"]["networks"]
+    assert counts["robot_test"] == networks and counts["confirmation_robot_test"] == 1
+    assert "run_robot_test" not in counts and "run_phase1" not in counts, counts
     assert not [rule for rule in counts if rule.startswith("sweep")], counts
     assert not [n for n in book_inputs if n.startswith("data/") and "sweep" in n], book_inputs
 

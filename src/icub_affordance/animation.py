@@ -85,14 +85,19 @@ def filmed_networks(
     trials_files: list[str],
 ) -> list[FilmedNetwork]:
     """The two networks to film, one of each mapping, from their weights and the robot test's
-    trials files; ``settings`` is the run's ``network`` section. Raises where they are not two
-    networks of different mappings, or a trials file is not as long as the test (stale)."""
+    trials files; ``settings`` is the run's ``network`` section. A network's mapping is by its
+    place in the run, as in training: a confirmation's fresh networks start at its
+    ``first_network``. Raises where they are not two networks of the run of different mappings,
+    or a trials file is not as long as the test (stale)."""
     if not len(nets) == len(weights_files) == len(trials_files) == 2:
         raise ValueError(
             f"two networks (one of each mapping) with their weights and trials, not {nets}, "
             f"{len(weights_files)} weights and {len(trials_files)} trials files"
         )
-    mappings = [mapping_of(net, settings["networks"]) for net in nets]
+    first, count = int(settings.get("first_network", 0)), int(settings["networks"])
+    if not all(first <= net < first + count for net in nets):
+        raise ValueError(f"networks {nets} are not the run's ({first}..{first + count - 1})")
+    mappings = [mapping_of(net - first, count) for net in nets]
     if sorted(mappings) != ["A", "B"]:
         raise ValueError(f"networks {nets} learned mappings {mappings}: one of each is needed")
     films = []

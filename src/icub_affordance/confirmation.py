@@ -131,20 +131,25 @@ def object_counts(grasping: pd.DataFrame) -> dict[str, int]:
 def confirmation_table(
     trials: pd.DataFrame, confirmation: Sequence[Mapping[str, object]], level: float = 0.95
 ) -> pd.DataFrame:
-    """One row per confirmed variant and seed set (``SEED_SETS``): the variant's keys, then
-    ``COLUMNS``, then ``DETAIL_COLUMNS``, from its grasping trials counted once per network and
-    object.
+    """One row per confirmed variant and seed set (``SEED_SETS``) tested: the variant's keys,
+    then ``COLUMNS``, then ``DETAIL_COLUMNS``, from its grasping trials counted once per network
+    and object.
 
     ``trials``: robot trials with columns run, network, mapping, task, object, success (e.g.
     data/embodied/trials.csv with the confirmation's joined); ``confirmation``: one mapping per
     variant, its keys (``variants.NetworkVariant.keys()``) and the runs ``exploration`` and
-    ``confirmation``.
+    ``confirmation``. An ``exploration`` of None (a build that does not test the variant on the
+    networks it was chosen on: the default build) has no row; the confirmation always has one.
     """
     rows = []
     for variant in confirmation:
         keys = {k: v for k, v in variant.items() if k not in SEED_SETS}
+        if variant["confirmation"] is None:
+            raise ValueError(f"the confirmed variant {keys} names no confirmation run")
         for seed_set in SEED_SETS:
             run = variant[seed_set]
+            if run is None:  # the exploration, not tested in this build
+                continue
             mine = distinct_grasping_trials(trials[trials["run"] == run])
             if mine.empty:
                 raise ValueError(f"no grasping trials of run {run!r} ({seed_set})")

@@ -290,14 +290,16 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
                 f"{', '.join(str(robot[k]) for k in keys)}. Fix: add its values to the grid or "
                 "change the entry."
             )
+    confirmed = [NetworkVariant.of(v, network) for v in robot["confirmation"]["variants"]]
     animated = robot["animation"]["variant"]
-    if NetworkVariant.of(animated, network) not in listed:
+    if NetworkVariant.of(animated, network) not in [*listed, *confirmed]:
         yield (
-            f"{key('robot.animation.variant')}: {animated} is not tested in the default run. "
-            f"Allowed: the config's own networks ({_variant_words(own)}) or an entry of "
-            "robot.default. Fix: pick one of them or add it to robot.default."
+            f"{key('robot.animation.variant')}: {animated} is not tested in the default build. "
+            f"Allowed: the config's own networks ({_variant_words(own)}), an entry of "
+            "robot.default, or a variant of robot.confirmation.variants (its fresh networks "
+            "are filmed). Fix: pick one of them or add it to robot.default."
         )
-    yield from _confirmation_problems(config, listed, key)
+    yield from _confirmation_problems(config, [own, *grid], key)
     undated = sorted(
         set(config["readings"]["equivalence_margin"]) - set(config["readings"]["margin_declared"])
     )
@@ -354,18 +356,23 @@ def _variant_words(variant: NetworkVariant) -> str:
 
 
 def _confirmation_problems(
-    config: Mapping[str, Any], listed: list[NetworkVariant], key
+    config: Mapping[str, Any], explored: list[NetworkVariant], key
 ) -> Iterator[str]:
-    """Config robot.confirmation: variants tested in the default run, on network indices the
-    exploration never used, whose names fit the two-digit `net{NN}` folders."""
-    confirmation, network = config["robot"]["confirmation"], config["network"]
+    """Config robot.confirmation: variants the exploration tries (``explored``: the config's
+    own networks and the grid, every one tested at full scale; the default build need not test
+    them on networks 0.. again), on network indices the exploration never used, whose names fit
+    the two-digit `net{NN}` folders."""
+    robot, network = config["robot"], config["network"]
+    confirmation, keys = robot["confirmation"], NetworkVariant.keys()
     for i, variant in enumerate(confirmation["variants"]):
-        if NetworkVariant.of(variant, network) not in listed:
+        if NetworkVariant.of(variant, network) not in explored:
             yield (
-                f"{key(f'robot.confirmation.variants[{i}]')}: {variant} is not tested in the "
-                "default run, so there is no exploration to confirm. Allowed: the config's own "
-                "networks or an entry of robot.default. Fix: pick one of them or add it to "
-                "robot.default."
+                f"{key(f'robot.confirmation.variants[{i}]')}: {variant} is not a variant of "
+                f"the grid {' x '.join(f'robot.{k}' for k in keys)} (a key it leaves out is the "
+                "network's), so no exploration tried it and there is nothing to confirm. "
+                "Allowed: the config's own networks or a combination of "
+                f"{', '.join(str(robot[k]) for k in keys)}. Fix: add its values to the grid or "
+                "confirm a variant of it."
             )
     first, explored = confirmation["first_network"], network["networks"]
     if first < explored:

@@ -194,8 +194,10 @@ class RunPlan:
 
     @property
     def robot_runs(self) -> list[str]:
-        """The robot variants tested in this build: those of robot.default (and the config's
-        own), or every one with robustness."""
+        """The robot variants tested in this build on the config's network indices: the
+        config's own networks and those of robot.default (none in the shipped config), or every
+        variant of the grid with robustness (the exploration). The confirmations' fresh
+        networks are tested beside them (``robot_tested_runs``)."""
         return [row["run"] for row in self.robot_tested]
 
     @property
@@ -205,6 +207,40 @@ class RunPlan:
     @property
     def confirmation_runs(self) -> list[str]:
         return [row["confirmation"] for row in self.confirmation]
+
+    @property
+    def confirmation_tested(self) -> list[dict[str, Any]]:
+        """The confirmation rows as this build tests them: a variant's exploration run (its
+        networks 0..) where this build tests it on the robot too (with robustness, or as an
+        entry of robot.default), else None. The default build confirms on the fresh networks
+        alone: the exploration was measured before (at full scale), and paying for it again in
+        every build would buy a share that cannot move the verdict, which is the fresh
+        networks'."""
+        tested = set(self.robot_runs)
+        return [
+            row | {"exploration": row["exploration"] if row["exploration"] in tested else None}
+            for row in self.confirmation
+        ]
+
+    def animated(self, entry: Mapping[str, Any]) -> tuple[str, list[str]]:
+        """The run the book's films show for config robot.animation.variant ``entry``, and its
+        first network of each mapping (the first half of a run's networks learn mapping A).
+        The variant's own run where the default build tests it (the config's own networks or
+        an entry of robot.default), else its confirmation's run: the fresh networks, so that
+        the films are made at either scale without the exploration (a config check refuses a
+        variant that is neither)."""
+        run = self.variant_run(entry)
+        if not next(row["default"] for row in self.robot_variants if row["run"] == run):
+            fresh = {row["exploration"]: row["confirmation"] for row in self.confirmation}
+            if run not in fresh:
+                raise ValueError(
+                    f"the animated variant {dict(entry)} is not tested in the default build: "
+                    "not the config's own networks, an entry of robot.default or a confirmed "
+                    "variant"
+                )
+            run = fresh[run]
+        nets = self.networks(run)
+        return run, [nets[0], nets[len(nets) // 2]]
 
     def phase1_run(self, run: str) -> str | None:
         """The run whose phase 1 this run's networks continue from (rule run_phase1), or None

@@ -142,9 +142,10 @@ rule robot_summary:
 
 rule robot_confirmation:
     """Explore, then confirm: each confirmed variant's share of grasping trials held (each
-    network and object once) on the networks it was chosen on and on fresh ones, with an
-    interval that takes a network's four objects as one cluster; and the fresh networks' robot
-    trials joined."""
+    network and object once) on fresh networks and, where this build tests it there (full
+    scale, or an entry of robot.default), on the networks it was chosen on, with an interval
+    that takes a network's four objects as one cluster; and the fresh networks' robot trials
+    joined."""
     input:
         trials=rules.robot_summary.output.trials,
         confirmation=[
@@ -155,7 +156,7 @@ rule robot_confirmation:
         table="data/embodied/confirmation.csv",
         trials="data/embodied/confirmation_trials.csv",
     params:
-        confirmation=PLAN.confirmation,
+        confirmation=PLAN.confirmation_tested,  # exploration None: not tested in this build
         variant_keys=list(NetworkVariant.keys()),
     log:
         "data/logs/robot/confirmation.log",
@@ -214,9 +215,10 @@ rule robot_variants_figure:
         "../scripts/robot_variants_figure.py"
 
 
-# The variant the book animates (config robot.animation.variant): the config's own networks or
-# one of robot.default, so its robot test is part of the default run.
-ANIMATED_RUN = PLAN.variant_run(config["robot"]["animation"]["variant"])
+# The variant the book animates (config robot.animation.variant) and its first network of each
+# mapping: the config's own networks or an entry of robot.default on networks 0.., or a
+# confirmed variant on its fresh networks (RunPlan.animated), each tested in every build.
+ANIMATED_RUN, ANIMATED_NETWORKS = PLAN.animated(config["robot"]["animation"]["variant"])
 
 
 rule robot_animation:
@@ -226,9 +228,11 @@ rule robot_animation:
     input:
         unpack(lambda w: model_inputs({"folder": PLAN.folder(ANIMATED_RUN)})),
         weights=[
-            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in FILM_NETWORKS
+            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in ANIMATED_NETWORKS
         ],
-        trials=[robot_test_files(ANIMATED_RUN, "trials.csv")[int(net)] for net in FILM_NETWORKS],
+        trials=[
+            PLAN.path(ANIMATED_RUN, f"embodied/net{net}/trials.csv") for net in ANIMATED_NETWORKS
+        ],
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_animation"),
@@ -238,7 +242,7 @@ rule robot_animation:
     params:
         network=settings(PLAN.config(ANIMATED_RUN)["network"]),
         grip_distance=PLAN.config(ANIMATED_RUN)["grip_distance"],
-        networks=[int(net) for net in FILM_NETWORKS],
+        networks=[int(net) for net in ANIMATED_NETWORKS],
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
         object=config["robot"]["animation"]["object"],

@@ -1,7 +1,9 @@
-"""Explore, then confirm: each confirmed variant's share of grasping trials held on the networks
-it was chosen on (its rows of data/embodied/trials.csv) and on its fresh networks (the
-confirmation run's robot trials, joined here), with the interval of icub_affordance.confirmation,
-its design effect before the floor at 1, and the trials and held per mapping and object.
+"""Explore, then confirm: each confirmed variant's share of grasping trials held on its fresh
+networks (the confirmation run's robot trials, joined here) and, where this build tests it there
+(its exploration run named, not None: full scale, or an entry of robot.default), on the networks
+it was chosen on (its rows of data/embodied/trials.csv), with the interval of
+icub_affordance.confirmation, its design effect before the floor at 1, and the trials and held
+per mapping and object.
 """
 
 import pandas as pd

@@ -282,6 +282,83 @@ def _best_effects(effects: dict) -> dict:
     return out | {"robot_family": family["family"], "robot_family_size": family["family_size"]}
 
 
+def _robot_scope(config: dict, variants: pd.DataFrame, records: Mapping[str, dict]) -> dict:
+    """What this build tests on the robot on networks 0.., in the chapter's words. A build that
+    tests variants besides the config's own networks (the grid at full scale, or entries of
+    robot.default) compares them (``compared``), and its effects are the best variant's; the
+    default build tests the config's own networks alone beside the confirmation, so the
+    comparison is left to the full scale (``scope`` says so) and the effects are theirs."""
+    robot, network = config["robot"], config["network"]
+    grid = len(dict.fromkeys([NetworkVariant.of(network, network), *NetworkVariant.grid(robot)]))
+    n, explored = len(variants), f"0-{network['networks'] - 1}"
+    own, best = (records[k]["grasping_palm_error_mm"] for k in ("own", "best"))
+    values = {"compared": n > 1, "grid_variants": grid, "explored_networks": explored,
+              "seed": config["seed"]}  # fmt: skip
+    if config["robustness"]:
+        tested = f"every variant of the grid, {n} with the config's own networks"
+    else:
+        tested = f"{n} variants: the config's own networks and the {n - 1} of robot.default"
+    if n > 1:
+        return values | {
+            "tested_variants": tested,
+            "palm_compared": f"the best variant's palm ends a median {best:.1f} mm from the "
+            f"demonstrator's and the config's own networks' {own:.1f} mm",
+            "effects_subject": "the best variant", "effects_whose": "the best variant's",
+            "effects_note": "The best variant was chosen on these networks, so its effects "
+            "are exploration",
+            "every_variant_effects": "Every variant's effects and counts per cell:",
+            "scope": "",
+        }  # fmt: skip
+    return values | {
+        "tested_variants": "the config's own networks alone (robot.default lists no other "
+        "variant)",
+        "palm_compared": f"the config's own networks' palm ends a median {own:.1f} mm from the "
+        "demonstrator's",
+        "effects_subject": "the config's own networks",
+        "effects_whose": "the config's own networks'",
+        "effects_note": "This build tests them on the config's own networks, the only variant "
+        f"it tests on networks {explored}; like every robot test they are exploration",
+        "every_variant_effects": "This build tests no variant beside the config's own networks: "
+        "their effects and counts per cell are the tables above.",
+        "scope": "This build therefore compares no variants: the grid's "
+        f"{grid} variants on networks {explored}, their cue timings and learning-rate schedules "
+        "side by side, the best of them and their success against training appear at full "
+        "scale only (`snakemake -c2 --config robustness=True`).",
+    }  # fmt: skip
+
+
+def _exploration(confirmation: pd.DataFrame) -> dict:
+    """The sentence on the confirmed variant's share on the networks it was chosen on: its
+    counts where this build tests it there (full scale), else where that share is found."""
+    rows = confirmation[confirmation["seed_set"] == "exploration"] if len(confirmation) else []
+    if not len(rows):
+        return {"explored": False, "exploration_words": "This build does not test it on those "
+                "networks again; a build at full scale does, and shows that share beside the "
+                "fresh networks' one."}  # fmt: skip
+    row = rows.iloc[0]
+    return {"explored": True, "exploration_words": "This build tests it on those networks as "
+            f"well: there it held the object in {row['held']} of {row['trials']} grasping "
+            "trials."}  # fmt: skip
+
+
+def _animated(config: dict, confirmation: pd.DataFrame) -> dict:
+    """Which networks the films show (``runs.RunPlan.animated``): the animated variant's first
+    network of each mapping, on networks 0.. where the default build tests it there (the
+    config's own networks, an entry of robot.default), else on its confirmation's fresh
+    networks (their first index and count from the confirmation's row)."""
+    robot, network = config["robot"], config["network"]
+    variant = NetworkVariant.of(robot["animation"]["variant"], network)
+    listed = [NetworkVariant.of(entry, network) for entry in [network, *robot["default"]]]
+    first, count, where = 0, network["networks"], "its first"
+    if variant not in listed:
+        fresh = confirmation[confirmation["seed_set"] == "confirmation"]
+        row = fresh[[NetworkVariant.from_row(r) == variant for _, r in fresh.iterrows()]].iloc[0]
+        first, count = int(row["first_network"]), int(row["networks"])
+        where = "the first of its confirmation's fresh networks"
+    return {"animated_film": f"network {first}, {where}",
+            "animated_pair": f"networks {first} and {first + count // 2}"}  # fmt: skip
+
+
 def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     """The first confirmed variant's counts, chosen on some networks, the bar set on fresh ones."""
     rows = confirmation.to_dict("records")
@@ -330,6 +407,8 @@ def robot_test(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         p["same"] = short_label(p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",))
         below = "p < 0.05, unadjusted" if len(pairs) > 1 else "differ"  # several: no family
         p["verdict"] = below if p["p"] < science.ALPHA else "not shown"
+    out |= _robot_scope(config, variants, records) | _exploration(confirmation)
+    out |= _animated(config, confirmation)
     rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
     return out | confirmed | _best_effects(effects[best["run"]]), {
         "robot_variants": variants, "robot_pairs": pd.DataFrame(pairs),
