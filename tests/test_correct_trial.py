@@ -115,3 +115,15 @@ def test_the_estimator_by_hand_networks_per_cell_and_the_leave_one_network_out_r
     assert term["lono_low"] == pytest.approx(min(refits))
     assert term["lono_high"] == pytest.approx(max(refits))
     assert list(term["left_out"].values()) == pytest.approx(refits)
+
+
+def test_without_the_refits_the_estimate_is_the_same():
+    """A difference of two runs' estimates reads the estimates alone: the same numbers, no
+    leave-one-network-out range."""
+    df = stats.with_outcomes(with_errors(synthetic(seed=14)))
+    full = stats.correct_trial_effects(df)
+    quick = stats.correct_trial_effects(df, lono=False)
+    for term in stats.WITHIN:
+        assert quick[term]["estimate"] == full[term]["estimate"]
+        assert quick[term]["se"] == full[term]["se"]
+        assert np.isnan(quick[term]["lono_low"]) and np.isfinite(full[term]["lono_low"])

@@ -28,6 +28,8 @@ between readings cannot be paired by network (``difference_replications``).
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pandas as pd
 
@@ -46,12 +48,13 @@ from .stats import (
     categorisation_trials,
     cell_means,
     correct_trial_effects,
-    difference_tests,
     equivalence,
     holm,
     network_contrasts,
     network_object_means,
     object_means,
+    paired_difference,
+    per_network_contrasts,
     t_term,
     with_outcomes,
 )
@@ -293,7 +296,7 @@ def unpaired_difference(a: pd.DataFrame, b: pd.DataFrame, measure: str) -> dict[
     se = sqrt(se_a^2 + se_b^2) and Welch-Satterthwaite df. Conservative: the two runs' networks
     are the same networks (same seeds, same mappings), whose estimates correlate positively, and
     the unpaired se ignores that covariance."""
-    fa, fb = correct_trial_effects(a, measure), correct_trial_effects(b, measure)
+    fa, fb = (correct_trial_effects(run, measure, lono=False) for run in (a, b))
     out = {}
     for effect in EFFECTS:
         ta, tb = fa[effect], fb[effect]
@@ -321,6 +324,15 @@ def difference_replications(
     (``measures.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""
     by = {(r["cue"], r["goal_response"], r["seed"]): r for r in table}
     rows = []
+
+    @functools.cache
+    def scored(run: str) -> pd.DataFrame:
+        return categorisation_trials(with_derived(trials[run], measures), mode)
+
+    @functools.cache
+    def contrasts_of(run: str, measure: str) -> pd.DataFrame:
+        return per_network_contrasts(scored(run), measure)
+
     for comparison, (choice, level_a, level_b) in COMPARISONS.items():
         other = "goal_response" if choice == "cue" else "cue"
         for (cue, goal, seed), ra in by.items():
@@ -329,15 +341,13 @@ def difference_replications(
             rb = by.get((level_b, goal, seed) if choice == "cue" else (cue, level_b, seed))
             if rb is None:  # the config reads only one level of this choice
                 continue
-            a, b = (
-                categorisation_trials(with_derived(trials[r["run"]], measures), mode)
-                for r in (ra, rb)
-            )
+            a, b = (scored(r["run"]) for r in (ra, rb))
             for measure in analysed(measures):
                 if can_lack_cells(measure):
                     terms = unpaired_difference(a, b, measure)
-                else:
-                    terms = difference_tests(a, b, measure)
+                else:  # each run's contrasts once, whichever comparisons it is in
+                    terms = paired_difference(contrasts_of(ra["run"], measure),
+                                              contrasts_of(rb["run"], measure))  # fmt: skip
                 for effect in EFFECTS:
                     rows.append(
                         {

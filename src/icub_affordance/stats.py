@@ -304,7 +304,12 @@ def difference_tests(
     """A minus B, term by term, paired by network: for two runs whose network k is the same
     network under two settings (same seed, same mapping), the per-network contrasts' differences
     tested as ``contrast_tests`` (the test of a difference between readings or cue timings)."""
-    ca, cb = per_network_contrasts(a, depvar), per_network_contrasts(b, depvar)
+    return paired_difference(per_network_contrasts(a, depvar), per_network_contrasts(b, depvar))
+
+
+def paired_difference(ca: pd.DataFrame, cb: pd.DataFrame) -> dict[str, dict[str, float]]:
+    """``difference_tests`` from the two runs' per-network contrasts (``per_network_contrasts``),
+    for a caller that reuses a run's contrasts in several comparisons."""
     common = ca.index.intersection(cb.index)
     ca, cb = ca.loc[common], cb.loc[common]
     if not (ca["mapping"] == cb["mapping"]).all():
@@ -488,7 +493,7 @@ def cells_by_mapping(df: pd.DataFrame, depvar: str) -> dict[str, int]:
 
 
 def correct_trial_effects(
-    df: pd.DataFrame, depvar: str = "rmse_correct", left_out: bool = False
+    df: pd.DataFrame, depvar: str = "rmse_correct", left_out: bool = False, lono: bool = True
 ) -> dict[str, dict]:
     """THE estimator of the correct-trial RMSE's effects (every chapter that reports the measure
     calls this one function): ``within_network_fit``'s within terms (network intercepts and cell
@@ -498,13 +503,15 @@ def correct_trial_effects(
     without each network in turn, over the refits that still estimate the term; NaN if none
     does), so a reader sees how far an estimate rests on single networks. ``left_out``: each
     term also holds ``left_out``, {network: the estimate without it}, for statistics built on
-    the estimates (their own leave-one-network-out range)."""
+    the estimates (their own leave-one-network-out range). ``lono`` False skips the refits
+    (NaN range), for a caller that uses the estimates alone (a difference of two runs')."""
     fit = within_network_fit(df, depvar)
     by_mapping = cells_by_mapping(df, depvar)
     data = _coded_means(df, depvar)
     networks = sorted(data["network"].unique())
     # the same observations less one network's: the fit of the trials without that network
-    refits = [_within_terms(data[data["network"] != n], depvar) for n in networks]
+    refits = [_within_terms(data[data["network"] != n], depvar) for n in networks] if (
+        lono or left_out) else []  # fmt: skip
     out = {}
     for term in WITHIN:
         without = np.array([r[term]["estimate"] for r in refits], dtype=float)
