@@ -145,6 +145,13 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["robot"]["confirmation"].update(robustness_networks=8),
             ["robot.confirmation.robustness_networks", "8", "at least 12", "Fix"],
         ),
+        # a margin's declaration for a measure that has no margin
+        (
+            lambda c: c["readings"]["margin_declared"].update(
+                speed={"commit": "abc1234", "results_before": False}
+            ),
+            ["readings.margin_declared", "['speed']", "equivalence_margin", "Fix"],
+        ),
         # the claims' confirmation on a seed another part of the build uses, or twice
         (
             lambda c: c["confirmation"].update(seeds=[101, 2009]),

@@ -415,3 +415,24 @@ def test_a_new_dimension_is_one_field(config):
         Six.of({"target": "sensed", "hidden": 10, "iterations": 4}, network).init_scale
         == (network["init_scale"])
     )
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("cue_all_steps", "cue ablation"),
+        ("robot_commands_h40_it768000", "robot variant"),
+        ("reading_all_steps_grows_seed101", "reading"),
+        ("size_dose0.6_first_step_seed101", "size study's run"),
+    ],
+)
+def test_a_user_run_named_like_a_run_the_plan_makes_is_refused(config, name, words):
+    """Issue 49, item 7: the user's settings would silently replace the plan's own run."""
+    from icub_workflow.config_checks import ConfigError
+
+    with pytest.raises(ConfigError) as refused:
+        plan_runs(config | {"runs": {name: {"seed": 3}}})
+    message = str(refused.value)
+    for word in (f"runs.{name}", words, "Fix: rename"):
+        assert word in message, (word, message)
+    assert "half_lr" in plan_runs(config | {"runs": {"half_lr": {"seed": 3}}}).runs

@@ -309,6 +309,16 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             "margin of readings.equivalence_margin, naming the commit that first wrote it and "
             "whether results of its measure had been read then. Fix: add them."
         )
+    unknown = sorted(
+        set(config["readings"]["margin_declared"]) - set(config["readings"]["equivalence_margin"])
+    )
+    if unknown:
+        yield (
+            f"{key('readings.margin_declared')}: an entry for {unknown}, which has no margin in "
+            "readings.equivalence_margin (a declaration of nothing). Allowed: the measures of "
+            f"readings.equivalence_margin ({sorted(config['readings']['equivalence_margin'])}). "
+            "Fix: remove the entry or correct its name."
+        )
     study = config["size_dose"]
     needed = max(study["replications"], study["robustness_replications"])
     if len(study["seeds"]) < needed:

@@ -20,10 +20,17 @@ from typing import Any
 from icub_affordance.claims import seeds as claim_seeds
 from icub_affordance.spec import AFTER_PHASE1
 from icub_affordance.variants import NetworkVariant
+from icub_workflow.config_checks import ConfigError
 from icub_workflow.configs import merged
 
 #: The config's own run: its name in the tables (column ``run``).
 MAIN = "main"
+
+#: What asked for a run (``Run.origin``), in words for a refusal.
+ORIGIN_WORDS = {"main": "config's own run", "configured": "run of config `runs`",
+                "ablation": "cue ablation", "sweep": "sweep point", "reading": "reading",
+                "robot": "robot variant", "confirmation": "robot variant's confirmation",
+                "size_dose": "size study's run"}  # fmt: skip
 
 #: The settings each shared stage depends on: a run reuses the stage of the first run (in the
 #: plan's order) whose settings for it are equal, so a run that changes only the network reuses
@@ -353,6 +360,15 @@ class _Planner:
         self.runs: dict[str, Run] = {}
 
     def add(self, name: str, overrides: Mapping[str, Any], origin: str) -> str:
+        """A new run; a name the plan already gave (a run of config ``runs`` named like a run the
+        plan makes itself) is refused: its settings would silently replace the plan's run."""
+        if name in self.runs:
+            made = next(o for o in (self.runs[name].origin, origin) if o != "configured")
+            raise ConfigError(
+                f"config key runs.{name}: the name {name!r} is the plan's own name for the "
+                f"{ORIGIN_WORDS.get(made, made)}, and the run of config `runs` would silently "
+                "replace its settings. Allowed: a name the plan does not use. Fix: rename the run."
+            )
         self.runs[name] = Run(name, overrides, merged(self.config, overrides), origin)
         return name
 
