@@ -574,13 +574,13 @@ def signatures_figure(trials, quantiles: int, path) -> None:
         return g.mean(), g.std(ddof=1) / np.sqrt(g.count())
 
     fig, axes = plt.subplots(1, 3, figsize=(12.5, 3.6))
-    mean, sem = unit_means(bin_effects(trials, quantiles), "bin", "effect")
+    mean, sem = unit_means(bin_effects(trials, quantiles, left_out=False), "bin", "effect")
     axes[0].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color="C0")
     axes[0].set_xticks(range(1, quantiles + 1))
     axes[0].set_xlabel("reaction-time bin (correct trials, fastest first)")
     axes[0].set_ylabel("incongruent - congruent RMSE")
     axes[0].set_title("(a) the effect over reaction time", fontsize=10)
-    effects = replication_effects(trials)
+    effects = replication_effects(trials, left_out=False)
     view = effects[effects["condition"] == "in_view"]
     for kind, colour, label in (
         ("extinction", "C3", "blanked"),

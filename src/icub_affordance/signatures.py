@@ -158,32 +158,34 @@ def estimator_rows(trials: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def _congruency(rows: pd.DataFrame) -> list[dict[str, float]]:
+def _congruency(rows: pd.DataFrame, left_out: bool = True) -> list[dict[str, float]]:
     """One replication's congruency effect on correct-trial RMSE by the one estimator: a row
     with every network (``dropped`` -1) and a row without each network in turn (``dropped``
     its index), for leave-one-network-out ranges of every statistic built on it; with the
     fewest networks carrying a cell."""
-    term = correct_trial_effects(rows, left_out=True)["congruency"]
+    term = correct_trial_effects(rows, left_out=left_out, lono=left_out)["congruency"]
     fewest = min(term["cells"].values()) if term["cells"] else 0
     full = {"dropped": -1, "effect": term["estimate"], "fewest_networks_per_cell": fewest}
     return [full] + [
         {"dropped": int(n), "effect": v, "fewest_networks_per_cell": fewest}
-        for n, v in term["left_out"].items()
+        for n, v in term.get("left_out", {}).items()
     ]
 
 
-def replication_effects(trials: pd.DataFrame) -> pd.DataFrame:
+def replication_effects(trials: pd.DataFrame, left_out: bool = True) -> pd.DataFrame:
     """Per replication, condition and k: the congruency effect on correct-trial RMSE (incongruent
     minus congruent) by ``stats.correct_trial_effects``, the estimator every chapter uses: each
     network x object's mean over its correct trials is an observation, the fit has an intercept
     per network and the cell terms, so networks keep their other cells when one has no correct
     trial and objects are not pooled (a pooled mean would compare different mixtures of
     objects: correct incongruent trials are mostly of some objects, and correct-trial RMSE
-    differs by object). Rows with ``dropped`` >= 0 are the estimate without that network."""
+    differs by object). Rows with ``dropped`` >= 0 are the estimate without that network (none
+    with ``left_out`` False: a figure of the estimates needs no refits)."""
     rows = estimator_rows(trials)
     out = []
     for (rep, kind, k), g in rows.groupby(["replication", "condition", "k"], sort=True):
-        out += [{"replication": rep, "condition": kind, "k": k} | r for r in _congruency(g)]
+        out += [{"replication": rep, "condition": kind, "k": k} | r
+                for r in _congruency(g, left_out)]  # fmt: skip
     return pd.DataFrame(out)
 
 
@@ -216,14 +218,14 @@ def bin_rows(trials: pd.DataFrame, quantiles: int) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=[*keys, "bin", "rmse_correct"])
 
 
-def bin_effects(trials: pd.DataFrame, quantiles: int) -> pd.DataFrame:
+def bin_effects(trials: pd.DataFrame, quantiles: int, left_out: bool = True) -> pd.DataFrame:
     """Per replication and reaction-time bin (``bin_rows``): the congruency effect by the one
     estimator (rows with ``dropped`` >= 0: without that network, as ``replication_effects``)."""
     rows = bin_rows(trials, quantiles)
     out = [
         {"replication": rep, "bin": q} | r
         for (rep, q), g in rows.groupby(["replication", "bin"], sort=True)
-        for r in _congruency(g)
+        for r in _congruency(g, left_out)
     ]
     columns = ["replication", "bin", "dropped", "effect", "fewest_networks_per_cell"]
     return pd.DataFrame(out, columns=columns)
