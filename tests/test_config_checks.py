@@ -165,6 +165,15 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["confirmation"].update(seeds=[1, 101]),
             ["confirmation.seeds", "[1]", "sweep.seeds", "Fix"],
         ),
+        # the size study's crossed design on a seed another part of the build uses, or too few
+        (
+            lambda c: c["size_dose"]["crossed"].update(seeds=[105, *range(121, 140)]),
+            ["size_dose.crossed.seeds", "[105]", "confirmation.seeds", "Fix"],
+        ),
+        (
+            lambda c: c["size_dose"]["crossed"].update(seeds=[121, 122, 123]),
+            ["size_dose.crossed.seeds", "3 seeds for 20 replications", "Fix"],
+        ),
         # a signature tested by what its condition cannot give, twice, or without its levels
         (
             lambda c: c["signatures"]["list"][0].update(test="equivalence", expected="same"),

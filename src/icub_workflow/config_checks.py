@@ -442,6 +442,37 @@ def _claims_problems(config: Mapping[str, Any], key) -> Iterator[str]:
                 f"{key('confirmation.seeds')}: {shared} also seed {name}; a confirmation runs on "
                 f"replications no other part of the build uses. Fix: choose other seeds."
             )
+    yield from _crossed_problems(config, ours, key)
+
+
+def _crossed_problems(config: Mapping[str, Any], confirmation: list[int], key) -> Iterator[str]:
+    """The size study's crossed design (config size_dose.crossed) is declared on fresh seeds:
+    none of the confirmation's, the config's own or a sweep point's; and enough of them for its
+    replications."""
+    crossed = config["size_dose"].get("crossed")
+    if crossed is None:
+        return
+    needed = max(crossed["replications"], crossed["robustness_replications"])
+    if len(crossed["seeds"]) < needed:
+        yield (
+            f"{key('size_dose.crossed.seeds')}: {len(crossed['seeds'])} seeds for {needed} "
+            f"replications (each replication takes the next seed of the list). Allowed: at least "
+            f"{needed} seeds. Fix: add seeds or lower size_dose.crossed.replications / "
+            "robustness_replications."
+        )
+    others = {
+        "confirmation.seeds / robustness_seeds": confirmation,
+        "seed": [config["seed"]],
+        "sweep.seeds": config["sweep"]["seeds"],
+    }
+    for name, seeds in others.items():
+        shared = sorted(set(crossed["seeds"]) & set(seeds))
+        if shared:
+            yield (
+                f"{key('size_dose.crossed.seeds')}: {shared} also seed {name}; the crossed "
+                "design's declared tests run on replications no other part of the build uses. "
+                "Fix: choose other seeds."
+            )
 
 
 # ---- the scene ----------------------------------------------------------------------------------
