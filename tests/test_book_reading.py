@@ -79,13 +79,16 @@ def claim_rows(congruency_p=0.001, size=-0.026) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, held=0.96, ci=(0.93, 0.99)):
+def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, grips=0.01, held=0.96,
+                 ci=(0.93, 0.99)):  # fmt: skip
     learning = pd.DataFrame({"seed": range(101, 111), "networks": 12, "start": 0.22,
                              "end": np.linspace(0.045, 0.049, 10)})  # fmt: skip
     size_rows = pd.DataFrame(
-        [{"dose": d, "cue": "first_step", "measure": "rmse", "replications": 10, "diff": x,
-          "ci_low": x - 0.005, "ci_high": x + 0.005, "p": 0.001, "p_holm": 0.001,
-          "family": "size study: declared"} for d, x in (("0.0", dose0), ("equal_grips", 0.01))]
+        [{"test": t, "dose": d, "cue": "first_step", "measure": "rmse", "replications": 10,
+          "left_out": 0, "estimate": x, "ci_low": x - 0.005, "ci_high": x + 0.005, "p": 0.001,
+          "p_holm": 0.001, "family": "size study: declared"}
+         for t, d, x in (("size", "0", dose0), ("grip_distance", "0", grips),
+                         ("size", "0.6", 0.03), ("dose", "0.6 - 0", 0.01))]
     )  # fmt: skip
     variants = pd.DataFrame(
         [{"run": "main", "grasping_success": 0.0625, "grasping_trials": 48, "networks": 12}]
@@ -125,8 +128,8 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_learn_verdict"] == "reproduced"
     assert base[CONGRUENCY] == "confirmed"
     assert base[SIZE] == "reversed"
-    assert base["score_size_maps_verdict"] == "reversed"
-    assert base["score_size_grips_verdict"] == "reproduced"
+    assert base["score_size_size_verdict"] == "reversed"
+    assert base["score_size_grips_verdict"] == "carries part of it, the paper's way"
     assert base["score_robot_own_verdict"] == "falls short"
     assert base["score_robot_best_verdict"] == "shown"
     # a signature's row shows the verdict its chapter's test gave (icub_affordance.signatures)
@@ -135,7 +138,9 @@ def test_each_scorecard_verdict_follows_its_test():
     # flip each statistic: its verdict, and only its, follows
     assert verdicts(congruency_p=0.2)[CONGRUENCY] == "not shown"
     assert verdicts(size=0.026)[SIZE] == "confirmed"
-    assert verdicts(dose0=0.02)["score_size_maps_verdict"] == "reproduced"
+    assert verdicts(dose0=0.02)["score_size_size_verdict"] == "reproduced"
+    against = "carries part of it, against the paper"
+    assert verdicts(grips=-0.02)["score_size_grips_verdict"] == against
     assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
     changed = verdicts(congruency_p=0.2)
     assert {k for k in base if base[k] != changed[k]} == {CONGRUENCY}

@@ -174,6 +174,11 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["size_dose"]["crossed"].update(seeds=[121, 122, 123]),
             ["size_dose.crossed.seeds", "3 seeds for 20 replications", "Fix"],
         ),
+        # the swapped grips need each object's same-shape partner
+        (
+            lambda c: c.update(objects=[o for o in c["objects"] if o != "small_cube"]),
+            ["size_dose.crossed.grip_arrangements", "same-shape partner", "Fix"],
+        ),
         # a signature tested by what its condition cannot give, twice, or without its levels
         (
             lambda c: c["signatures"]["list"][0].update(test="equivalence", expected="same"),

@@ -280,6 +280,54 @@ def test_distances_to_grasping_pair_each_trial_with_its_own_grasp():
     assert incongruent == [0.0, 0.0, 5.0]
 
 
+def _divergence_inputs(mappings: list[str], gaps: list[float]):
+    """Networks with one grasp and one congruent and one incongruent trial each, the
+    incongruent trial ``gap`` further from its grasp than the congruent one at both steps."""
+    rows, hidden = [], {}
+    for net, (mapping, gap) in enumerate(zip(mappings, gaps, strict=True)):
+        rows += [
+            {"network": net, "mapping": mapping, "mode": "closed_loop", "task": task,
+             "congruent": congruent, "object": obj, "sequence": 0}
+            for task, congruent, obj in (
+                ("grasping", "", "a"), ("grasping", "", "b"),
+                ("categorisation", "True", "a"), ("categorisation", "False", "b"))
+        ]  # fmt: skip
+        states = np.zeros((4, 2, 1))
+        states[2] = 1.0  # congruent: 1 from its grasp
+        states[3] = 1.0 + gap  # incongruent: 1 + gap from its grasp
+        hidden[f"net{net:02d}__closed_loop"] = states
+    return hidden, pd.DataFrame(rows)
+
+
+def test_the_divergence_has_the_mapping_as_a_covariate():
+    """Three networks of mapping A and one of B: the estimate is the average of the two
+    mappings' means (not the mean over networks), tested on networks - 2 degrees of freedom,
+    as an ordinary least-squares fit with the mapping coded -0.5 / +0.5 gives it."""
+    import statsmodels.api as sm
+
+    from icub_affordance.representations import divergence
+
+    mappings, gaps = ["A", "A", "A", "B"], [0.1, 0.2, 0.3, 1.0]
+    _, summary = divergence(*_divergence_inputs(mappings, gaps))
+    x = sm.add_constant(np.where(np.array(mappings) == "B", 0.5, -0.5))
+    fit = sm.OLS(np.array(gaps), x).fit()
+    for _, row in summary.iterrows():
+        assert row["difference"] == pytest.approx((0.2 + 1.0) / 2)
+        assert row["difference"] == pytest.approx(fit.params[0])
+        assert row["p"] == pytest.approx(fit.pvalues[0])
+        assert row["ci_low"] == pytest.approx(fit.conf_int()[0][0])
+        assert row["df"] == 2
+    assert summary["difference"].iloc[0] != pytest.approx(np.mean(gaps))
+
+
+def test_the_divergence_refuses_an_unknown_mapping():
+    from icub_affordance.representations import divergence
+
+    hidden, trials = _divergence_inputs(["A", "C"], [0.1, 0.2])
+    with pytest.raises(ValueError, match="mapping: levels \\['C'\\]"):
+        divergence(hidden, trials)
+
+
 def test_first_divergent_step_needs_every_later_step_significant():
     summary = pd.DataFrame(
         {"step": [1, 2, 3, 4], "difference": [0.1, 0.2, 0.3, 0.3], "p": [0.01, 0.2, 0.01, 0.001]}

@@ -175,8 +175,8 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
     for name, runs in groups.items():
         assert {f"seed{plan.config(run)['seed']}" for run in runs} == {name}
     # the readings at the confirmation's seeds; the size study at its own seeds
-    study = config["size_dose"]
-    seeds = {*config["confirmation"]["seeds"], *study["seeds"][: study["replications"]]}
+    crossed = config["size_dose"]["crossed"]
+    seeds = {*config["confirmation"]["seeds"], *crossed["seeds"][: crossed["replications"]]}
     assert set(groups) == {f"seed{seed}" for seed in seeds}
 
 
@@ -325,14 +325,16 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
     """The reproduce page's scale: the default build and the full one, counted from the plan
     and checked against the config's lists."""
     study, readings = config["size_dose"], config["readings"]
-    # per cue timing and replication: each dose, the removal control and the equal-grips one
-    controls = study["removal"] + study["equal_grips"]
-    per_replication = len(study["categorisation_cue"]) * (len(study["doses"]) + controls)
+    crossed = study["crossed"]
+    # per cue timing and replication: each dose under each grip arrangement, and the removal
+    # control
+    conditions = len(study["doses"]) * len(crossed["grip_arrangements"]) + study["removal"]
+    per_replication = len(study["categorisation_cue"]) * conditions
     assert plan.scale() == {
         "reading_seeds": len(config["confirmation"]["seeds"]),
         "readings": len(readings["categorisation_cue"]) * len(readings["goal_response"]),
-        "size_runs": per_replication * study["replications"],
-        "size_replications": study["replications"],
+        "size_runs": per_replication * crossed["replications"],
+        "size_replications": crossed["replications"],
         "variants": len(config["robot"]["default"]),
         "fresh": config["robot"]["confirmation"]["networks"],
         "sweep": 0,
@@ -340,8 +342,8 @@ def test_the_scale_counts_what_each_build_trains(plan, config):
     full = plan_runs(config | {"robustness": True}).scale()
     declared = config["confirmation"]
     assert full["reading_seeds"] == len(declared["seeds"]) + len(declared["robustness_seeds"])
-    assert full["size_runs"] == per_replication * study["robustness_replications"]
-    assert full["size_replications"] == study["robustness_replications"]
+    assert full["size_runs"] == per_replication * crossed["robustness_replications"]
+    assert full["size_replications"] == crossed["robustness_replications"]
     assert full["fresh"] == config["robot"]["confirmation"]["robustness_networks"]
     assert full["variants"] + 1 == len(NetworkVariant.grid(config["robot"]))
     assert full["sweep"] == len(config["sweep"]["seeds"]) * len(
@@ -423,7 +425,7 @@ def test_a_new_dimension_is_one_field(config):
         ("cue_all_steps", "cue ablation"),
         ("robot_commands_h40_it768000", "robot variant"),
         ("reading_all_steps_grows_seed101", "reading"),
-        ("size_dose0.6_first_step_seed101", "size study's run"),
+        ("size_dose0.6_swapped_first_step_seed121", "size study's run"),
     ],
 )
 def test_a_user_run_named_like_a_run_the_plan_makes_is_refused(config, name, words):

@@ -484,55 +484,84 @@ def robot_tolerance(tolerance, variants, path) -> None:
     save(fig, path)
 
 
-def dose_response(summary, replications, manipulation, path) -> None:
-    """The size effect against the dose of size coding: per measure (rows) and cue timing
-    (columns), the mean over replications with its 95% interval (positive: the paper's
-    direction, large lower) and each replication's estimate; the removal control (no size in the
-    input) at the left, apart. Last row: the manipulation check, the large/small ratio of the
-    clusters' units per shape and map."""
+def dose_response(summary, replications, manipulation, crossed, path) -> None:
+    """The size study: top row, per cue timing (columns), each replication's size effect on the
+    declared measure against its gap (large minus small object's grips' distance), its natural
+    and swapped runs joined, per dose; then per measure (rows) the size effect against the dose,
+    grips as demonstrated and swapped, the mean over replications with its 95% interval
+    (positive: the paper's direction, large lower) and each replication's estimate, the removal
+    control (no size in the input) at the left, apart. Last row: the manipulation check, the
+    large/small ratio of the clusters' units per shape and map."""
     from .measures import is_null_control
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     cues = list(dict.fromkeys(summary["cue"]))
-    controls = {"removed": ("s", "C3", "no size (removal)"),
-                "equal_grips": ("D", "C4", "dose 0, grips at one distance")}  # fmt: skip
-    doses = [d for d in dict.fromkeys(summary["dose"]) if d not in controls]
+    doses = [d for d in dict.fromkeys(summary["dose"]) if d != "removed"]
     x = {d: float(d) for d in doses}
     step = (max(x.values()) - min(x.values())) / max(len(doses) - 1, 1)
-    x["removed"] = min(x.values()) - 1.5 * step
-    x["equal_grips"] = min(x.values()) + 0.5 * step
+    x["removed"] = min(x.values()) - 1.0 * step
+    shift = {"natural": -0.06 * step, "swapped": 0.06 * step}
+    styles = {"natural": ("o-", "C0", "grips as demonstrated"),
+              "swapped": ("D--", "C4", "grips swapped between the sizes")}  # fmt: skip
     fig, axes = plt.subplots(
-        len(measures) + 1, len(cues), figsize=(4.2 * len(cues), 2.4 * (len(measures) + 1)),
-        squeeze=False, sharex=True,
+        len(measures) + 2, len(cues), figsize=(4.2 * len(cues), 2.4 * (len(measures) + 2)),
+        squeeze=False,
     )  # fmt: skip
     for j, cue in enumerate(cues):
-        for i, measure in enumerate(measures):
+        ax = axes[0, j]
+        for k, dose in enumerate(doses):
+            runs = crossed[(crossed["cue"] == cue) & (crossed["dose"] == dose)]
+            for _seed, pair in runs.groupby("seed"):
+                pair = pair.sort_values("gap")
+                ax.plot(pair["gap"], pair["estimate"], "-", color=f"C{k}", lw=0.6, alpha=0.5)
+            for arrangement, (marker, _colour, _label) in styles.items():
+                chosen = runs[runs["arrangement"] == arrangement]
+                ax.scatter(chosen["gap"], chosen["estimate"], s=12, marker=marker[0],
+                           color=f"C{k}", label=f"dose {dose:g}" if arrangement == "natural"
+                           else None)  # fmt: skip
+        ax.axhline(0, color="0.3", lw=0.8)
+        ax.axvline(0, color="0.3", lw=0.8, ls=":")
+        measure = crossed["measure"].iloc[0] if len(crossed) else ""
+        ax.set_title(f"{measure}: each replication's two runs, cue {cue.replace('_', ' ')}",
+                     fontsize=9)  # fmt: skip
+        ax.set_xlabel("gap: large − small object's grips' distance (circle: natural,"
+                      " diamond: swapped)", fontsize=7)  # fmt: skip
+        ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
+        ax.grid(alpha=0.3)
+        if j == 0:
+            ax.legend(fontsize=7, loc="best")
+        for i, measure in enumerate(measures, start=1):
             ax = axes[i, j]
             rows = summary[(summary["cue"] == cue) & (summary["measure"] == measure)]
-            dosed = rows[~rows["dose"].isin(list(controls))]
-            xs = [x[d] for d in dosed["dose"]]
-            mean = dosed["diff"].to_numpy(dtype=float)
-            err = np.vstack([mean - dosed["ci_low"], dosed["ci_high"] - mean])
-            ax.errorbar(xs, mean, yerr=err, fmt="o-", color="C0", capsize=3, ms=4)
-            for control, (marker, colour, label) in controls.items():
-                for _, row in rows[rows["dose"] == control].iterrows():
-                    ax.errorbar(
-                        [x[control]], [row["diff"]],
-                        yerr=[[row["diff"] - row["ci_low"]], [row["ci_high"] - row["diff"]]],
-                        fmt=marker, color=colour, capsize=3, ms=5, label=label,
-                    )  # fmt: skip
             reps = replications[(replications["cue"] == cue) & (replications["measure"] == measure)]
-            ax.scatter([x[d] for d in reps["dose"]], reps["estimate"], s=6, c="0.45", zorder=3)
+            for arrangement, (marker, colour, label) in styles.items():
+                dosed = rows[(rows["dose"] != "removed") & (rows["arrangement"] == arrangement)]
+                xs = [x[d] + shift[arrangement] for d in dosed["dose"]]
+                mean = dosed["diff"].to_numpy(dtype=float)
+                err = np.vstack([mean - dosed["ci_low"], dosed["ci_high"] - mean])
+                ax.errorbar(xs, mean, yerr=err, fmt=marker, color=colour, capsize=3, ms=4,
+                            label=label)  # fmt: skip
+                chosen = reps[(reps["dose"] != "removed") & (reps["arrangement"] == arrangement)]
+                ax.scatter([x[d] + shift[arrangement] for d in chosen["dose"]],
+                           chosen["estimate"], s=6, c="0.45", zorder=3)  # fmt: skip
+            for _, row in rows[rows["dose"] == "removed"].iterrows():
+                ax.errorbar(
+                    [x["removed"]], [row["diff"]],
+                    yerr=[[row["diff"] - row["ci_low"]], [row["ci_high"] - row["diff"]]],
+                    fmt="s", color="C3", capsize=3, ms=5, label="no size (removal)",
+                )  # fmt: skip
+            removed = reps[reps["dose"] == "removed"]
+            ax.scatter([x["removed"]] * len(removed), removed["estimate"], s=6, c="0.45", zorder=3)
             ax.axhline(0, color="0.3", lw=0.8)
             ax.set_title(f"{measure}, cue {cue.replace('_', ' ')}", fontsize=9)
             ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
+            ax.set_xticks([x["removed"], *(x[d] for d in doses)],
+                          ["none", *(f"{d:g}" for d in doses)], fontsize=7)  # fmt: skip
             ax.grid(alpha=0.3)
-            if i == 0 and j == 0:
+            if i == 1 and j == 0:
                 ax.legend(fontsize=7, loc="best")
         ax = axes[-1, j]
-        checks = manipulation[
-            (manipulation["cue"] == cue) & ~manipulation["dose"].isin(list(controls))
-        ]
+        checks = manipulation[(manipulation["cue"] == cue) & (manipulation["dose"] != "removed")]
         mean_ratio = checks.groupby(["shape", "map", "dose"], sort=False)["ratio"].mean()
         for (shape, name), style in zip(
             [("ball", "object"), ("ball", "goal"), ("cube", "object"), ("cube", "goal")],
@@ -545,10 +574,10 @@ def dose_response(summary, replications, manipulation, path) -> None:
         ax.axhline(2, color="0.4", lw=0.8, ls=":")
         ax.set_ylabel("large / small\nactive units", fontsize=8)
         ax.set_xlabel("nominal dose (delivered: the Goal map's ln large/small units)", fontsize=8)
-        delivered = summary[summary["cue"] == cue].groupby("dose", sort=False)["delivered_dose"]
-        delivered = delivered.mean()
+        natural = summary[(summary["cue"] == cue) & (summary["dose"] != "removed")]
+        delivered = natural.groupby("dose", sort=False)["delivered_dose"].mean()
         labels = [f"{d:g}\n({delivered[d]:.2f})" for d in doses]
-        ax.set_xticks([x["removed"], *xs], ["none", *labels], fontsize=7)
+        ax.set_xticks([x["removed"], *(x[d] for d in doses)], ["none", *labels], fontsize=7)
         ax.grid(alpha=0.3)
         if j == 0:
             ax.legend(fontsize=7, loc="best")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .stats import holm, mean_ci, trial_conditions
+from .stats import CODING, group_regression, holm, trial_conditions
 
 
 def pca(states: np.ndarray, components: int = 2) -> tuple[np.ndarray, np.ndarray]:
@@ -53,10 +53,16 @@ def distances_to_grasping(hidden: np.ndarray, trials: pd.DataFrame) -> pd.DataFr
 
 def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = "closed_loop"):
     """Every network's distances to grasping (long table), and per step the incongruent minus
-    congruent difference over networks: mean, 95% interval, paired t-test p, and that p
-    Holm-adjusted over the steps (one family: "from step k on" reads every step's test)."""
-    from scipy import stats as sps
-
+    congruent difference over networks: its estimate with the mapping as a covariate (coded
+    -0.5 / +0.5, the average of the two mappings' means, as every other per-network test),
+    95% interval, t-test p on the residual degrees of freedom, and that p Holm-adjusted over the
+    steps (one family: "from step k on" reads every step's test)."""
+    levels = CODING["mapping"]
+    unknown = sorted(set(trials["mapping"].astype(str)) - set(levels))
+    if unknown:
+        raise ValueError(f"mapping: levels {unknown}, expected {levels[0]} or {levels[1]}")
+    mapping = trials.groupby("network")["mapping"].first().astype(str)
+    coded = pd.Series(np.where(mapping == levels[1], 0.5, -0.5), index=mapping.index)
     tables = []
     for net in sorted(trials["network"].unique()):
         mine = trials[(trials["network"] == net) & (trials["mode"] == mode)]
@@ -66,13 +72,14 @@ def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = 
     per_net = long.groupby(["network", "step", "congruency"])["distance"].mean().unstack()
     rows = []
     for step, group in per_net.groupby(level="step"):
+        networks = group.index.get_level_values("network")
         diff = (group["incongruent"] - group["congruent"]).to_numpy()
-        mean, lo, hi = mean_ci(diff)
-        p = float(sps.ttest_rel(group["incongruent"], group["congruent"]).pvalue)
+        term = group_regression(diff, coded.loc[networks].to_numpy())["mean"]
         rows.append(
             {"step": int(step), "congruent": float(group["congruent"].mean()),
-             "incongruent": float(group["incongruent"].mean()), "difference": mean,
-             "ci_low": lo, "ci_high": hi, "p": p}
+             "incongruent": float(group["incongruent"].mean()),
+             "difference": term["estimate"], "ci_low": term["ci_low"],
+             "ci_high": term["ci_high"], "df": term["df"], "p": term["p"]}
         )  # fmt: skip
     summary = pd.DataFrame(rows)
     summary["p_holm"] = holm(summary["p"].to_numpy())

@@ -1,19 +1,21 @@
 """What drives the size effect: the dose of size coding, its manipulation check, the removal
-control and the demonstrations' geometry.
+control, object size crossed with the distance between an object's two grips, and the
+demonstrations' geometry.
 
 The paper explains why large objects are categorised faster by the Object map's larger cluster
 for a larger object. Here the width of the Object and Goal maps' clusters per unit of input is
 a dose (config ``size_dose``), each dose a run of the model replicated with fresh seeds, and a
 control run sends no size at all (``size_free_input``). The manipulation check counts the units
-each map's cluster lifts above one half, large over small, per shape; the dose-response is the
-size effect per dose, over whole replications, and its slope on the dose, one slope per
-replication, tested over replications. Each replication is one observation.
+each map's cluster lifts above one half, large over small, per shape.
 
-The nominal dose is a cluster width; what reaches the network is the Goal map's response (the
-Object map does not feed the network, the Goal map does). The delivered dose is therefore
-ln(large_units / small_units) on the Goal map (``delivered_doses``): 0 when the two sizes light
-as many units, and the slopes are fitted on it as well as on the nominal dose. ``power`` says
-what size effect the design could detect at all.
+With four objects a large object's two grips end further apart than its small partner's, so
+size and the grips' distance go together. The crossed design (config ``size_dose.crossed``)
+runs every replication twice, with the grips as demonstrated and with each object's grips moved
+to its same-shape partner's distance (``train.swapped_grips``), and measures each run's gap
+(``grip_gaps``). Each replication's two size effects against its two gaps give a line, whose
+value at no gap is size's part and whose rise over the natural gap is the grips' distance's part
+(``separated``); the declared tests (``declared_tests``) are one-sample t-tests of those parts
+over the replications, each replication one observation.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from .claims import power, sd_interval
 from .measures import analysed
 from .readings import family_names, flat_term, holm_hypotheses, over_replications
 from .som import active_units
@@ -35,15 +38,20 @@ EFFECT = "size"
 
 #: The Holm families of the study's tables (a row's ``family``).
 FAMILY_SUMMARY = "exploration: size study"
-#: The study's declared family (config ``size_dose.declared``), across the summary and slopes.
+#: The crossed design's declared tests (config ``size_dose.crossed``), Holm over themselves.
 FAMILY_DECLARED = "size study: declared"
-FAMILY_SLOPES = "exploration: size study slopes"
-FAMILY_MOTOR = "exploration: size study motor"
+#: The motor tests: on the removal runs planned with the study; at every dose added after the
+#: chapter's first results had been read; each its own family, never pooled.
+FAMILY_MOTOR_PLANNED = "exploration: size study motor (planned)"
+FAMILY_MOTOR_ADDED = "exploration: size study motor (added after results)"
 
-#: The study's controls, which stand in its ``dose`` column beside the numeric doses: no size in
-#: the input (``removed``), and dose 0 with every object's grips at one distance
-#: (``equal_grips``).
-CONTROLS: tuple[str, ...] = ("removed", "equal_grips")
+#: The study's control, which stands in its ``dose`` column beside the numeric doses: no size in
+#: the input (``removed``).
+CONTROLS: tuple[str, ...] = ("removed",)
+
+#: The grips as the networks learn them: as demonstrated, or each object's at its same-shape
+#: partner's distance (config ``size_dose.crossed.grip_arrangements``).
+NATURAL, SWAPPED = "natural", "swapped"
 
 
 def dose_value(dose: Any) -> Any:
@@ -60,6 +68,7 @@ SHAPES: dict[str, tuple[str, str]] = {
 #: The columns of data/size_dose/summary.csv (the contract first).
 SUMMARY_COLUMNS = [
     "dose",
+    "arrangement",
     "cue",
     "measure",
     "replications",
@@ -75,26 +84,6 @@ SUMMARY_COLUMNS = [
     "family",
     "relative_to_mean",
 ]
-
-#: The columns of data/size_dose/slope.csv.
-#: ``axis``: the dose the slope is on, "nominal" (the cluster width) or "delivered"
-#: (``delivered_doses``).
-SLOPE_COLUMNS = [
-    "cue",
-    "measure",
-    "axis",
-    "replications",
-    "slope",
-    "ci_low",
-    "ci_high",
-    "df",
-    "p",
-    "p_holm",
-    "family",
-]
-
-#: The dose axes of the slopes, in the table's order.
-AXES = ("nominal", "delivered")
 
 
 def size_free_maps(maps: Mapping[str, np.ndarray], objects: Sequence[str]) -> dict[str, np.ndarray]:
@@ -173,24 +162,29 @@ def delivered_doses(checks: pd.DataFrame) -> pd.Series:
 
 
 def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
-    """One row per cue timing, measure and dose (SUMMARY_COLUMNS): the size effect over the
-    replications (``readings.over_replications``: their mean, a t-interval over them), Holm's p
-    over the table's hypotheses (``FAMILY_SUMMARY``; a null control's rows are not), the effect
-    relative to the measure's mean, the manipulation check's mean ratios and the delivered dose
-    (``delivered_doses``, its mean over the replications). Replications that all give the
-    same estimate (a discrete measure) have no spread to test against: their p is undefined
-    (NaN), not 0."""
-    ratios = checks.groupby(["dose", "cue", "map"], sort=False)["ratio"].mean()
+    """One row per cue timing, measure, dose and grip arrangement (SUMMARY_COLUMNS): the size
+    effect over the replications (``readings.over_replications``: their mean, a t-interval
+    over them), Holm's p over the table's hypotheses (``FAMILY_SUMMARY``, exploration; a null
+    control's rows are not), the effect relative to the measure's mean, the manipulation
+    check's mean ratios and the delivered dose (``delivered_doses``, its mean over the
+    replications). Replications that all give the same estimate (a discrete measure) have no
+    spread to test against: their p is undefined (NaN), not 0."""
+    keys = ["dose", "arrangement", "cue"]
+    ratios = checks.groupby([*keys, "map"], sort=False)["ratio"].mean()
     delivered = delivered_doses(checks)
     rows = []
-    for (cue, measure, dose), group in replications.groupby(["cue", "measure", "dose"], sort=False):
+    for (cue, measure, dose, arrangement), group in replications.groupby(
+        ["cue", "measure", "dose", "arrangement"], sort=False
+    ):
         test = over_replications(group)
         if len(group) > 1 and np.ptp(group["estimate"].to_numpy(dtype=float)) == 0:
             test["p"] = float("nan")
+        at = (dose, arrangement, cue)
         rows.append(
-            {"dose": dose, "cue": cue, "measure": measure, "replications": len(group),
-             "large_small_ratio_object": float(ratios[(dose, cue, "object")]),
-             "large_small_ratio_goal": float(ratios[(dose, cue, "goal")]),
+            {"dose": dose, "arrangement": arrangement, "cue": cue, "measure": measure,
+             "replications": len(group),
+             "large_small_ratio_object": float(ratios[(*at, "object")]),
+             "large_small_ratio_goal": float(ratios[(*at, "goal")]),
              "delivered_dose": float(delivered.reindex(group["run"].unique()).mean()),
              "relative_to_mean": test["diff"] / float(group["cell_mean"].mean())}
             | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p")}
@@ -201,244 +195,176 @@ def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def least_squares_slope(x: np.ndarray, y: np.ndarray) -> float:
-    """The least-squares slope of y on x; NaN if x does not vary."""
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    sxx = np.sum((x - x.mean()) ** 2)
-    return float(np.sum((x - x.mean()) * (y - y.mean())) / sxx) if sxx > 0 else float("nan")
+# ---- size crossed with the grips' distance ---------------------------------------------------
 
 
-def slopes(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
-    """Per cue timing, measure and dose axis (``AXES``), the size effect's slope on the dose
-    (the removal control left out): each replication's own least-squares slope over its runs,
-    on the nominal dose or on each run's own delivered dose (``delivered_doses`` of the
-    manipulation check ``checks``), their mean and a t-test over the replications
-    (df = replications - 1), Holm's p over the table's hypotheses, both axes one family
-    (``FAMILY_SLOPES``; a null control's rows are not in it)."""
-    dosed = replications[~replications["dose"].astype(str).isin(CONTROLS)]
-    delivered = delivered_doses(checks)
+def grip_gaps(geometry: pd.DataFrame) -> pd.Series:
+    """Per run (index ``run``), the gap: the large minus the small object's grip distance
+    (``demo_grip_distance`` of the demonstrations that run's networks learn), the mean over the
+    shapes. Positive where the large objects' grips lie the further apart (as demonstrated)."""
+    per_object = geometry.groupby(["run", "object"], sort=False)["demo_grip_distance"].first()
+    gaps = {}
+    for run in dict.fromkeys(geometry["run"]):
+        distance = per_object.loc[run]
+        gaps[run] = float(np.mean([distance[large] - distance[small]
+                                   for large, small in SHAPES.values()]))  # fmt: skip
+    return pd.Series(gaps, name="gap")
+
+
+#: The columns of data/size_dose/crossed.csv: per run of the crossed design, both factors as
+#: measured (the Goal map's delivered size, each object's grips' distance and the gap) and the
+#: run's size effect on the declared measure.
+CROSSED_COLUMNS = ["cue", "dose", "arrangement", "seed", "run", "measure", "delivered_dose",
+                   *(f"grip_distance_{o}" for pair in SHAPES.values() for o in pair), "gap",
+                   "estimate"]  # fmt: skip
+
+
+def crossed_runs(
+    replications: pd.DataFrame, checks: pd.DataFrame, geometry: pd.DataFrame, measure: str
+) -> pd.DataFrame:
+    """One row per run of the crossed design (the removal control left out): its size effect on
+    ``measure`` and the two factors it was run at, as measured (``CROSSED_COLUMNS``)."""
+    runs = replications[
+        (replications["measure"] == measure) & ~replications["dose"].astype(str).isin(CONTROLS)
+    ]
+    delivered, gaps = delivered_doses(checks), grip_gaps(geometry)
+    distance = geometry.groupby(["run", "object"], sort=False)["demo_grip_distance"].first()
     rows = []
-    for (cue, measure), group in dosed.groupby(["cue", "measure"], sort=False):
-        for axis in AXES:
-            per_seed = [
-                least_squares_slope(
-                    rep["dose"] if axis == "nominal" else delivered.loc[rep["run"]],
-                    rep["estimate"],
-                )
-                for _seed, rep in group.groupby("seed", sort=False)
-            ]
-            slope = np.array(per_seed)
-            n = len(slope)
-            sd = slope.std(ddof=1) if n > 1 else float("nan")
-            term = t_term(slope.mean(), sd / np.sqrt(n), n - 1)
-            rows.append(
-                {"cue": cue, "measure": measure, "axis": axis, "replications": n,
-                 "slope": term["estimate"]}
-                | {k: term[k] for k in ("ci_low", "ci_high", "df", "p")}
-            )  # fmt: skip
-    out = pd.DataFrame(rows, columns=SLOPE_COLUMNS)
-    out["p_holm"] = holm_hypotheses(out) if len(out) else []
-    out["family"] = family_names(out, FAMILY_SLOPES)
-    return out
-
-
-def declared_family(
-    summary_table: pd.DataFrame, slope_table: pd.DataFrame, declared: Mapping[str, Any]
-) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """The two tables with the study's declared tests (config ``size_dose.declared``: the size
-    effect at each of its ``doses`` and the slope on each of its ``slopes`` axes, on its
-    ``measure``, under every cue timing) made one family, ``FAMILY_DECLARED``, Holm-adjusted
-    over themselves alone; every other hypothesis of each table re-adjusted within its own
-    exploration family without them. A declared test that the tables do not hold is refused."""
-    summary_table, slope_table = summary_table.copy(), slope_table.copy()
-    doses = {str(dose_value(d)) for d in declared["doses"]}
-    in_summary = (summary_table["measure"] == declared["measure"]) & summary_table["dose"].map(
-        lambda d: str(dose_value(d)) in doses
-    )
-    in_slopes = (slope_table["measure"] == declared["measure"]) & slope_table["axis"].isin(
-        declared["slopes"]
-    )
-    expected = len(summary_table["cue"].unique()) * (len(doses) + len(set(declared["slopes"])))
-    if int(in_summary.sum() + in_slopes.sum()) != expected:
-        raise ValueError(
-            f"size_dose.declared names {expected} tests, the study's tables hold "
-            f"{int(in_summary.sum() + in_slopes.sum())}: every declared dose must be in "
-            "size_dose.doses and every slope axis one of " + ", ".join(AXES)
-        )
-    adjusted = holm(
-        np.concatenate([summary_table.loc[in_summary, "p"], slope_table.loc[in_slopes, "p"]])
-    )
-    n = int(in_summary.sum())
-    for table, chosen, exploration, values in (
-        (summary_table, in_summary, FAMILY_SUMMARY, adjusted[:n]),
-        (slope_table, in_slopes, FAMILY_SLOPES, adjusted[n:]),
-    ):
-        table.loc[chosen, "p_holm"] = values
-        table.loc[chosen, "family"] = FAMILY_DECLARED
-        rest = (table["family"] == exploration).to_numpy()
-        table.loc[rest, "p_holm"] = holm(table.loc[rest, "p"].to_numpy(dtype=float))
-    return summary_table, slope_table
-
-
-#: The family of the grips' distance's share (``grip_distance_share``): chosen after the
-#: equal-grips control's results were read, so exploration.
-FAMILY_GRIPS = "exploration: the grips' distance"
-
-#: The columns of data/size_dose/grip_distance.csv.
-GRIP_COLUMNS = ["cue", "measure", "replications", "diff", "ci_low", "ci_high", "df", "p",
-                "family", "p_holm"]  # fmt: skip
-
-
-def grip_distance_share(replications: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
-    """Per cue timing, how much of the dose-0 size effect the grips' distance carries: each
-    replication's size effect at dose 0 minus its size effect at dose 0 with every object's
-    grips at one distance (``equal_grips``: the same seed, so the same demonstrations before
-    the move, maps and initial networks), tested over the replications (t, replications - 1
-    df); Holm within ``FAMILY_GRIPS``. Empty without the control."""
-    rows = []
-    dose = replications["dose"].astype(str)
-    for cue, group in replications[replications["measure"] == measure].groupby("cue", sort=False):
-        by = {
-            level: group[dose.loc[group.index] == level].set_index("seed")["estimate"]
-            for level in ("0.0", "equal_grips")
-        }
-        seeds = by["0.0"].index.intersection(by["equal_grips"].index)
-        if len(seeds) == 0:
-            continue
-        diff = (by["0.0"].loc[seeds] - by["equal_grips"].loc[seeds]).to_numpy(dtype=float)
-        n = len(diff)
-        sd = diff.std(ddof=1) if n > 1 else float("nan")
-        term = t_term(diff.mean(), sd / np.sqrt(n), n - 1)
+    for _, row in runs.iterrows():
+        run = row["run"]
         rows.append(
-            {"cue": cue, "measure": measure, "replications": n, "diff": term["estimate"]}
-            | {k: term[k] for k in ("ci_low", "ci_high", "df", "p")}
-        )
-    out = pd.DataFrame(rows, columns=GRIP_COLUMNS)
-    out["family"] = FAMILY_GRIPS
-    out["p_holm"] = holm(out["p"].to_numpy(dtype=float)) if len(out) else []
-    return out
+            {k: row[k] for k in ("cue", "dose", "arrangement", "seed", "run", "measure")}
+            | {"delivered_dose": float(delivered[run]), "gap": float(gaps[run]),
+               "estimate": float(row["estimate"])}
+            | {f"grip_distance_{o}": float(distance[(run, o)])
+               for pair in SHAPES.values() for o in pair}
+        )  # fmt: skip
+    return pd.DataFrame(rows, columns=CROSSED_COLUMNS)
 
 
-# ---- the design's power --------------------------------------------------------------------
-
-#: The size effects (RMSE, small - large) the power table asks about, at dose 0, and the test's
-#: two-sided alpha; the power wanted, and the most replications looked at to reach it.
-POWER_EFFECTS: tuple[float, ...] = (0.01, 0.02, 0.04)
-POWER_ALPHA = 0.05
-POWER_TARGET = 0.8
-MOST_REPLICATIONS = 100
-
-#: The columns of data/size_dose/power.csv.
-POWER_COLUMNS = [
-    "cue",
-    "measure",
-    "effect",
-    "replications",
-    "networks",
-    "sigma_rep",
-    "sigma_net",
-    "alpha",
-    "power",
-    "alpha_holm_bound",
-    "power_holm_bound",
-    "replications_for_80",
-    "replications_for_80_holm_bound",
-]
+#: The columns of data/size_dose/separated.csv: per replication, cue timing and dose, the two
+#: runs' effects and gaps and the line through them.
+SEPARATED_COLUMNS = ["cue", "dose", "seed", "measure", "effect_natural", "effect_swapped",
+                     "gap_natural", "gap_swapped", "slope", "size", "grip_distance"]  # fmt: skip
 
 
-def variance_components(rows: pd.DataFrame) -> dict[str, float]:
-    """How a replication's size estimate varies, by the method of moments, from replications
-    of one design (rows with ``estimate``, its ``se`` and ``networks``). A replication's se is
-    sigma_net / sqrt(networks), so sigma_net^2 is the pooled se^2 * networks (the between-network
-    variance of the per-network contrast); sigma_rep^2, the between-replication variance beyond
-    it, is the variance of the estimates minus its expected within part, mean(se^2), floored at
-    0 (NaN with one replication)."""
-    se2 = rows["se"].to_numpy(dtype=float) ** 2
-    networks = rows["networks"].to_numpy(dtype=float)
-    estimates = rows["estimate"].to_numpy(dtype=float)
-    between = estimates.var(ddof=1) - se2.mean() if len(rows) > 1 else float("nan")
-    return {
-        "sigma_rep": float(np.sqrt(max(between, 0.0))) if np.isfinite(between) else float("nan"),
-        "sigma_net": float(np.sqrt((se2 * networks).mean())),
-        "networks": int(round(networks.mean())),
+def separate(
+    effect_natural: float, effect_swapped: float, gap_natural: float, gap_swapped: float
+) -> dict[str, float]:
+    """The line c = size + slope * gap through a replication's two runs (effect c, gap g):
+    ``size``, its value at no gap (size's part), and ``grip_distance``, slope * the natural gap
+    (the part of the natural run's effect the gap carries; the two add up to the natural run's
+    effect). Undefined (NaN) where the two gaps are equal: no line."""
+    run = gap_natural - gap_swapped
+    if not (np.isfinite(run) and run != 0):
+        nan = float("nan")
+        return {"slope": nan, "size": nan, "grip_distance": nan}
+    slope = (effect_natural - effect_swapped) / run
+    return {"slope": float(slope), "size": float(effect_natural - slope * gap_natural),
+            "grip_distance": float(slope * gap_natural)}  # fmt: skip
+
+
+def separated(crossed: pd.DataFrame) -> pd.DataFrame:
+    """Per cue timing, dose and replication, size's and the grips' distance's parts of the size
+    effect (``separate``) from the replication's natural and swapped runs (``crossed_runs``)."""
+    rows = []
+    for (cue, dose, seed), runs in crossed.groupby(["cue", "dose", "seed"], sort=False):
+        by = runs.set_index("arrangement")
+        if not {NATURAL, SWAPPED} <= set(by.index):
+            continue
+        values = {
+            "effect_natural": float(by.loc[NATURAL, "estimate"]),
+            "effect_swapped": float(by.loc[SWAPPED, "estimate"]),
+            "gap_natural": float(by.loc[NATURAL, "gap"]),
+            "gap_swapped": float(by.loc[SWAPPED, "gap"]),
+        }
+        rows.append(
+            {"cue": cue, "dose": dose, "seed": seed, "measure": runs["measure"].iloc[0]}
+            | values | separate(*values.values())
+        )  # fmt: skip
+    return pd.DataFrame(rows, columns=SEPARATED_COLUMNS)
+
+
+#: The columns of data/size_dose/declared.csv.
+DECLARED_COLUMNS = ["test", "cue", "dose", "measure", "replications", "left_out", "estimate",
+                    "sd", "ci_low", "ci_high", "df", "p", "p_holm", "family"]  # fmt: skip
+
+
+def one_sample(values: np.ndarray) -> dict[str, float]:
+    """The one-sample t-test of mean 0 over the defined ``values`` (one per replication; an
+    undefined one left out and counted): the mean, SD, t-interval, df and p."""
+    values = np.asarray(values, dtype=float)
+    defined = values[np.isfinite(values)]
+    n = len(defined)
+    sd = float(defined.std(ddof=1)) if n > 1 else float("nan")
+    term = t_term(defined.mean() if n else float("nan"), sd / np.sqrt(max(n, 1)), n - 1)
+    return {"replications": n, "left_out": len(values) - n, "sd": sd} | {
+        k: term[k] for k in ("estimate", "ci_low", "ci_high", "df", "p")
     }
 
 
-def power(
-    effect: float,
-    replications: int,
-    networks: int,
-    sigma_rep: float,
-    sigma_net: float,
-    alpha: float = POWER_ALPHA,
-) -> float:
-    """The power of the study's test of a size effect (``readings.over_replications``: a t-test
-    of the replications' estimates, df = R - 1, two-sided): each estimate has variance
-    tau^2 = sigma_rep^2 + sigma_net^2 / networks, so t is noncentral t with df R - 1 and
-    noncentrality effect * sqrt(R) / tau, and the power is P(t > c) + P(t < -c), c the central
-    t's 1 - alpha/2 quantile; P(t < -c) as P(t' > c) with the noncentrality negated (scipy's
-    lower tail of a far noncentral t can be NaN, its upper tails are not). NaN with fewer than
-    two replications or no variance (no test)."""
-    from scipy import stats as sps
-
-    tau = float(np.sqrt(sigma_rep**2 + sigma_net**2 / networks))
-    if replications < 2 or not (np.isfinite(tau) and tau > 0):
-        return float("nan")
-    df = replications - 1
-    ncp = effect * np.sqrt(replications) / tau
-    c = float(sps.t.ppf(1 - alpha / 2, df))
-    return float(sps.nct.sf(c, df, ncp) + sps.nct.sf(c, df, -ncp))
-
-
-def replications_for(
-    effect: float, networks: int, sigma_rep: float, sigma_net: float, alpha: float = POWER_ALPHA
-) -> int | None:
-    """The fewest replications (2 .. ``MOST_REPLICATIONS``) whose test has at least
-    ``POWER_TARGET`` power (``power``); None if even the most have less."""
-    for replications in range(2, MOST_REPLICATIONS + 1):
-        if power(effect, replications, networks, sigma_rep, sigma_net, alpha) >= POWER_TARGET:
-            return replications
-    return None
-
-
-def family_size(table: pd.DataFrame, family: str) -> int:
-    """The tests of ``family`` in a table with a defined p (those Holm adjusts over)."""
-    return int(np.isfinite(table.loc[table["family"] == family, "p"].to_numpy(dtype=float)).sum())
-
-
-def power_table(replications: pd.DataFrame, tests: int, measure: str = "rmse") -> pd.DataFrame:
-    """Per cue timing, the default design's power (``power``) to detect each size effect of
-    ``POWER_EFFECTS`` at dose 0, with the variance components of that design's dose-0 rows
-    (``variance_components``): at alpha, and at alpha / ``tests`` (``tests``: the size study's
-    family, ``FAMILY_SUMMARY``), Holm's first step, Bonferroni's: a lower bound on the power
-    after Holm, whose threshold for any test is at least that. ``replications_for_80``: the
-    fewest replications with 80% power at alpha, and at the Holm bound (empty if more than
-    ``MOST_REPLICATIONS``)."""
-    dose = replications["dose"].astype(str)
-    zero = ~dose.isin(CONTROLS) & (pd.to_numeric(dose, errors="coerce") == 0)
+def declared_tests(
+    parts: pd.DataFrame, tests: Sequence[str], doses: Sequence[float]
+) -> pd.DataFrame:
+    """The crossed design's declared family (config ``size_dose.crossed.tests``), Holm over
+    itself alone (``FAMILY_DECLARED``): per cue timing, ``size`` and ``grip_distance`` at every
+    dose (``separated``), and ``dose``, the natural runs' size effect at the largest dose minus at
+    the smallest, per replication; each a one-sample t over the replications. ``dose`` for the
+    contrast reads "<largest> - <smallest>"."""
+    low, high = float(min(doses)), float(max(doses))
     rows = []
-    for cue, group in replications[zero & (replications["measure"] == measure)].groupby(
-        "cue", sort=False
-    ):
-        parts = variance_components(group)
-        design = {"replications": int(group["seed"].nunique()), "networks": parts["networks"]}
-        spread = {k: parts[k] for k in ("sigma_rep", "sigma_net")}
-        bound = POWER_ALPHA / max(tests, 1)
-        for effect in POWER_EFFECTS:
-            rows.append(
-                {"cue": cue, "measure": measure, "effect": effect} | design | spread
-                | {"alpha": POWER_ALPHA, "power": power(effect, **design, **spread),
-                   "alpha_holm_bound": bound,
-                   "power_holm_bound": power(effect, **design, **spread, alpha=bound),
-                   "replications_for_80": replications_for(
-                       effect, design["networks"], **spread),
-                   "replications_for_80_holm_bound": replications_for(
-                       effect, design["networks"], **spread, alpha=bound)}
-            )  # fmt: skip
-    out = pd.DataFrame(rows, columns=POWER_COLUMNS)
-    for column in ("replications_for_80", "replications_for_80_holm_bound"):
-        out[column] = out[column].astype("Int64")
+    for cue, by_cue in parts.groupby("cue", sort=False):
+        dose = by_cue["dose"].astype(float)
+        for test in tests:
+            if test == "dose":
+                natural = by_cue.assign(dose=dose).pivot(index="seed", columns="dose",
+                                                         values="effect_natural")  # fmt: skip
+                values = {f"{high:g} - {low:g}": (natural[high] - natural[low]).to_numpy()}
+            else:
+                values = {f"{d:g}": by_cue.loc[dose == d, test].to_numpy() for d in doses}
+            for at, column in values.items():
+                rows.append(
+                    {"test": test, "cue": cue, "dose": at, "measure": by_cue["measure"].iloc[0]}
+                    | one_sample(column)
+                )
+    out = pd.DataFrame(rows, columns=DECLARED_COLUMNS)
+    out["p_holm"] = holm(out["p"].to_numpy(dtype=float)) if len(out) else []
+    out["family"] = FAMILY_DECLARED
     return out
+
+
+#: The columns of data/size_dose/power.csv.
+POWER_COLUMNS = ["test", "cue", "dose", "replications", "effect_of_interest", "sd", "sd_low",
+                 "sd_high", "alpha_at_least", "power_at_least", "power_at_least_low",
+                 "power_at_least_high", "alpha_at_most", "power_at_most", "power_at_most_low",
+                 "power_at_most_high"]  # fmt: skip
+
+
+def power_table(declared: pd.DataFrame, effect: float, alpha: float) -> pd.DataFrame:
+    """Per declared test, its power to detect ``effect`` (``claims.power``: a two-sided
+    one-sample t over its replications), from the build's own SD of the replications' values
+    and at the two ends of that SD's 95% chi-square interval (``claims.sd_interval``): the
+    range the variance estimate allows (a larger SD, less power). At alpha / the family's size
+    (*at least*: Holm's threshold for any test of the family is at least that, so its power is
+    at least this) and at alpha (*at most*: no test of the family is tried at a larger level)."""
+    tested = int(np.isfinite(declared["p"].to_numpy(dtype=float)).sum())
+    at_least = alpha / max(tested, 1)
+    rows = []
+    for _, row in declared.iterrows():
+        n, sd = int(row["replications"]), float(row["sd"])
+        low, high = sd_interval(sd, n)
+        out = {k: row[k] for k in ("test", "cue", "dose", "replications")} | {
+            "effect_of_interest": effect,
+            "sd": sd,
+            "sd_low": low,
+            "sd_high": high,
+        }
+        for name, level in (("at_least", at_least), ("at_most", alpha)):
+            out |= {f"alpha_{name}": level, f"power_{name}": power(effect, sd, n, level),
+                    f"power_{name}_low": power(effect, high, n, level),
+                    f"power_{name}_high": power(effect, low, n, level)}  # fmt: skip
+        rows.append(out)
+    return pd.DataFrame(rows, columns=POWER_COLUMNS)
 
 
 # ---- the motor side: the demonstrations' geometry ---------------------------------------------
@@ -481,22 +407,26 @@ def geometry_of_trials(geometry: pd.DataFrame, grips: Sequence[str]) -> pd.DataF
 def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
     """Do the demonstrations' differences line up with each object's error? ``trials``: the
     categorisation trials (closed loop) of the study's runs, with their ``dose`` (or "removed"),
-    cue timing, replication (``seed``), network, object and target grip, the measure, and the
-    geometry of the required grip's demonstrations (``GEOMETRY`` columns, from that run's own
-    demonstrations). Per network, the least-squares slope of its four objects' mean error on
-    each geometry measure (standardised over the four). The networks of one replication share
-    its demonstrations, so the unit is the replication: its networks' mean slope, tested over
-    the replications (df = replications - 1), per dose and cue timing; Holm's p over the table
-    (``FAMILY_MOTOR``).
+    grip ``arrangement``, cue timing, replication (``seed``), network, object and target grip,
+    the measure, and the geometry of the required grip's demonstrations (``GEOMETRY`` columns,
+    from that run's own demonstrations). Per network, the least-squares slope of its four
+    objects' mean error on each geometry measure (standardised over the four). The networks
+    of one replication share its demonstrations, so the unit is the replication: its networks'
+    mean slope, tested over the replications (df = replications - 1), per dose, arrangement
+    and cue timing; Holm's p within each family: the removal runs' (``FAMILY_MOTOR_PLANNED``,
+    planned with the study) and every other run's (``FAMILY_MOTOR_ADDED``, added after
+    results), never pooled.
     With four objects a measure that ranks the objects as size does cannot be told from size."""
-    keys = ["dose", "cue", "seed", "network", "object"]
+    keys = ["dose", "arrangement", "cue", "seed", "network", "object"]
     per_object = (
         trials.groupby(keys, sort=False)
         .agg({measure: "mean", **{g: "mean" for g in GEOMETRY}})
         .reset_index()
     )
     rows = []
-    for (dose, cue), by_cue in per_object.groupby(["dose", "cue"], sort=False):
+    for (dose, arrangement, cue), by_cue in per_object.groupby(
+        ["dose", "arrangement", "cue"], sort=False
+    ):
         for geometry in GEOMETRY:
             per_replication = []
             networks = 0
@@ -519,6 +449,7 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
             rows.append(
                 {
                     "dose": dose,
+                    "arrangement": arrangement,
                     "cue": cue,
                     "geometry": geometry,
                     "measure": measure,
@@ -529,16 +460,21 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
             )
     out = pd.DataFrame(rows)
     if len(out):
-        out["p_holm"] = holm(out["p"].to_numpy(dtype=float))
-        out["family"] = FAMILY_MOTOR
+        planned = out["dose"].astype(str).isin(CONTROLS).to_numpy()
+        out["family"] = np.where(planned, FAMILY_MOTOR_PLANNED, FAMILY_MOTOR_ADDED)
+        out["p_holm"] = np.nan
+        for chosen in (planned, ~planned):
+            out.loc[chosen, "p_holm"] = holm(out.loc[chosen, "p"].to_numpy(dtype=float))
     return out
 
 
 def ranked_like_size(geometry: pd.DataFrame) -> list[str]:
     """The demonstrations' measures (``GEOMETRY``) that rank the objects as their size does in
-    every replication of ``geometry`` (``demo_geometry`` rows with a ``seed``): larger for the
-    big ball than the small one and for the big cube than the small one (mean over the grips).
-    With four objects per network, a slope on such a measure cannot be told from size."""
+    every replication of ``geometry``'s natural runs (``demo_geometry`` rows with a ``seed`` and
+    an ``arrangement``): larger for the big ball than the small one and for the big cube than
+    the small one (mean over the grips). With four objects per network, a slope on such a
+    measure cannot be told from size; the swapped runs reverse the grips' distance on purpose."""
+    geometry = geometry[geometry["arrangement"] == NATURAL]
     per_seed = geometry.groupby(["seed", "object"])[list(GEOMETRY)].mean()
     return [
         g

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -391,38 +392,62 @@ def network_seed(seed: int, network: int) -> int:
 
 
 #: What the networks learn of the two grips' distance (config ``grip_distance``): the
-#: demonstrations as made, or each object's grips moved apart or together to one distance.
-GRIP_DISTANCES = ("natural", "equal")
+#: demonstrations as made, or each object's grips moved to its same-shape partner's distance.
+GRIP_DISTANCES = ("natural", "swapped")
 
 
-def final_grip_distances(postures: np.ndarray) -> np.ndarray:
-    """Per object, the mean over sequences of the distance (over the 16 DoF, 0-1 units) between
-    the two grips' final postures; ``postures`` (object, grip, sequence, step, DoF)."""
-    final = postures[:, :, :, -1]
-    return np.linalg.norm(final[:, 0] - final[:, 1], axis=-1).mean(axis=1)
+def mean_final_grip_distances(postures: np.ndarray) -> np.ndarray:
+    """Per object, the distance between its two grips' mean final postures (over sequences):
+    the grips' distance the size study measures and the swap matches."""
+    final = np.asarray(postures, dtype=float)[:, :, :, -1].mean(axis=2)
+    return np.linalg.norm(final[:, 0] - final[:, 1], axis=-1)
 
 
-def equal_grip_distance(postures: np.ndarray, scale: np.ndarray | None = None) -> np.ndarray:
-    """The demonstrations with every object's two grips at one final distance, the four objects'
-    mean: at every step the two grips' postures are moved apart or together about their
-    midpoint by the object's factor (mean distance / the object's, from ``postures`` unless
-    ``scale`` gives them), then held within the joints' ranges (0-1). With four objects a large
-    object's grips lie further apart than a small one's, so object size and the grips' distance
-    go together; equal distances take the distance away and leave the size. Step 0, common to
-    both grips, does not move."""
+def shape_partners(objects: Sequence[str]) -> list[int]:
+    """Per object, the index of the other object of its shape (its category: the balls are
+    the natural objects, the cubes the artefacts). Refused unless each shape has two."""
+    partners = []
+    for obj in objects:
+        same = [k for k, o in enumerate(objects) if o != obj
+                and OBJECTS[o].category == OBJECTS[obj].category]  # fmt: skip
+        if len(same) != 1:
+            raise ValueError(
+                f"grip_distance 'swapped' needs each object's one same-shape partner; {obj!r} "
+                f"has {len(same)} among {list(objects)}: use grip_distance 'natural'"
+            )
+        partners.append(same[0])
+    return partners
+
+
+def swap_scale(postures: np.ndarray, objects: Sequence[str]) -> np.ndarray:
+    """Per object, the factor that moves its two grips' mean final postures to its partner's
+    distance (``mean_final_grip_distances``): partner's distance over its own."""
+    distances = mean_final_grip_distances(postures)
+    return distances[shape_partners(objects)] / distances
+
+
+def scaled_grips(postures: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """The demonstrations with each object's two grips moved apart (factor above 1) or together
+    about their midpoint, at every step, by the object's factor, then held within the joints'
+    ranges (0-1), which may clip the move: its effect is measured, not assumed. Step 0, common
+    to both grips, does not move."""
     postures = np.asarray(postures, dtype=float)
-    if scale is None:
-        distances = final_grip_distances(postures)
-        scale = distances.mean() / distances
     mid = postures.mean(axis=1, keepdims=True)
     factor = np.asarray(scale, dtype=float)[:, None, None, None, None]
     return np.clip(mid + factor * (postures - mid), 0.0, 1.0)
 
 
+def swapped_grips(postures: np.ndarray, objects: Sequence[str]) -> np.ndarray:
+    """The demonstrations with each object's grips at its same-shape partner's distance: the
+    small objects' grips then lie the further apart, so size and the grips' distance no longer
+    go together (the size study's crossed design)."""
+    return scaled_grips(postures, swap_scale(postures, objects))
+
+
 def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natural") -> Materials:
     """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle;
-    with ``grip_distance`` "equal", the demonstrations (and the servo targets, by the same
-    factors) with every object's grips at one distance (``equal_grip_distance``)."""
+    with ``grip_distance`` "swapped", the demonstrations (and the servo targets, by the same
+    factors) with each object's grips at its partner's distance (``swapped_grips``)."""
     if grip_distance not in GRIP_DISTANCES:
         raise ValueError(f"grip_distance must be one of {GRIP_DISTANCES}, not {grip_distance!r}")
     from .io import load_npz
@@ -440,10 +465,9 @@ def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natur
     # a servo target may lie beyond a joint's range (pressing against the stop); the sigmoid
     # outputs cannot, so they learn the range's end
     commands = np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0)
-    if grip_distance == "equal":
-        distances = final_grip_distances(angles)
-        scale = distances.mean() / distances
-        angles, commands = (equal_grip_distance(a, scale) for a in (angles, commands))
+    if grip_distance == "swapped":
+        scale = swap_scale(angles, objects)
+        angles, commands = (scaled_grips(a, scale) for a in (angles, commands))
     return Materials(
         objects=objects,
         grips=tuple(demos["grips"].tolist()),

@@ -319,23 +319,6 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             f"readings.equivalence_margin ({sorted(config['readings']['equivalence_margin'])}). "
             "Fix: remove the entry or correct its name."
         )
-    study = config["size_dose"]
-    needed = max(study["replications"], study["robustness_replications"])
-    if len(study["seeds"]) < needed:
-        yield (
-            f"{key('size_dose.seeds')}: {len(study['seeds'])} seeds for {needed} replications "
-            f"(each replication takes the next seed of the list). Allowed: at least {needed} "
-            "seeds. Fix: add seeds or lower size_dose.replications / robustness_replications."
-        )
-    run = {"removed": study["removal"], "equal_grips": study["equal_grips"]}
-    studied = [float(d) for d in study["doses"]] + [c for c, on in run.items() if on]
-    missing = [d for d in study["declared"]["doses"] if d not in studied]
-    if missing:
-        yield (
-            f"{key('size_dose.declared.doses')}: {missing} are not run by the study. Allowed: "
-            f"{studied} (size_dose.doses, and removed or equal_grips where switched on). Fix: "
-            "declare only what the study runs, or add the dose."
-        )
     if 0 not in robot["tolerance"]["noise"]:
         yield (
             f"{key('robot.tolerance.noise')}: {robot['tolerance']['noise']} does not list 0, the "
@@ -449,9 +432,21 @@ def _crossed_problems(config: Mapping[str, Any], confirmation: list[int], key) -
     """The size study's crossed design (config size_dose.crossed) is declared on fresh seeds:
     none of the confirmation's, the config's own or a sweep point's; and enough of them for its
     replications."""
-    crossed = config["size_dose"].get("crossed")
-    if crossed is None:
-        return
+    crossed = config["size_dose"]["crossed"]
+    swapping = "swapped" in crossed["grip_arrangements"] or config["grip_distance"] == "swapped"
+    if swapping:
+        from icub_affordance.train import shape_partners  # scipy: only when a swap is asked for
+
+        try:
+            shape_partners(list(config["objects"]))
+        except (ValueError, KeyError) as error:
+            yield (
+                f"{key('size_dose.crossed.grip_arrangements')}: the swapped grips move each "
+                f"object's grips to its same-shape partner's distance, but {error}. Allowed: "
+                "objects that pair up by shape (a large and a small ball, a large and a small "
+                "cube). Fix: restore the four objects, or run the study with grip_distance "
+                "natural only."
+            )
     needed = max(crossed["replications"], crossed["robustness_replications"])
     if len(crossed["seeds"]) < needed:
         yield (

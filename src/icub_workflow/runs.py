@@ -460,35 +460,39 @@ def _confirmation(
 
 
 def _size_dose(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
-    """The dose study (config ``size_dose``): every dose under every cue timing, replicated at the
-    first seeds of ``size_dose.seeds`` (its own: seeds whose runs no earlier analysis read, so
-    its declared tests are read on fresh data); and, with ``removal``, the control with no size
-    in the input; with ``equal_grips``, the control at dose 0 whose networks learn every object's
-    grips at one distance (config ``grip_distance``). A dose is the Object and Goal maps' width
-    per sqrt(edge cell), the Goal map growing, the clusters kept whole."""
+    """The size study (config ``size_dose``): every dose under every cue timing with each grip
+    arrangement of ``size_dose.crossed`` (``natural``: the demonstrations as made; ``swapped``:
+    each object's grips at its same-shape partner's distance, config ``grip_distance``),
+    replicated at the first seeds of ``size_dose.crossed.seeds`` (seeds no other part of the
+    build uses, so the declared tests are read on fresh data); and, with ``removal``, the
+    control with no size in the input (natural grips). A dose is the Object and Goal maps'
+    width per sqrt(edge cell), the Goal map growing, the clusters kept whole."""
     study = config["size_dose"]
-    count = study["robustness_replications" if config["robustness"] else "replications"]
-    seeds = list(study["seeds"][:count])
-    doses: list[Any] = [
-        *study["doses"],
-        *(["removed"] if study["removal"] else []),
-        *(["equal_grips"] if study["equal_grips"] else []),
-    ]
-    no_size = {"object_width_per_edge": 0.0, "goal_response": "grows", "keep_whole": True}
+    crossed = study["crossed"]
+    count = crossed["robustness_replications" if config["robustness"] else "replications"]
+    seeds = list(crossed["seeds"][:count])
+    conditions: list[tuple[Any, str]] = [
+        (dose, arrangement)
+        for dose in study["doses"]
+        for arrangement in crossed["grip_arrangements"]
+    ] + ([("removed", "natural")] if study["removal"] else [])
     table = []
-    for cue, dose, seed in itertools.product(study["categorisation_cue"], doses, seeds):
+    for cue, (dose, arrangement), seed in itertools.product(
+        study["categorisation_cue"], conditions, seeds
+    ):
         if dose == "removed":
             overrides: dict[str, Any] = {"size_free_input": True}
             name = f"size_removed_{cue}"
-        elif dose == "equal_grips":  # dose 0's maps, every object's grips at one distance
-            overrides = {"soms": no_size, "grip_distance": "equal"}
-            name = f"size_equalgrips_{cue}"
         else:
             grows = {"object_width_per_edge": dose, "goal_response": "grows", "keep_whole": True}
             overrides = {"soms": grows}
             name = f"size_dose{dose}_{cue}"
+            if arrangement != "natural":
+                overrides["grip_distance"] = arrangement
+                name = f"size_dose{dose}_{arrangement}_{cue}"
         overrides |= {"seed": seed, "network": {"categorisation_cue": cue}}
         name += "" if seed == config["seed"] else f"_seed{seed}"
         run = planner.find_or_add(name, overrides, "size_dose")
-        table.append({"dose": dose, "cue": cue, "seed": seed, "run": run})
+        table.append({"dose": dose, "arrangement": arrangement, "cue": cue, "seed": seed,
+                      "run": run})  # fmt: skip
     return table

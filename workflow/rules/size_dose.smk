@@ -1,6 +1,6 @@
 # What drives the size effect (config `size_dose`; the book's chapter of that name): a dose of
-# size coding, each dose a run replicated with fresh seeds (common.smk: PLAN.size_dose), the
-# removal control without size in the input, and the dose-response.
+# size coding crossed with the grips' distance, each condition a run replicated with fresh seeds
+# (common.smk: PLAN.size_dose), the removal control without size in the input.
 
 
 rule size_free_maps:
@@ -22,11 +22,10 @@ rule size_free_maps:
 
 
 rule size_dose:
-    """The dose-response of the size effect: per dose, cue timing and measure, the effect over
-    whole replications with the manipulation check's ratios and the delivered dose; its slope on
-    the nominal and on the delivered dose per cue timing and measure; the design's power to
-    detect a size effect at dose 0; and, per dose and without size, whether the demonstrations'
-    geometry accounts for each object's error."""
+    """The size study: per dose, grip arrangement, cue timing and measure, the size effect over
+    whole replications with the manipulation check's ratios and the delivered dose; size and
+    the grips' distance separated per replication, the declared tests and their power; and,
+    per condition, whether the demonstrations' geometry accounts for each object's error."""
     input:
         measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose],
         soms=[
@@ -41,9 +40,10 @@ rule size_dose:
         code=script_code("size_dose"),
     output:
         summary="data/size_dose/summary.csv",
-        slope="data/size_dose/slope.csv",
+        crossed="data/size_dose/crossed.csv",
+        separated="data/size_dose/separated.csv",
+        declared="data/size_dose/declared.csv",
         power="data/size_dose/power.csv",
-        grips="data/size_dose/grip_distance.csv",
         replications="data/size_dose/replications.csv",
         manipulation="data/size_dose/manipulation.csv",
         geometry="data/size_dose/geometry.csv",
@@ -51,7 +51,8 @@ rule size_dose:
     params:
         table=PLAN.size_dose,
         measures=config["readings"]["measures"],
-        declared=settings(config["size_dose"]["declared"]),
+        crossed=settings(config["size_dose"]["crossed"]),
+        doses=settings(config["size_dose"]["doses"]),
     resources:
         mem_mb=1000,
         runtime=10,
@@ -64,12 +65,13 @@ rule size_dose:
 
 
 rule size_dose_figure:
-    """The size effect against the dose, per cue timing and measure, with the manipulation
-    check (plot only)."""
+    """The size effect against the gap between the grips' distances, per dose and cue timing,
+    the size effect per condition and measure, and the manipulation check (plot only)."""
     input:
         summary=rules.size_dose.output.summary,
         replications=rules.size_dose.output.replications,
         manipulation=rules.size_dose.output.manipulation,
+        crossed=rules.size_dose.output.crossed,
         code=script_code("size_dose_figure"),
     output:
         "data/size_dose/dose_response.png",

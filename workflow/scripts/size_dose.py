@@ -1,7 +1,8 @@
 """The size study's tables: data/size_dose/replications.csv (one row per study run and measure),
-manipulation.csv (the clusters' sizes), summary.csv and slope.csv (the dose-response), power.csv
-(what size effect the design could detect at dose 0), and geometry.csv and motor.csv (do the
-demonstrations account for each object's error, per dose and without size?)."""
+manipulation.csv (the clusters' sizes), summary.csv (the size effect per dose, grip arrangement
+and cue timing: exploration), crossed.csv and separated.csv (size crossed with the grips'
+distance: per run, per replication), declared.csv and power.csv (the declared tests and their
+power), and geometry.csv and motor.csv (do the demonstrations account for each object's error?)."""
 
 import json
 from pathlib import Path
@@ -10,23 +11,23 @@ import pandas as pd
 
 from icub_affordance.io import load_npz, redirect_log, write_tables
 from icub_affordance.size_dose import (
-    FAMILY_DECLARED,
-    declared_family,
+    SWAPPED,
+    crossed_runs,
+    declared_tests,
     demo_geometry,
-    family_size,
     geometry_of_trials,
-    grip_distance_share,
     manipulation,
     motor_tests,
     power_table,
     replication_rows,
-    slopes,
+    separated,
     summary,
 )
-from icub_affordance.train import equal_grip_distance
+from icub_affordance.train import swapped_grips
 
 with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]
+    crossed = snakemake.params.crossed
     measures = list(snakemake.params.measures)
     analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
     replications = replication_rows(table, analyses, measures)
@@ -38,10 +39,10 @@ with redirect_log(snakemake.log[0]):
         demos = load_npz(demos_path, required=("angles", "objects", "grips"))
         objects, grips = [str(o) for o in demos["objects"]], [str(g) for g in demos["grips"]]
         angles = demos["angles"]
-        if row["dose"] == "equal_grips":  # the demonstrations as that run's networks learn them
-            angles = equal_grip_distance(angles)
+        if row["arrangement"] == SWAPPED:  # the demonstrations as that run's networks learn them
+            angles = swapped_grips(angles, objects)
         geometry = demo_geometry(angles, objects)
-        study = {"dose": row["dose"], "cue": row["cue"], "seed": row["seed"]}
+        study = {k: row[k] for k in ("dose", "arrangement", "cue", "seed")}
         geometries.append(geometry.assign(**study, run=row["run"]))
         df = pd.read_csv(trials_path, keep_default_na=False)
         df = df[(df["task"] == "categorisation") & (df["mode"] == "closed_loop")]
@@ -52,26 +53,25 @@ with redirect_log(snakemake.log[0]):
         )
     geometry_table = pd.concat(geometries, ignore_index=True)
     motor = motor_tests(pd.concat(trials, ignore_index=True))
-    table_summary, table_slopes = declared_family(
-        summary(replications, checks), slopes(replications, checks), snakemake.params.declared
-    )
-    declared = family_size(table_summary, FAMILY_DECLARED) + family_size(
-        table_slopes, FAMILY_DECLARED
-    )
-    power = power_table(replications, declared)
+    runs = crossed_runs(replications, checks, geometry_table, crossed["measure"])
+    parts = separated(runs)
+    declared = declared_tests(parts, crossed["tests"], snakemake.params.doses)
+    power = power_table(declared, crossed["effect_of_interest"], crossed["alpha"])
+    table_summary = summary(replications, checks)
     write_tables(
         [
             (snakemake.output.replications, replications),
             (snakemake.output.manipulation, checks),
             (snakemake.output.summary, table_summary),
-            (snakemake.output.slope, table_slopes),
-            (snakemake.output.grips, grip_distance_share(replications)),
+            (snakemake.output.crossed, runs),
+            (snakemake.output.separated, parts),
+            (snakemake.output.declared, declared),
             (snakemake.output.power, power),
             (snakemake.output.geometry, geometry_table),
             (snakemake.output.motor, motor),
         ]
     )
-    print(table_summary.to_string())
-    print(table_slopes.to_string())
+    print(declared.to_string())
     print(power.to_string())
+    print(table_summary.to_string())
     print(motor.to_string())

@@ -1,4 +1,5 @@
-"""The size effect against the dose, with the manipulation check (plot only)."""
+"""The size study's figure: each replication's size effect against its gap, the size effect per
+dose and grip arrangement, and the manipulation check (plot only)."""
 
 import pandas as pd
 
@@ -19,5 +20,6 @@ with redirect_log(snakemake.log[0]):
         read(snakemake.input.summary),
         read(snakemake.input.replications),
         read(snakemake.input.manipulation),
+        read(snakemake.input.crossed),
         snakemake.output[0],
     )

@@ -16,7 +16,11 @@ from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
 from icub_affordance.io import load_npz
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
-from icub_affordance.size_dose import FAMILY_DECLARED, ranked_like_size
+from icub_affordance.size_dose import (
+    FAMILY_MOTOR_ADDED,
+    FAMILY_MOTOR_PLANNED,
+    ranked_like_size,
+)
 from icub_affordance.som import active_units
 from icub_affordance.spec import MODES
 from icub_affordance.stats import WITHIN
@@ -469,67 +473,120 @@ def methods(inputs: Mapping[str, str]) -> dict[str, dict]:
 SIZE_CUES = {"first_step": "first step", "all_steps": "every step"}
 
 
-def _size_tests(values: dict, tests: Mapping[str, pd.DataFrame]) -> None:
-    """Each test's numbers (``<key>_<stat>_<cue>``), and its verdict or trend resting on them."""
-    for key, rows in tests.items():
-        for _, row in rows.iterrows():
-            cue = row["cue"]
-            for stat in ("estimate", "ci_low", "ci_high", "p_holm"):
-                values[f"{key}_{stat}_{cue}".replace("_estimate", "")] = row[stat]
-            if key == "grips":  # demonstrated minus equal grips: less distance, the opposite
-                row = dict(row) | {"estimate": -row["estimate"]}
-            phrase = text.trend_phrase if key in ("slope", "grips") else text.verdict_word
-            rests = (f"size.{key}_{cue}", f"size.{key}_p_holm_{cue}")
-            values[f"{key}_verdict_{cue}"] = text.Claim(phrase(row), rests)
-    for key in tests:  # one phrase over the cue timings this build ran (a config may run one)
-        ran = [cue for cue in SIZE_CUES if f"{key}_{cue}" in values]
-        words = [values[f"{key}_verdict_{cue}"].text for cue in ran]
-        said = [f"{w} ({SIZE_CUES[cue]})" for w, cue in zip(words, ran, strict=True)]
-        said = [f"{words[0]} (either cue timing)"] if len(set(words)) == 1 < len(ran) else said
-        rests = tuple(f"size.{key}{s}_{cue}" for cue in ran for s in ("", "_p_holm"))
-        values[f"{key}_by_cue"] = text.Claim(" and ".join(said), rests) if ran else (
-            "not run in this build")  # fmt: skip
+def _declared_key(row) -> str:
+    """A declared test's name in the size page's values: ``<test>_<dose>_<cue>`` (the dose
+    contrast ``dose_contrast_<cue>``)."""
+    at = "contrast" if row["test"] == "dose" else str(row["dose"]).replace(".", "")
+    return f"{row['test']}_{at}_{row['cue']}"
+
+
+def _declared_values(values: dict, declared: pd.DataFrame) -> pd.Series:
+    """Each declared test's numbers and its verdict word (``text.SIZE_PART_WORDS``), and, per
+    dose and cue timing, which of the two parts its tests show (``text.carrier``). Returns the
+    verdict word of each row."""
+    words = []
+    for _, row in declared.iterrows():
+        key = _declared_key(row)
+        term = {k: float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p", "p_holm")}
+        values |= {f"{key}_{k}".replace("_estimate", ""): v for k, v in term.items()}
+        values[f"{key}_replications"] = int(row["replications"])
+        word = text.size_part_word(row["test"], term)
+        values[f"{key}_verdict"] = text.Claim(word, (f"size.{key}", f"size.{key}_p_holm"))
+        words.append(word)
+    for (dose, cue), rows in declared[declared["test"] != "dose"].groupby(["dose", "cue"],
+                                                                          sort=False):  # fmt: skip
+        by = {row["test"]: row for _, row in rows.iterrows()}
+        if {"size", "grip_distance"} <= set(by):
+            keys = [_declared_key(by[t]) for t in ("size", "grip_distance")]
+            said = text.carrier(
+                *(text.verdict_word(dict(by[t])) for t in ("size", "grip_distance"))
+            )
+            values[f"carrier_{str(dose).replace('.', '')}_{cue}"] = text.Claim(
+                said, tuple(f"size.{k}{s}" for k in keys for s in ("", "_p_holm"))
+            )
+    # one phrase per dose, and one for the dose contrast, over the cue timings this build ran
+    phrases = {f"carrier_{str(d).replace('.', '')}": "" for d in dict.fromkeys(declared["dose"])}
+    for name, suffix in (phrases | {"dose_contrast": "_verdict"}).items():
+        claims = {
+            c: values[f"{name}_{c}{suffix}"] for c in SIZE_CUES if f"{name}_{c}{suffix}" in values
+        }
+        if claims:
+            values[f"{name}_by_cue"] = text.Claim(
+                "; ".join(f"{SIZE_CUES[c]}: {v.text}" for c, v in claims.items()),
+                tuple(r for v in claims.values() for r in v.rests_on),
+            )
+    return pd.Series(words, index=declared.index, dtype=object)
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter "What drives the size effect": values, verdict words (Claims), tables."""
-    read = {"diff": "estimate", "slope": "estimate"}
-    summary, slope, grips, checks, power = (
-        pd.read_csv(inputs[f"size_{name}.csv"], dtype={"dose": str}).rename(columns=read)
-        for name in ("summary", "slope", "grips", "manipulation", "power"))  # fmt: skip
+    summary, checks, crossed = (
+        pd.read_csv(inputs[f"size_{name}.csv"], dtype={"dose": str}).rename(
+            columns={"diff": "estimate"})
+        for name in ("summary", "manipulation", "crossed"))  # fmt: skip
+    declared = pd.read_csv(inputs["size_declared.csv"], dtype={"dose": str})
+    power = pd.read_csv(inputs["size_power.csv"], dtype={"dose": str})
     try:
         motor = pd.read_csv(inputs["size_motor.csv"], dtype={"dose": str})
-    except pd.errors.EmptyDataError:  # no removal control in this build
-        motor = pd.DataFrame(columns=["dose", "cue", "geometry", "estimate", "p_holm"])
+    except pd.errors.EmptyDataError:  # no runs in this build
+        motor = pd.DataFrame(columns=["dose", "arrangement", "cue", "geometry", "estimate",
+                                      "p_holm", "family"])  # fmt: skip
     doses = config["size_dose"]["doses"]
-    none, top = str(float(min(doses))), str(float(max(doses)))
+    crossing = config["size_dose"]["crossed"]
+    top = str(float(max(doses)))
     rmse = summary[summary["measure"] == "rmse"]
+    natural = rmse[rmse["arrangement"] == "natural"]
     values: dict = {"doses": ", ".join(f"{d:g}" for d in doses), "top_dose": f"{float(top):g}",
-                    "replications": int(summary["replications"].max()),
+                    "replications": int(
+                        (declared["replications"] + declared["left_out"]).max()),
+                    "declared_tests": len(declared),
+                    "effect_of_interest": float(crossing["effect_of_interest"]),
+                    "alpha": float(crossing["alpha"]),
+                    "alpha_at_least": float(power["alpha_at_least"].iloc[0]),
                     "delivered_top": float(
-                        rmse.loc[rmse["dose"] == top, "delivered_dose"].mean())}  # fmt: skip
+                        natural.loc[natural["dose"] == top, "delivered_dose"].mean())}  # fmt: skip
     for (shape, name), ratios in checks[checks["dose"] == top].groupby(["shape", "map"])["ratio"]:
         values[f"ratio_{name}_{shape}"] = float(ratios.min())
-    powers = power[np.isclose(power["effect"], 0.02)].set_index("cue")["power_holm_bound"]
-    values["power_by_cue"] = " and ".join(
-        f"{powers[cue]:.2f} ({SIZE_CUES[cue]})" for cue in SIZE_CUES if cue in powers)  # fmt: skip
     arrived = min(values["ratio_goal_ball"], values["ratio_goal_cube"]) >= 2
     values["check"] = text.Claim("arrived" if arrived else "did not fully arrive",
                                  ("size.ratio_goal_ball", "size.ratio_goal_cube"))  # fmt: skip
-    at = {"none": none, "removed": "removed", "equal": "equal_grips"}  # no size, the controls
-    slopes = slope[(slope["measure"] == "rmse") & (slope["axis"] == "delivered")]
-    _size_tests(values, {"slope": slopes} | {k: rmse[rmse["dose"] == d] for k, d in at.items()}
-                | {"grips": grips})  # fmt: skip
-    keys = "motor_p_holm_" + motor["dose"] + "_" + motor["cue"] + "_" + motor["geometry"]
+    for arrangement, runs in crossed.groupby("arrangement"):
+        values[f"gap_{arrangement}_low"] = float(runs["gap"].min())
+        values[f"gap_{arrangement}_high"] = float(runs["gap"].max())
+    verdicts = _declared_values(values, declared)
+    for name, dose in (("none", min(doses)), ("top", max(doses))):  # the book's two doses
+        values[f"carrier_{name}_by_cue"] = values[f"carrier_{f'{dose:g}'.replace('.', '')}_by_cue"]
+    for name, column in (("size", "power_at_least"), ("size_low", "power_at_least_low"),
+                         ("size_high", "power_at_most_high")):  # fmt: skip
+        chosen = power.loc[power["test"] != "dose", column]
+        values[f"power_{name}"] = float(chosen.min() if name != "size_high" else chosen.max())
+    for name, column in (("dose_low", "power_at_least_low"), ("dose_high", "power_at_most_high")):
+        chosen = power.loc[power["test"] == "dose", column]
+        values[f"power_{name}"] = float(chosen.min() if name == "dose_low" else chosen.max())
+    removed = rmse[rmse["dose"] == "removed"]
+    for _, row in removed.iterrows():
+        rests = (f"size.removed_{row['cue']}", f"size.removed_p_holm_{row['cue']}")
+        values |= {f"removed_{row['cue']}": float(row["estimate"]),
+                   f"removed_p_holm_{row['cue']}": float(row["p_holm"]),
+                   f"removed_verdict_{row['cue']}": text.Claim(text.verdict_word(dict(row)),
+                                                               rests)}  # fmt: skip
+    ran = [cue for cue in SIZE_CUES if f"removed_{cue}" in values]
+    values["removed_by_cue"] = text.Claim(
+        " and ".join(f"{values[f'removed_verdict_{c}'].text} ({SIZE_CUES[c]})" for c in ran),
+        tuple(f"size.removed{s}_{c}" for c in ran for s in ("", "_p_holm")),
+    ) if ran else "not run in this build"  # fmt: skip
+    keys = ("motor_p_holm_" + motor["dose"] + "_" + motor["arrangement"] + "_" + motor["cue"]
+            + "_" + motor["geometry"])  # fmt: skip
     values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
-    if len(motor):
-        found = motor.loc[motor["p_holm"] < science.ALPHA, "geometry"].unique()
-        values["motor_found"] = text.Claim(text.named_measures(found), tuple("size." + keys))
+    for family, name in ((FAMILY_MOTOR_PLANNED, "planned"), (FAMILY_MOTOR_ADDED, "added")):
+        chosen = (motor["family"] == family).to_numpy()
+        found = motor.loc[chosen & (motor["p_holm"] < science.ALPHA).to_numpy(), "geometry"]
+        values[f"motor_found_{name}"] = text.Claim(
+            text.named_measures(found.unique()), tuple("size." + keys[chosen])
+        ) if chosen.any() else "not run in this build"  # fmt: skip
     values["like_size"] = text.named_measures(
         ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
-    tests = pd.concat([rmse, slopes, grips.assign(dose="grips")], ignore_index=True)
-    tests = tests.sort_values("family", key=lambda f: f != FAMILY_DECLARED, kind="stable")
-    return values, {"size_tests": tests.assign(verdict=tests.apply(text.verdict_word, axis=1))}
+    return values, {"size_tests": declared.assign(verdict=verdicts)}
 
 
 #: A signature's name in the book's words.
@@ -605,7 +662,7 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     curve = science.curve_summary(np.array([c["rmse"] for c in curves]), config["network"][
         "phase1_iterations"], curves[0]["iteration"].to_numpy())  # fmt: skip
     read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
-        "claims_summary", "claims_learning", "size_summary", "robot_variants",
+        "claims_summary", "claims_learning", "size_declared", "robot_variants",
         "robot_confirmation", "signatures_summary")}  # fmt: skip
     score_values, score_table = scorecard(*read.values())
     claim_values, claim_table = claims_values(

@@ -141,19 +141,24 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
             f"{int(row['replications'])} replications × {networks} networks"
             + ("" if row["estimable"] == row["replications"]
                else f" ({int(row['estimable'])} with an estimate)"), "index")  # fmt: skip
-    # this project's questions
-    for dose, name, question in (
-        ("0.0", "maps", "Size effect with the maps' size difference removed"),
-        ("equal_grips", "grips", "Size effect with each object's grips moved towards one distance"),
+    # this project's questions: the size study's declared tests at dose 0 (no size difference
+    # in the maps), under its first cue timing
+    for test, name, question in (
+        ("size", "size", "Size's own part of the size effect, at no gap between the grips' "
+                         "distances (maps without size)"),
+        ("grip_distance", "grips", "The part of the size effect that the grips' distance "
+                                   "carries (maps without size)"),
     ):  # fmt: skip
-        chosen = size[(size["dose"].astype(str) == dose) & (size["measure"] == "rmse")
-                      & size["family"].str.contains("declared")
+        chosen = size[(size["test"] == test) & (pd.to_numeric(size["dose"], errors="coerce") == 0)
                       & (size["cue"] == size["cue"].iloc[0])]  # fmt: skip
         for _, row in chosen.head(1).iterrows():
-            said = _tested(f"score_size_{name}", {**row, "estimate": row["diff"]})
-            add(f"score_size_{name}", said,
-                f"{question} (cue {row['cue'].replace('_', ' ')})", "not asked",
-                f"{int(row['replications'])} replications × {networks} networks",
+            prefix = f"score_size_{name}"
+            values_, cell = _tested(prefix, row)
+            word = text.size_part_word(test, dict(row))
+            values_[f"{prefix}_verdict"] = text.Claim(word, (f"index.{prefix}_estimate",
+                                                             f"index.{prefix}_p_holm"))  # fmt: skip
+            add(prefix, (values_, cell), f"{question} (cue {row['cue'].replace('_', ' ')})",
+                "not asked", f"{int(row['replications'])} replications × {networks} networks",
                 "size")  # fmt: skip
     own = variants[variants["run"] == variants["run"].iloc[0]].iloc[0]
     trials = int(own["grasping_trials"])

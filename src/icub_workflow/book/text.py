@@ -167,6 +167,41 @@ def trend_phrase(term) -> str:
     return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
+#: The size study's declared tests' verdict words, by test, for a verdict_word: the size part
+#: against the paper's direction; the grips' distance's part and the dose contrast as what they
+#: move the natural run's size effect by.
+SIZE_PART_WORDS = {
+    "size": {},
+    "grip_distance": {"reproduced": "carries part of it, the paper's way",
+                      "reversed": "carries part of it, against the paper"},
+    "dose": {"reproduced": "moves it the paper's way", "reversed": "moves it against the paper"},
+}  # fmt: skip
+
+
+def size_part_word(test: str, term: dict) -> str:
+    """A declared test of the size study in words (``SIZE_PART_WORDS``)."""
+    word = verdict_word(term)
+    return SIZE_PART_WORDS[test].get(word, word)
+
+
+#: A shown part's direction, from its verdict word.
+PART_DIRECTIONS = {"reproduced": "the paper's way", "reversed": "against the paper"}
+
+
+def carrier(size_word: str, grip_word: str) -> str:
+    """Which part of the size effect the crossed design shows at one dose and cue timing, from
+    the two parts' verdict words (``verdict_word``), each shown part's direction said: a part
+    "not shown" is not shown to be absent."""
+    size, grips = (PART_DIRECTIONS.get(w) for w in (size_word, grip_word))
+    if size and grips:
+        return f"both parts are shown (size's own {size}, the grips' distance's {grips})"
+    if size:
+        return f"only size's own part is shown ({size}; the grips' distance's is not excluded)"
+    if grips:
+        return f"only the grips' distance's part is shown ({grips}; size's is not excluded)"
+    return "the design cannot tell: neither part is shown"
+
+
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
     return listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")
