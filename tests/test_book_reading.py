@@ -5,6 +5,7 @@ verdicts follow their tests."""
 from __future__ import annotations
 
 import html
+import itertools
 import json
 import re
 import shutil
@@ -66,16 +67,22 @@ def test_a_page_whose_first_block_is_prose_has_no_in_brief():
 
 
 def claim_rows(congruency_p=0.001, size=-0.026) -> pd.DataFrame:
-    """The confirmatory family's summary (data/claims/summary.csv) for two of its tests."""
+    """The confirmatory family's summary (data/claims/summary.csv): both claims in the four cue ×
+    mode conditions on the paper's measure; the first-step closed-loop tests as given, the others
+    in the paper's direction."""
     rows = []
-    for effect, estimate, p in (("congruency", 0.04, congruency_p), ("size", size, 0.01)):
-        rows.append({"cue": "first_step", "mode": "closed_loop", "measure": "rmse",
-                     "effect": effect, "replications": 10, "estimable": 10,
-                     "not_estimable": 0, "estimate": estimate, "ci_low": estimate - 0.01,
-                     "ci_high": estimate + 0.01, "p": p, "p_holm": p,
-                     "family": "confirmatory", "family_size": 2,
-                     "direction": "none" if p >= 0.05 else "paper" if estimate > 0 else
-                     "reversed"})  # fmt: skip
+    for cue, mode in itertools.product(("first_step", "all_steps"),
+                                       ("closed_loop", "teacher_forced")):  # fmt: skip
+        given = (cue, mode) == ("first_step", "closed_loop")
+        for effect, estimate, p in (("congruency", 0.04, congruency_p), ("size", size, 0.01)):
+            estimate, p = (estimate, p) if given else (0.01, 0.001)
+            rows.append({"cue": cue, "mode": mode, "measure": "rmse",
+                         "effect": effect, "replications": 10, "estimable": 10,
+                         "not_estimable": 0, "estimate": estimate, "ci_low": estimate - 0.01,
+                         "ci_high": estimate + 0.01, "p": p, "p_holm": p,
+                         "family": "confirmatory", "family_size": 8,
+                         "direction": "none" if p >= 0.05 else "paper" if estimate > 0 else
+                         "reversed"})  # fmt: skip
     return pd.DataFrame(rows)
 
 
@@ -119,15 +126,15 @@ def verdicts(*args, **kwargs) -> dict[str, str]:
     return words
 
 
-CONGRUENCY = "score_claim_first_step_closed_loop_rmse_congruency_verdict"
-SIZE = "score_claim_first_step_closed_loop_rmse_size_verdict"
+CONGRUENCY = "score_claim_rmse_congruency_verdict"
+SIZE = "score_claim_rmse_size_verdict"
 
 
 def test_each_scorecard_verdict_follows_its_test():
     base = verdicts()
     assert base["score_learn_verdict"] == "reproduced"
-    assert base[CONGRUENCY] == "confirmed"
-    assert base[SIZE] == "reversed"
+    assert base[CONGRUENCY] == "confirmed in 4 of 4"
+    assert base[SIZE] == "confirmed in 3 of 4, reversed in 1"
     assert base["score_size_size_verdict"] == "reversed"
     assert base["score_size_grips_verdict"] == "carries part of it, the paper's way"
     assert base["score_robot_own_verdict"] == "falls short"
@@ -136,14 +143,32 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_signature_grows_with_rt_verdict"] == "shown"
     assert base["score_signature_advance_cueing_verdict"] == "not testable here"
     # flip each statistic: its verdict, and only its, follows
-    assert verdicts(congruency_p=0.2)[CONGRUENCY] == "not shown"
-    assert verdicts(size=0.026)[SIZE] == "confirmed"
+    assert verdicts(congruency_p=0.2)[CONGRUENCY] == ("confirmed in 3 of 4, not shown in 1")
+    assert verdicts(size=0.026)[SIZE] == "confirmed in 4 of 4"
     assert verdicts(dose0=0.02)["score_size_size_verdict"] == "reproduced"
     against = "carries part of it, against the paper"
     assert verdicts(grips=-0.02)["score_size_grips_verdict"] == against
     assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
     changed = verdicts(congruency_p=0.2)
     assert {k for k in base if base[k] != changed[k]} == {CONGRUENCY}
+
+
+def test_the_claims_are_read_by_condition_teacher_forced_first():
+    summary = claim_rows(congruency_p=0.2)
+    values, _ = scorecard.claims_values(summary, summary.assign(power_at_least=0.9))
+    said = {k: v.text for k, v in values.items() if isinstance(v, text.Claim)}
+    assert said["claims_closed_loop_rmse_congruency"] == (
+        "not shown with the cue at the first step and confirmed with it at every step"
+    )
+    assert said["claims_teacher_forced_rmse_congruency"] == "confirmed under both cue timings"
+    assert said["claims_count_rmse_congruency"] == ("confirmed in 3 of 4, not shown in 1")
+    assert said["claims_count_rmse_size"] == "confirmed in 3 of 4, reversed in 1"
+    # the count of correlated tests is gone: both modes test the same networks
+    assert "claims_counts" not in values and "claims_family_size" not in values
+    _, table = scorecard.scorecard(*score_inputs(congruency_p=0.2))
+    claims = table[table["chapter"] == "index"]
+    assert len(claims) == 2  # one row per claim and measure, not per test
+    assert claims["this build"].str.startswith("teacher forced: ").all()
 
 
 def test_every_scorecard_row_about_the_model_rests_on_ten_replications_or_says_so():

@@ -80,12 +80,40 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame) -> tuple[dict, pd.
         rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in group.iterrows())
         said = text.listing((text.CLAIM_PARTS[c] for c in both), "none")
         values[f"claims_both_{mode}_{measure}"] = text.Claim(said, rests)  # fmt: skip
-    counts = summary["direction"].map(text.CLAIM_WORDS).value_counts()
-    values["claims_counts"] = ", ".join(f"{counts[w]} {w}" for w in text.CLAIM_WORDS.values()
-                                        if w in counts)  # fmt: skip
-    values["claims_family_size"] = int(summary["family_size"].iloc[0])
+    values |= by_condition(summary)
     values["claims_replications"] = int(summary["replications"].max())
     return values, pd.DataFrame(rows)
+
+
+#: The test modes, the one the paper's text describes first (book/notes.md, "Which test mode is
+#: the paper's"), and the cue timings.
+MODE_ORDER = ("teacher_forced", "closed_loop")
+CUE_ORDER = ("first_step", "all_steps")
+
+
+def _ordered(frame: pd.DataFrame, column: str, order: tuple[str, ...]) -> list[str]:
+    return [v for v in order if v in set(frame[column])] + sorted(set(frame[column]) - set(order))
+
+
+def by_condition(summary: pd.DataFrame) -> dict[str, text.Claim]:
+    """Each claim's verdicts by condition (cue timing × test mode), per measure: per test mode,
+    the words by cue timing (``claims_<mode>_<measure>_<effect>``), and over the conditions, how
+    many give each word (``claims_count_<measure>_<effect>``). The tests are those of the
+    declared family, each read once; both modes test the same networks, so the conditions are
+    counted, not the tests pooled."""
+    values: dict[str, text.Claim] = {}
+    for (measure, effect), group in summary.groupby(["measure", "effect"], sort=False):
+        words = []
+        for mode in _ordered(group, "mode", MODE_ORDER):
+            rows = group[group["mode"] == mode].set_index("cue")
+            said = {cue: text.CLAIM_WORDS[rows.loc[cue, "direction"]]
+                    for cue in _ordered(rows.reset_index(), "cue", CUE_ORDER)}  # fmt: skip
+            rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in rows.reset_index().iterrows())
+            values[f"claims_{mode}_{measure}_{effect}"] = text.Claim(text.by_cue(said), rests)
+            words += said.values()
+        rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in group.iterrows())
+        values[f"claims_count_{measure}_{effect}"] = text.Claim(text.condition_count(words), rests)
+    return values
 
 
 def _interval(row) -> str:
@@ -126,21 +154,24 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
                                f"{learn['score_learn_end_high']:.3f})"),
         "The arm learns to grasp (training RMSE)", f"≈0.3 → ≈{PAPER_FINAL_RMSE}", scale,
         "results")  # fmt: skip
-    for _, row in claims.iterrows():
-        key = claim_key(row)
-        word = text.CLAIM_WORDS[row["direction"]]
-        said = {f"{key}_estimate": float(row["estimate"]), f"{key}_p_holm": float(row["p_holm"]),
-                f"score_{key}_verdict": text.Claim(word, (f"index.{key}_estimate",
-                                                          f"index.{key}_p_holm"))}  # fmt: skip
-        p = f"Holm p {row['p_holm']:.2g}" if np.isfinite(row["p_holm"]) else "no test"
-        add(f"score_{key}", (said, f"{_interval(row)}; {p} (confirmatory, "
-                                   f"{int(row['family_size'])} tests)"),
-            f"{text.CLAIM_PARTS[row['effect']]}: {text.CLAIM_PARTS[row['measure']]}; "
-            f"{text.CLAIM_PARTS[row['cue']]}, {text.CLAIM_PARTS[row['mode']]}",
-            PAPER_SAYS[row["effect"]] + PAPER_MEASURE[row["measure"]],
-            f"{int(row['replications'])} replications × {networks} networks"
-            + ("" if row["estimable"] == row["replications"]
-               else f" ({int(row['estimable'])} with an estimate)"), "index")  # fmt: skip
+    for (measure, effect), group in claims.groupby(["measure", "effect"], sort=False):
+        said = {f"{claim_key(r)}_{k}": float(r[k]) for _, r in group.iterrows()
+                for k in ("estimate", "p_holm")}  # fmt: skip
+        found = by_condition(group)
+        prefix = f"score_claim_{measure}_{effect}"
+        said[f"{prefix}_verdict"] = found[f"claims_count_{measure}_{effect}"]
+        modes = "; ".join(
+            f"{text.CLAIM_PARTS[mode]}: {found[f'claims_{mode}_{measure}_{effect}'].text}"
+            for mode in _ordered(group, "mode", MODE_ORDER)
+        )
+        fewer = group[group["estimable"] < group["replications"]]
+        add(prefix, (said, f"{modes} (confirmatory)"),
+            f"{text.CLAIM_PARTS[effect]}: {text.CLAIM_PARTS[measure]}",
+            PAPER_SAYS[effect] + PAPER_MEASURE[measure],
+            f"{int(group['replications'].max())} replications × {networks} networks per condition"
+            + "".join(f"; {int(r['estimable'])} with an estimate ({text.CLAIM_PARTS[r['mode']]}, "
+                      f"{text.CLAIM_PARTS[r['cue']]})" for _, r in fewer.iterrows()),
+            "index")  # fmt: skip
     # this project's questions: the size study's declared tests at dose 0 (no size difference
     # in the maps), under its first cue timing
     for test, name, question in (

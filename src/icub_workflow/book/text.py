@@ -223,3 +223,21 @@ CLAIM_PARTS = {
     "first_step": "cue at the first step",
     "all_steps": "cue at every step",
 }
+#: The cue timings, as a phrase follows a verdict word ("confirmed with the cue at ...").
+CUE_PHRASES = {"first_step": "with the cue at the first step", "all_steps": "with it at every step"}
+
+
+def by_cue(words: dict[str, str]) -> str:
+    """One claim's verdict words in one test mode, by cue timing: said once where they agree."""
+    if len(words) > 1 and len(set(words.values())) == 1:
+        return f"{next(iter(words.values()))} under both cue timings"
+    return " and ".join(f"{word} {CUE_PHRASES[cue]}" for cue, word in words.items())
+
+
+def condition_count(words: list[str]) -> str:
+    """How many of a claim's conditions (cue timing × test mode) give each verdict word, the
+    words in ``CLAIM_WORDS``' order: "confirmed in 3 of 4, not shown in 1"."""
+    counts = {w: words.count(w) for w in CLAIM_WORDS.values() if w in words}
+    said = [f"{word} in {n}" for word, n in counts.items()]
+    said[0] += f" of {len(words)}"
+    return ", ".join(said)
