@@ -60,6 +60,8 @@ BOOK_DATA = {
     "claims_power.csv": "data/claims/power.csv",
     "claims_learning.csv": "data/claims/learning.csv",
     "claims_forest.png": "data/claims/forest.png",
+    "claims_error_split.csv": "data/claims/error_split.csv",
+    "claims_error_cells.csv": "data/claims/error_cells.csv",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }

@@ -37,6 +37,27 @@ rule claims:
         "../scripts/claims.py"
 
 
+rule claims_errors:
+    """Each condition's all-trial RMSE effects taken apart over the confirmation's replications:
+    the part its wrong-grip trials carry (their rate times what a wrong grip costs beyond a
+    correct trial) and the part of its correct trials, which add up to the effect, with each
+    congruency x size cell's rates, RMSEs and grips' distance (icub_affordance.error_split)."""
+    input:
+        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
+        code=script_code("claims_errors"),
+    output:
+        cells="data/claims/error_cells.csv",
+        split="data/claims/error_split.csv",
+    params:
+        cues=[row["cue"] for row in CLAIM_ROWS],
+    log:
+        "data/logs/claims/errors.log",
+    benchmark:
+        "data/benchmarks/claims/errors.tsv"
+    script:
+        "../scripts/claims_errors.py"
+
+
 rule claims_figure:
     """The answer at a glance: every declared test's estimate with its 95% interval, the paper's
     direction marked, the verdict as its colour (plot only)."""
