@@ -135,8 +135,8 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_learn_verdict"] == "reproduced"
     assert base[CONGRUENCY] == "confirmed in 4 of 4"
     assert base[SIZE] == "confirmed in 3 of 4, reversed in 1"
-    assert base["score_size_size_verdict"] == "reversed"
-    assert base["score_size_grips_verdict"] == "carries part of it, the paper's way"
+    assert base["score_size_size_first_step_verdict"] == "reversed"
+    assert base["score_size_grips_first_step_verdict"] == "carries part of it, the paper's way"
     assert base["score_robot_own_verdict"] == "falls short"
     assert base["score_robot_best_verdict"] == "shown"
     # a signature's row shows the verdict its chapter's test gave (icub_affordance.signatures)
@@ -145,9 +145,9 @@ def test_each_scorecard_verdict_follows_its_test():
     # flip each statistic: its verdict, and only its, follows
     assert verdicts(congruency_p=0.2)[CONGRUENCY] == ("confirmed in 3 of 4, not shown in 1")
     assert verdicts(size=0.026)[SIZE] == "confirmed in 4 of 4"
-    assert verdicts(dose0=0.02)["score_size_size_verdict"] == "reproduced"
+    assert verdicts(dose0=0.02)["score_size_size_first_step_verdict"] == "reproduced"
     against = "carries part of it, against the paper"
-    assert verdicts(grips=-0.02)["score_size_grips_verdict"] == against
+    assert verdicts(grips=-0.02)["score_size_grips_first_step_verdict"] == against
     assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
     changed = verdicts(congruency_p=0.2)
     assert {k for k in base if base[k] != changed[k]} == {CONGRUENCY}
@@ -155,7 +155,9 @@ def test_each_scorecard_verdict_follows_its_test():
 
 def test_the_claims_are_read_by_condition_teacher_forced_first():
     summary = claim_rows(congruency_p=0.2)
-    values, _ = scorecard.claims_values(summary, summary.assign(power_at_least=0.9))
+    values, _ = scorecard.claims_values(
+        summary, summary.assign(power_at_least=0.9), sensitivity_rows(), cell_counts()
+    )
     said = {k: v.text for k, v in values.items() if isinstance(v, text.Claim)}
     assert said["claims_closed_loop_rmse_congruency"] == (
         "not shown with the cue at the first step and confirmed with it at every step"
@@ -169,6 +171,47 @@ def test_the_claims_are_read_by_condition_teacher_forced_first():
     claims = table[table["chapter"] == "index"]
     assert len(claims) == 2  # one row per claim and measure, not per test
     assert claims["this build"].str.startswith("teacher forced: ").all()
+
+
+def sensitivity_rows(first_p_holm: float = 0.001) -> pd.DataFrame:
+    """The correct-trial estimates over every replication (data/claims/correct_sensitivity.csv):
+    the first-step closed-loop congruency test at ``first_p_holm``, the others below 0.05."""
+    rows = []
+    for cue, mode, effect in itertools.product(
+        ("first_step", "all_steps"), ("closed_loop", "teacher_forced"), ("congruency", "size")
+    ):
+        first = (cue, mode, effect) == ("first_step", "closed_loop", "congruency")
+        p = first_p_holm if first else 0.001
+        rows.append({"cue": cue, "mode": mode, "effect": effect, "replications_used": 10,
+                     "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007, "p": p,
+                     "p_holm": p})  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def cell_counts() -> pd.DataFrame:
+    """Networks carrying each cell (data/claims/correct_cells.csv): mapping B's fewest is 1."""
+    return pd.DataFrame(
+        [{"cue": cue, "mode": mode, "mapping": mapping, "networks": 6 if mapping == "A" else n}
+         for cue in ("first_step", "all_steps") for mode in ("closed_loop", "teacher_forced")
+         for mapping in ("A", "B") for n in (1, 6)]
+    )  # fmt: skip
+
+
+def test_where_every_replication_disagrees_with_the_confirmation_the_scorecard_says_so():
+    correct = claim_rows().assign(measure="rmse_correct")
+    inputs = list(score_inputs())
+    for p_holm, differs in ((0.001, False), (0.3, True)):
+        inputs[0] = correct
+        _, table = scorecard.scorecard(*inputs, sensitivity=sensitivity_rows(p_holm))
+        row = table[table["claim or question"].str.startswith("Congruent")].iloc[0]
+        said = "over every replication, none left out (exploration), not shown in closed loop"
+        assert (said in row["this build"]) == differs, row["this build"]
+    _, claims = scorecard.claims_values(
+        correct, correct.assign(power_at_least=0.9), sensitivity_rows(0.3), cell_counts()
+    )
+    first = claims.iloc[0]
+    assert first["fewest networks per cell (A / B)"] == "6 / 1"
+    assert first["over every replication (exploration)"].endswith("Holm p 0.3: not shown")
 
 
 def test_every_scorecard_row_about_the_model_rests_on_ten_replications_or_says_so():

@@ -62,6 +62,8 @@ BOOK_DATA = {
     "claims_forest.png": "data/claims/forest.png",
     "claims_error_split.csv": "data/claims/error_split.csv",
     "claims_error_cells.csv": "data/claims/error_cells.csv",
+    "claims_correct_sensitivity.csv": "data/claims/correct_sensitivity.csv",
+    "claims_correct_cells.csv": "data/claims/correct_cells.csv",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }

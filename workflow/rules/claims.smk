@@ -58,6 +58,31 @@ rule claims_errors:
         "../scripts/claims_errors.py"
 
 
+rule claims_correct:
+    """The correct-trial RMSE's effects over every confirmation replication, an exploration
+    (family "exploration: correct-trial sensitivity"): a replication with no correct trial in a
+    cell is kept, not dropped for the outcome under test. Per replication, mapping and cell the
+    networks that carry it (correct_cells.csv); per cue x mode a mixed model of the network x
+    object means with a random intercept and effect slopes per replication and a random
+    intercept per network, t on replications - 1 df, Holm
+    (correct_sensitivity.csv; icub_affordance.correct_sensitivity)."""
+    input:
+        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
+        code=script_code("claims_correct"),
+    output:
+        cells="data/claims/correct_cells.csv",
+        sensitivity="data/claims/correct_sensitivity.csv",
+    params:
+        cues=[row["cue"] for row in CLAIM_ROWS],
+        seeds=[row["seed"] for row in CLAIM_ROWS],
+    log:
+        "data/logs/claims/correct.log",
+    benchmark:
+        "data/benchmarks/claims/correct.tsv"
+    script:
+        "../scripts/claims_correct.py"
+
+
 rule claims_figure:
     """The answer at a glance: every declared test's estimate with its 95% interval, the paper's
     direction marked, the verdict as its colour (plot only)."""

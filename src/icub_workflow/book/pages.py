@@ -664,9 +664,11 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     read = {name: pd.read_csv(inputs[f"{name}.csv"]) for name in (
         "claims_summary", "claims_learning", "size_declared", "robot_variants",
         "robot_confirmation", "signatures_summary")}  # fmt: skip
-    score_values, score_table = scorecard(*read.values())
+    sensitivity = pd.read_csv(inputs["claims_correct_sensitivity.csv"])
+    score_values, score_table = scorecard(*read.values(), sensitivity=sensitivity)
     claim_values, claim_table = claims_values(
-        read["claims_summary"], pd.read_csv(inputs["claims_power.csv"]))  # fmt: skip
+        read["claims_summary"], pd.read_csv(inputs["claims_power.csv"]), sensitivity,
+        pd.read_csv(inputs["claims_correct_cells.csv"]))  # fmt: skip
     score_values |= claim_values
     pages, tables = {}, {}
     for page, (values, shown) in {

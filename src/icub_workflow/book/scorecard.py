@@ -4,6 +4,8 @@ the scale it was measured at."""
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pandas as pd
 
@@ -47,10 +49,14 @@ def claim_key(row) -> str:
     return "claim_" + "_".join(str(row[k]) for k in ("cue", "mode", "measure", "effect"))
 
 
-def claims_values(summary: pd.DataFrame, power: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
+def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.DataFrame,
+                  cells: pd.DataFrame) -> tuple[dict, pd.DataFrame]:  # fmt: skip
     """The confirmatory family's values (``claim_<cue>_<mode>_<measure>_<effect>_*``: estimate,
-    interval, Holm p, verdict, power) and its table, a row per declared test."""
-    values: dict[str, object] = {}
+    interval, Holm p, verdict, power) and its table, a row per declared test; beside each
+    correct-trial test, the fewest networks carrying a cell per mapping (``cells``:
+    data/claims/correct_cells.csv) and the estimate over every replication (``sensitivity``:
+    correct_sensitivity.csv, exploration; ``sens_<cue>_<mode>_<effect>_*``)."""
+    values: dict[str, object] = sensitivity_values(sensitivity)
     rows = []
     keyed = power.set_index(["cue", "mode", "measure", "effect"])
     for _, row in summary.iterrows():
@@ -70,6 +76,9 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame) -> tuple[dict, pd.
                                              f"{int(row['replications'])}",
             "Holm p": row["p_holm"], "verdict": word,
             "power planned (at least)": float(planned["power_at_least"]),
+            "fewest networks per cell (A / B)": fewest_per_mapping(cells, row)
+            if row["measure"] == "rmse_correct" else "–",
+            "over every replication (exploration)": _sensitivity_cell(values, row),
         })  # fmt: skip
     for (mode, measure), group in summary.groupby(["mode", "measure"], sort=False):
         both = [
@@ -83,6 +92,61 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame) -> tuple[dict, pd.
     values |= by_condition(summary)
     values["claims_replications"] = int(summary["replications"].max())
     return values, pd.DataFrame(rows)
+
+
+#: A confirmatory test's direction and the exploration's verdict word that says the same.
+SAME_WORD = {"paper": "reproduced", "reversed": "reversed", "none": "not shown"}
+
+
+def sens_key(row) -> str:
+    """A correct-trial test's name in the sensitivity's values."""
+    return "sens_" + "_".join(str(row[k]) for k in ("cue", "mode", "effect"))
+
+
+def sensitivity_values(sensitivity: pd.DataFrame) -> dict[str, object]:
+    """The correct-trial effects over every replication (exploration): estimate, interval, Holm
+    p within its own family, and the verdict word (``text.verdict_word``)."""
+    values: dict[str, object] = {}
+    for _, row in sensitivity.iterrows():
+        key = sens_key(row)
+        values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high",
+                                                         "p_holm")}  # fmt: skip
+        values[f"{key}_replications"] = int(row["replications_used"])
+        values[f"{key}_verdict"] = text.Claim(
+            text.verdict_word(dict(row)), (f"index.{key}_estimate", f"index.{key}_p_holm")
+        )
+    return values
+
+
+def fewest_per_mapping(cells: pd.DataFrame, row) -> str:
+    """The fewest networks carrying a congruency x size cell in any replication, per mapping."""
+    chosen = cells[(cells["cue"] == row["cue"]) & (cells["mode"] == row["mode"])]
+    fewest = chosen.groupby("mapping")["networks"].min()
+    return " / ".join(str(int(n)) for n in fewest)
+
+
+def _sensitivity_cell(values: dict, row) -> str:
+    """A correct-trial test's estimate over every replication, with its verdict; a dash for the
+    paper's measure, where no replication lacks an estimate."""
+    key = sens_key(row)
+    if row["measure"] != "rmse_correct" or f"{key}_estimate" not in values:
+        return "–"
+    est, low, high, p = (values[f"{key}_{k}"] for k in ("estimate", "ci_low", "ci_high", "p_holm"))
+    return (
+        f"{est:+.4f} [{low:+.4f}, {high:+.4f}], {values[f'{key}_replications']} "
+        f"replications; Holm p {p:.2g}: {values[f'{key}_verdict'].text}"
+    )
+
+
+def differing(summary: pd.DataFrame, values: dict) -> list[tuple[pd.Series, str]]:
+    """The correct-trial tests whose confirmatory verdict and estimate over every replication
+    disagree, with the latter's word."""
+    found = []
+    for _, row in summary[summary["measure"] == "rmse_correct"].iterrows():
+        said = values.get(f"{sens_key(row)}_verdict")
+        if said is not None and SAME_WORD.get(row["direction"]) != said.text:
+            found.append((row, said.text))
+    return found
 
 
 #: The test modes, the one the paper's text describes first (book/notes.md, "Which test mode is
@@ -125,8 +189,8 @@ def _interval(row) -> str:
 
 
 def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
-              variants: pd.DataFrame, confirmation: pd.DataFrame, signatures: pd.DataFrame
-              ) -> tuple[dict, pd.DataFrame]:  # fmt: skip
+              variants: pd.DataFrame, confirmation: pd.DataFrame, signatures: pd.DataFrame,
+              sensitivity: pd.DataFrame | None = None) -> tuple[dict, pd.DataFrame]:  # fmt: skip
     """The scorecard's values (for ``findings.json``'s ``index``) and its table: the paper's
     claims from the confirmation's replications (``claims``: data/claims/summary.csv), the
     learning curve over the same replications, then this project's questions."""
@@ -165,7 +229,15 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
             for mode in _ordered(group, "mode", MODE_ORDER)
         )
         fewer = group[group["estimable"] < group["replications"]]
-        add(prefix, (said, f"{modes} (confirmatory)"),
+        modes += " (confirmatory)"
+        sens = {} if sensitivity is None else sensitivity_values(sensitivity)
+        for row, word in differing(group, sens):
+            key = sens_key(row)
+            said |= {f"{key}_{k}": sens[f"{key}_{k}"] for k in ("estimate", "p_holm")}
+            modes += (f"; but over every replication, none left out (exploration), "
+                      f"{word} in {text.CLAIM_PARTS[row['mode']]} with the "
+                      f"{text.CLAIM_PARTS[row['cue']]}")  # fmt: skip
+        add(prefix, (said, modes),
             f"{text.CLAIM_PARTS[effect]}: {text.CLAIM_PARTS[measure]}",
             PAPER_SAYS[effect] + PAPER_MEASURE[measure],
             f"{int(group['replications'].max())} replications × {networks} networks per condition"
@@ -173,24 +245,24 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
                       f"{text.CLAIM_PARTS[r['cue']]})" for _, r in fewer.iterrows()),
             "index")  # fmt: skip
     # this project's questions: the size study's declared tests at dose 0 (no size difference
-    # in the maps), under its first cue timing
-    for test, name, question in (
+    # in the maps), under each cue timing
+    for (test, name, question), cue in itertools.product((
         ("size", "size", "Size's own part of the size effect, at no gap between the grips' "
-                         "distances (maps without size)"),
+                         "distances"),
         ("grip_distance", "grips", "The part of the size effect that the grips' distance "
-                                   "carries (maps without size)"),
-    ):  # fmt: skip
+                                   "carries"),
+    ), dict.fromkeys(size["cue"])):  # fmt: skip
         chosen = size[(size["test"] == test) & (pd.to_numeric(size["dose"], errors="coerce") == 0)
-                      & (size["cue"] == size["cue"].iloc[0])]  # fmt: skip
+                      & (size["cue"] == cue)]  # fmt: skip
         for _, row in chosen.head(1).iterrows():
-            prefix = f"score_size_{name}"
+            prefix = f"score_size_{name}_{cue}"
             values_, cell = _tested(prefix, row)
             word = text.size_part_word(test, dict(row))
             values_[f"{prefix}_verdict"] = text.Claim(word, (f"index.{prefix}_estimate",
                                                              f"index.{prefix}_p_holm"))  # fmt: skip
-            add(prefix, (values_, cell), f"{question} (cue {row['cue'].replace('_', ' ')})",
-                "not asked", f"{int(row['replications'])} replications × {networks} networks",
-                "size")  # fmt: skip
+            claim = f"{question}; maps without size (dose 0), {text.CLAIM_PARTS[cue]}, closed loop"
+            scale = f"{int(row['replications'])} replications × {networks} networks"
+            add(prefix, (values_, cell), claim, "not asked", scale, "size")
     own = variants[variants["run"] == variants["run"].iloc[0]].iloc[0]
     trials = int(own["grasping_trials"])
     low, high = science.held_interval(round(own["grasping_success"] * trials), trials)
