@@ -98,3 +98,23 @@ def test_power_far_from_zero_agrees_with_a_simulation():
     samples = rng.normal(effect, sd, size=(20000, n))
     p = sps.ttest_1samp(samples, 0.0, axis=1).pvalue
     assert claims.power(effect, sd, n, alpha) == pytest.approx((p < alpha).mean(), abs=0.01)
+
+
+def test_a_claim_on_fewer_replications_than_the_minimum_is_not_assessable():
+    """The one rule of every replicated test (icub_affordance.replicated, which the signatures
+    read too): a test over fewer estimates than ``min_replications`` has no p and reads "not
+    assessable"; at the minimum it is the t-test over the estimates, recomputed here."""
+    rng = np.random.default_rng(5)
+    rows = [
+        test | {"seed": seed, "estimate": 0.01 + rng.normal(0, 0.0002), "lono_low": np.nan,
+                "lono_high": np.nan, "fewest_networks_per_cell": np.nan}
+        for test in claims.declared_tests(DECLARATION) for seed in (101, 102, 103)
+    ]  # fmt: skip
+    estimates = pd.DataFrame(rows)
+    for least, word in ((3, "paper"), (4, "not assessable")):
+        table = claims.confirm(estimates, DECLARATION | {"min_replications": least})
+        assert (table["direction"] == word).all()
+    first = estimates.iloc[:3]["estimate"]
+    made = claims.confirm(estimates, DECLARATION | {"min_replications": 3}).iloc[0]
+    assert made["p"] == pytest.approx(sps.ttest_1samp(first, 0.0).pvalue)
+    assert np.isnan(table["p"]).all() and (table["estimable"] == 3).all()

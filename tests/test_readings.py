@@ -521,11 +521,19 @@ def _built_tables(cong_shift, grows_size, margin, seed):
 def page(tmp_path, summ, diffs, with_tables=False):
     summ.to_csv(tmp_path / "summary.csv", index=False)
     diffs.to_csv(tmp_path / "differences.csv", index=False)
+    # the confirmatory family's test of the same replications (data/claims/summary.csv)
+    pd.DataFrame([{"cue": "first_step", "mode": "closed_loop", "measure": "rmse",
+                   "effect": "congruency", "direction": "paper", "p_holm": 0.045},
+                  {"cue": "first_step", "mode": "teacher_forced", "measure": "rmse",
+                   "effect": "size", "direction": "none", "p_holm": 0.3}]).to_csv(
+        tmp_path / "claims.csv", index=False)  # fmt: skip
     inputs = {
         "readings_summary.csv": str(tmp_path / "summary.csv"),
         "readings_differences.csv": str(tmp_path / "differences.csv"),
+        "claims_summary.csv": str(tmp_path / "claims.csv"),
     }
     config = {
+        "soms": {"goal_response": "fixed"},
         "readings": {
             "measures": ["rmse", "rmse_per_grip_distance"],
             "equivalence_margin": {"rmse": 0.01, "rmse_per_grip_distance": 0.01},
@@ -533,7 +541,7 @@ def page(tmp_path, summ, diffs, with_tables=False):
                 "rmse": {"commit": "3e997e7", "results_before": True},
                 "rmse_per_grip_distance": {"commit": "3e997e7", "results_before": False},
             },
-        }
+        },
     }
     values, tables = readings_page(inputs, config)
     pages = traced({"readings": values})
@@ -877,3 +885,16 @@ def test_every_margin_names_the_commit_that_declared_it():
     undated = config["readings"] | {"margin_declared": {"rmse": declared["rmse"]}}
     with pytest.raises(ConfigError, match=r"readings\.margin_declared.*no entry"):
         check_config(config | {"readings": undated})
+
+
+def test_a_test_also_in_the_confirmatory_family_names_the_verdict_the_book_reads(tmp_path):
+    summ, diffs = built_tables()
+    _, tables = page(tmp_path, summ, diffs, with_tables=True)
+    shown = tables["readings_summary"]
+    marked = shown[shown["also_in"] != ""]
+    # only the first-step, fixed reading's closed-loop RMSE congruency: the confirmation's own
+    # replications (the teacher-forced test is another test, the grows reading other runs)
+    assert marked[["cue", "goal_response", "measure", "effect"]].values.tolist() == [
+        ["first_step", "fixed", "rmse", "congruency"]
+    ]
+    assert marked["also_in"].iloc[0].startswith("confirmatory family: confirmed, Holm p 0.045")

@@ -30,8 +30,9 @@ from icub_affordance.train import synthetic_materials
 
 
 def declared() -> SignatureConfig:
+    config = yaml.safe_load((REPO / "config/config.yaml").read_text())
     return SignatureConfig(
-        **yaml.safe_load((REPO / "config/config.yaml").read_text())["signatures"]
+        **config["signatures"], min_replications=config["confirmation"]["min_replications"]
     )
 
 
@@ -165,14 +166,30 @@ def test_objects_are_not_pooled_a_mixture_of_objects_makes_no_effect():
 
 def test_over_units_takes_one_value_per_replication_and_counts_the_undefined():
     values = pd.DataFrame({"replication": [1, 2, 3, 4], "v": [1.0, 2.0, np.nan, 4.0]})
-    test = over_units(values, "v")
+    test = over_units(values, "v", 2)
     assert test["df"] == 2 and test["replications"] == 4 and test["not_estimable"] == 1
     assert test["p"] == pytest.approx(sps.ttest_1samp([1.0, 2.0, 4.0], 0.0).pvalue)
     # per-network values (the error rates) count once per replication, by their mean
     networks = pd.DataFrame({"replication": np.repeat([1, 2, 3], 4), "v": np.arange(12.0)})
-    test = over_units(networks, "v")
+    test = over_units(networks, "v", 2)
     assert test["df"] == 2 and test["units"] == 3
     assert test["p"] == pytest.approx(sps.ttest_1samp([1.5, 5.5, 9.5], 0.0).pvalue)
+
+
+def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
+    """One minimum for every replicated test (icub_affordance.replicated): five replications
+    against a declared minimum of six give no p and no verdict but "not assessable"; the
+    confirmation's claims read the same rule (tests/test_claims.py)."""
+    config = declared()
+    trials = synthetic_trials(0.002)
+    assert trials["replication"].nunique() == 5
+    for least, word in ((5, "shown"), (6, "not assessable")):
+        chosen = SignatureConfig(**{**vars(config), "list": [config.list[0]],
+                                    "min_replications": least})  # fmt: skip
+        slope = summary(trials, chosen).query("family == @FAMILY").iloc[0]
+        assert slope["verdict"] == word
+        assert np.isfinite(slope["p"]) == (least == 5)
+    assert "fewer than 6 replications" in slope["reason"]
 
 
 def test_the_leave_one_network_out_range_brackets_the_estimate():

@@ -201,7 +201,8 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
     ``min_replications``; Holm's p over the family's tests with a p; the direction. For the
     correct-trial RMSE, the widest leave-one-network-out range of the replications' estimates
     and the fewest networks that carried a cell in any replication."""
-    from .stats import holm, t_term
+    from .replicated import over_replications
+    from .stats import holm
 
     alpha, least = float(declaration["alpha"]), int(declaration["min_replications"])
     rows = []
@@ -211,10 +212,7 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
         values = group["estimate"].to_numpy(dtype=float)
         defined = values[np.isfinite(values)]
         n = len(defined)
-        if n >= max(least, 2):
-            term = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
-        else:
-            term = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
+        term = over_replications(defined, least)
         rows.append(
             test
             | {"replications": int(len(values)), "estimable": n, "not_estimable": len(values) - n}

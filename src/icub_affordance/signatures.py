@@ -25,8 +25,9 @@ import pandas as pd
 
 from .findings import ALPHA
 from .jordan import Weights, run_closed_loop
+from .replicated import assessable, over_replications
 from .spec import CATEGORISATION, OBJECTS
-from .stats import correct_trial_effects, equivalence, holm, t_term
+from .stats import correct_trial_effects, equivalence, holm
 from .train import N_VISUAL, Materials, context, target_grip
 
 #: Where the object is in view at every step: a trial's 9 steps.
@@ -54,6 +55,9 @@ class SignatureConfig:
     quantiles: int
     margin: float
     list: Sequence[Mapping[str, Any]]
+    #: the fewest replications with an estimate a test needs (config
+    #: ``confirmation.min_replications``: one minimum for every replicated test)
+    min_replications: int
 
     def entry(self, signature: str) -> Mapping[str, Any] | None:
         return next((e for e in self.list if e["signature"] == signature), None)
@@ -240,10 +244,12 @@ def slope(x: np.ndarray, y: np.ndarray) -> float:
 # ---- over networks or replications ---------------------------------------------------------
 
 
-def over_units(values: pd.DataFrame, column: str) -> dict[str, float]:
+def over_units(values: pd.DataFrame, column: str, least: int) -> dict[str, float]:
     """The mean of ``column`` over the replications (one value each: networks within a
     replication share its maps and demonstrations, so the replication is the unit) with its
-    t-test (df = replications - 1). NaN values (a replication whose estimate is undefined) are
+    t-test (df = replications - 1), made only on at least ``least`` replications with an
+    estimate (``replicated.over_replications``: the declared minimum; ``assessable`` says
+    whether it was). NaN values (a replication whose estimate is undefined) are
     left out and counted in ``not_estimable``. With a ``dropped`` column (``replication_effects``)
     the test reads the rows with every network (``dropped`` -1); the others give the
     leave-one-network-out range of the mean (``lono_low``, ``lono_high``): the mean with one
@@ -252,12 +258,10 @@ def over_units(values: pd.DataFrame, column: str) -> dict[str, float]:
     # one value per replication (per-network values, as the error rates, by their mean)
     defined = full.dropna(subset=[column]).groupby("replication")[column].mean()
     n = len(defined)
-    if n < 2:
-        test = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
-    else:
-        test = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
+    test = over_replications(defined.to_numpy(), least)
     reps = int(full["replication"].nunique())
-    test |= {"units": n, "replications": reps, "not_estimable": reps - n}
+    test |= {"units": n, "replications": reps, "not_estimable": reps - n,
+             "assessable": assessable(n, least)}  # fmt: skip
     if "dropped" in values and n:
         others = values[(values["dropped"] != -1) & values["replication"].isin(defined.index)]
         shifted = (
@@ -279,10 +283,11 @@ def verdict(test: str, expected: str, row: Mapping[str, float], alpha: float = A
     TOST is significant (Holm), opposite if the difference itself is (``p_difference_adjusted``),
     else not shown. No test, or no data for one: not testable here. A signature describes the
     shape of the congruency effect, so while the in-view effect is not established
-    (``in_view_established`` False) it is not assessable."""
+    (``in_view_established`` False) it is not assessable; so is a test on fewer replications
+    with an estimate than the declared minimum (``assessable`` False: ``replicated``)."""
     if test == "none" or not np.isfinite(row.get("estimate", np.nan)):
         return "not testable here"
-    if not row.get("in_view_established", True):
+    if not row.get("assessable", True) or not row.get("in_view_established", True):
         return "not assessable"
     p = row.get("p_adjusted", np.nan)
     if test == "slope":
@@ -335,6 +340,7 @@ def _row(signature: str, condition: str, level: str, test: dict, family: str) ->
         "not_estimable": test.get("not_estimable", 0),
         **{key: test.get(key, np.nan) for key in ("lono_low", "lono_high")},
         "fewest_networks_per_cell": test.get("fewest_networks_per_cell", np.nan),
+        "assessable": test.get("assessable", True),
         "reason": "",
     }
 
@@ -360,12 +366,12 @@ def _rt_rows(trials: pd.DataFrame, effects: pd.DataFrame, config: SignatureConfi
     bins = bin_effects(trials, config.quantiles)
     view = effects[effects["condition"] == "in_view"]
     rows = [_row("grows_with_rt", "in view, all correct trials", "all",
-                 over_units(view, "effect"), LEVELS_FAMILY)]  # fmt: skip
+                 over_units(view, "effect", config.min_replications), LEVELS_FAMILY)]  # fmt: skip
     for q in range(1, config.quantiles + 1):
         one = bins[bins["bin"] == q]
-        rows.append(_row("grows_with_rt", "in view, RT bin", f"q{q}",
-                         over_units(one, "effect"), LEVELS_FAMILY))  # fmt: skip
-    slopes = over_units(_slopes(bins, "bin", config.quantiles), "slope")
+        tested = over_units(one, "effect", config.min_replications)
+        rows.append(_row("grows_with_rt", "in view, RT bin", f"q{q}", tested, LEVELS_FAMILY))
+    slopes = over_units(_slopes(bins, "bin", config.quantiles), "slope", config.min_replications)
     return rows + [_row("grows_with_rt", "in view, effect over RT bins", "slope",
                         slopes, FAMILY)]  # fmt: skip
 
@@ -390,7 +396,7 @@ def _hidden_rows(
                 paired["fewest_networks_per_cell"], paired["fewest_networks_per_cell_view"]
             ),
         )
-        tested = over_units(diff, "d")
+        tested = over_units(diff, "d", config.min_replications)
         rows.append(_row(name, f"{what} after k steps minus in view", f"k={k}", tested,
                          LEVELS_FAMILY))  # fmt: skip
         if test == "equivalence" and k == min(entry["levels"]):
@@ -399,7 +405,9 @@ def _hidden_rows(
             rows.append(row | {"p": equivalence(tested, config.margin)["p"]})
     if test == "slope":
         curves = pd.concat([hidden, view])
-        slopes = over_units(_slopes(curves, "k", len(entry["levels"]) + 1), "slope")
+        slopes = over_units(
+            _slopes(curves, "k", len(entry["levels"]) + 1), "slope", config.min_replications
+        )
         rows.append(_row(name, f"effect over k, {what} after k steps (k = 9: in view)", "slope",
                          slopes, FAMILY))  # fmt: skip
     return rows
@@ -438,7 +446,11 @@ def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame
         if word == "not testable here" and not row["reason"]:
             table.loc[i, "reason"] = "too few replications with an estimate"
         if word == "not assessable":
-            table.loc[i, "reason"] = "the in-view congruency effect it describes is not established"
+            table.loc[i, "reason"] = (
+                "the in-view congruency effect it describes is not established"
+                if row.get("assessable", True)
+                else f"fewer than {config.min_replications} replications with an estimate"
+            )
     return table
 
 
@@ -462,15 +474,15 @@ def summary(trials: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
     return table[SUMMARY_COLUMNS]
 
 
-def errors(trials: pd.DataFrame) -> pd.DataFrame:
+def errors(trials: pd.DataFrame, least: int) -> pd.DataFrame:
     """Errors apart: per condition, the wrong-grip rates of congruent and incongruent trials and
-    the test of their difference (incongruent minus congruent) over the replications' means,
-    Holm over the table."""
+    the test of their difference (incongruent minus congruent) over the replications' means (on
+    at least ``least`` of them, ``over_units``), Holm over the table."""
     rates = network_errors(trials)
     rates["wrong_difference"] = rates["wrong_incongruent"] - rates["wrong_congruent"]
     rows = []
     for (kind, k), g in rates.groupby(["condition", "k"], sort=False):
-        test = over_units(g, "wrong_difference")
+        test = over_units(g, "wrong_difference", least)
         rows.append(
             {
                 "condition": kind,

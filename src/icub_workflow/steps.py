@@ -148,16 +148,20 @@ def measure_networks(
 
 
 def signature_tables(
-    replications: Sequence[Mapping], signatures: Mapping, outputs: Mapping[str, str]
+    replications: Sequence[Mapping],
+    signatures: Mapping,
+    min_replications: int,
+    outputs: Mapping[str, str],
 ) -> None:
     """The human signatures' conditions on each replication's networks (``icub_affordance.
     signatures``): every noisy trial (``outputs["trials"]``), each signature's tests and verdict
     (``summary``), and the errors apart (``errors``). A replication: its seed, its model inputs
-    (maps, soms, demos), grip_distance, network settings and weights files."""
+    (maps, soms, demos), grip_distance, network settings and weights files. A test needs
+    ``min_replications`` replications with an estimate (config ``confirmation``)."""
     from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
     from icub_affordance.train import load_materials
 
-    config = SignatureConfig(**signatures)
+    config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []
     for rep in replications:
         materials = load_materials(rep["maps"], rep["soms"], rep["demos"], rep["grip_distance"])
@@ -174,6 +178,9 @@ def signature_tables(
     with atomic_path(outputs["trials"]) as tmp:
         pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.6g")
     trials = pd.read_csv(outputs["trials"])  # as readers see it: a recomputation from it agrees
-    for name, table in {"summary": summary(trials, config), "errors": errors(trials)}.items():
+    for name, table in {
+        "summary": summary(trials, config),
+        "errors": errors(trials, min_replications),
+    }.items():
         with atomic_path(outputs[name]) as tmp:
             table.to_csv(tmp, index=False, float_format="%.6g")

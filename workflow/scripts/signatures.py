@@ -7,5 +7,6 @@ with redirect_log(snakemake.log[0]):
     signature_tables(
         snakemake.params.replications,
         snakemake.params.signatures,
+        snakemake.params.min_replications,
         {name: snakemake.output[name] for name in ("trials", "summary", "errors")},
     )

@@ -129,8 +129,27 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
         diffs["margin"].notna(), "–")  # fmt: skip
     tost += diffs["margin"].map(" (±{:g})".format).where(diffs["p_equivalence_holm"].notna(), "")
-    return values, {"readings_summary": shown,
+    also = _also_confirmatory(summary, pd.read_csv(inputs["claims_summary.csv"]), config)
+    return values, {"readings_summary": shown.assign(also_in=also),
                     "readings_differences": compared.assign(tost=tost)}  # fmt: skip
+
+
+def _also_confirmatory(summary: pd.DataFrame, claims: pd.DataFrame, config: dict) -> pd.Series:
+    """Each reading's test that is also one of the confirmatory family (the same replications:
+    the config's Goal response, closed loop, a declared measure and effect): that family's
+    verdict and Holm p, which the book reads; empty for the others."""
+    keyed = claims[claims["mode"] == "closed_loop"].set_index(["cue", "measure", "effect"])
+    goal = config["soms"]["goal_response"]
+
+    def said(row) -> str:
+        key = (row["cue"], row["measure"], row["effect"])
+        if row["goal_response"] != goal or key not in keyed.index:
+            return ""
+        test = keyed.loc[key]
+        return (f"confirmatory family: {text.CLAIM_WORDS[test['direction']]}, Holm p "
+                f"{test['p_holm']:.2g} (the verdict the book reads)")  # fmt: skip
+
+    return summary.apply(said, axis=1)
 
 
 # -- the robot: the chapters beyond (robot test, cue, hidden layer) and grasping ---------------
@@ -646,7 +665,8 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
             verdicts["verdict"] == "shown", "signature"]], "none"),
         tuple(f"signatures.{n}_p_adjusted" for n in verdicts["signature"]))  # fmt: skip
     values["counts"] = ", ".join(f"{counts[w]} {w}" for w in (
-        "shown", "not shown", "opposite", "not testable here") if w in counts)  # fmt: skip
+        "shown", "not shown", "opposite", "not assessable", "not testable here")
+        if w in counts)  # fmt: skip
     return values, {"signatures": pd.DataFrame(rows)}
 
 

@@ -308,6 +308,8 @@ def signature_result(row) -> str:
     TOST's), or why there is none."""
     if pd.isna(row["estimate"]):
         return str(row["reason"]) or "–"
+    if pd.isna(row["p_adjusted"]):  # an estimate but no test: the reason says why
+        return f"{row['estimate']:+.4f}; no test: {row['reason']}"
     test = "equivalence (TOST) " if "equivalence" in str(row["condition"]) else ""
     return (f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]; {test}Holm p "
             f"{row['p_adjusted']:.2g} (signatures)")  # fmt: skip
