@@ -213,11 +213,15 @@ def job_records(files):
     """The engine's own record of each job that makes one of `files`, once per job: its
     `benchmark:` file (the job's wall time in column `s`). The job is found as Snakemake finds
     it, by the one rule whose output matches the file (wildcard constraints included), so this
-    holds whichever rule serves a run; call it from an input function, once every rule is read."""
+    holds whichever rule serves a run; call it from an input function, once every rule is read.
+    Only the outputs that can end in the file's name are tried (_outputs_by_name)."""
+    by_name, any_name = _outputs_by_name()
     records = []
     for path in files:
-        makers = [r for r in workflow.rules if any(o.match(path) for o in r.output)]
+        candidates = [*by_name.get(path.rsplit("/", 1)[-1], ()), *any_name]
+        makers = list(dict.fromkeys(r for r, output in candidates if output.match(path)))
         if len(makers) != 1 or not makers[0].benchmark:
+            makers = [r for r in workflow.rules if any(o.match(path) for o in r.output)]
             raise ValueError(
                 f"{path}: made by the rules {[r.name for r in makers]}; its job's record needs "
                 "one rule, with a `benchmark:` file"
@@ -225,6 +229,29 @@ def job_records(files):
         maker = makers[0]
         records.append(str(maker.expand_benchmark(maker.get_wildcards(path))))
     return list(dict.fromkeys(records))
+
+
+_OUTPUTS_BY_NAME = []
+
+
+def _outputs_by_name():
+    """The outputs of the rules, each with its rule, read once when first asked (all rules read)
+    and filed by file name where that has no wildcard ({name: [...]}), else among the others
+    ([...]). A file is matched against its name's and the others only: 3,400 files against a few
+    outputs each, not against every output of every rule (issue 56)."""
+    if not _OUTPUTS_BY_NAME:
+        by_name, any_name = {}, []
+        for r in workflow.rules:
+            for output in r.output:
+                pattern = str(output)
+                # the text after the last wildcard (all of it, if none)
+                tail = pattern[pattern.rfind("}") + 1 :]
+                if "{" not in pattern or "/" in tail:
+                    by_name.setdefault(tail.rsplit("/", 1)[-1], []).append((r, output))
+                else:
+                    any_name.append((r, output))
+        _OUTPUTS_BY_NAME.append((by_name, any_name))
+    return _OUTPUTS_BY_NAME[0]
 
 
 def sweep_job_records(wildcards=None):

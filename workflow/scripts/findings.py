@@ -13,7 +13,10 @@ with redirect_log(snakemake.log[0]):
         inputs,
         dict(snakemake.params.config),
         snakemake.params.ablation_cue,
-        dict(snakemake.params.scale),
+        {
+            "now": dict(snakemake.params.scale),
+            "other": json.loads(Path(snakemake.input.other_scale).read_text()),
+        },
         dict(snakemake.params.sweep_jobs),
     )
     write_text(snakemake.output.json, json.dumps(pages, indent=1) + "\n")
