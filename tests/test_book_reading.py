@@ -320,3 +320,21 @@ def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
         if found:
             too_wide[name] = found
     assert too_wide == {}
+
+
+def test_the_declared_contact_time_row_follows_its_test_and_names_its_cells():
+    cells = pd.DataFrame(
+        [{"run": "fresh", "congruency": c, "size": s, "trials": 12,
+          "touched": 9 if (c, s) == ("incongruent", "small") else 12}
+         for c in ("congruent", "incongruent") for s in ("large", "small")]
+    )  # fmt: skip
+    for p_holm, word in ((0.03, "confirmed"), (0.3, "not shown")):
+        contact = pd.DataFrame([{"run": "fresh", "networks": 12, "networks_tested": 9,
+                                 "estimate": 0.11, "ci_low": 0.01, "ci_high": 0.21,
+                                 "p_holm": p_holm,
+                                 "direction": "paper" if p_holm < 0.05 else "none"}])  # fmt: skip
+        values, table = scorecard.scorecard(*score_inputs(), contact=contact, contact_cells=cells)
+        row = table[table["claim or question"].str.contains("fingers touch")].iloc[0]
+        assert row["verdict"] == values["score_robot_contact_verdict"].text == word
+        assert "9 of 12 networks" in row["this build"]
+        assert "incongruent small 9 of 12" in row["this build"]

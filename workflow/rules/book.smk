@@ -41,6 +41,8 @@ BOOK_DATA = {
     "robot_tolerance.png": "data/figures/robot_tolerance.png",
     "robot_statistics.json": "data/embodied/statistics.json",
     "robot_confirmation.csv": "data/embodied/confirmation.csv",
+    "robot_contact_time.csv": "data/embodied/contact_time.csv",
+    "robot_contact_time_cells.csv": "data/embodied/contact_time_cells.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
     "size_summary.csv": "data/size_dose/summary.csv",

@@ -166,6 +166,28 @@ rule robot_confirmation:
         "../scripts/robot_confirmation.py"
 
 
+rule robot_contact_time:
+    """The declared contact-time test on the fresh networks (config
+    robot.confirmation.contact_time): per confirmed variant, the congruency effect on the time
+    until the required grip's fingers touch, over the networks that touched in all four cells,
+    Holm over the variants; and per cell the trials and how many touched
+    (icub_affordance.contact_time)."""
+    input:
+        trials=rules.robot_confirmation.output.trials,
+        code=script_code("robot_contact_time"),
+    output:
+        tests="data/embodied/contact_time.csv",
+        cells="data/embodied/contact_time_cells.csv",
+    params:
+        declaration=settings(config["robot"]["confirmation"]["contact_time"]),
+    log:
+        "data/logs/robot/contact_time.log",
+    benchmark:
+        "data/benchmarks/robot_contact_time.tsv"
+    script:
+        "../scripts/robot_contact_time.py"
+
+
 rule robot_filmstrip:
     """A congruent and an incongruent categorisation trial of the same object, on the robot
     (render only)."""

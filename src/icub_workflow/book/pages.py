@@ -685,7 +685,10 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         "claims_summary", "claims_learning", "size_declared", "robot_variants",
         "robot_confirmation", "signatures_summary")}  # fmt: skip
     sensitivity = pd.read_csv(inputs["claims_correct_sensitivity.csv"])
-    score_values, score_table = scorecard(*read.values(), sensitivity=sensitivity)
+    score_values, score_table = scorecard(
+        *read.values(), sensitivity=sensitivity,
+        contact=pd.read_csv(inputs["robot_contact_time.csv"]),
+        contact_cells=pd.read_csv(inputs["robot_contact_time_cells.csv"]))  # fmt: skip
     claim_values, claim_table = claims_values(
         read["claims_summary"], pd.read_csv(inputs["claims_power.csv"]), sensitivity,
         pd.read_csv(inputs["claims_correct_cells.csv"]))  # fmt: skip

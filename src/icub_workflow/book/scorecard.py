@@ -190,7 +190,8 @@ def _interval(row) -> str:
 
 def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
               variants: pd.DataFrame, confirmation: pd.DataFrame, signatures: pd.DataFrame,
-              sensitivity: pd.DataFrame | None = None) -> tuple[dict, pd.DataFrame]:  # fmt: skip
+              sensitivity: pd.DataFrame | None = None, contact: pd.DataFrame | None = None,
+              contact_cells: pd.DataFrame | None = None) -> tuple[dict, pd.DataFrame]:  # fmt: skip
     """The scorecard's values (for ``findings.json``'s ``index``) and its table: the paper's
     claims from the confirmation's replications (``claims``: data/claims/summary.csv), the
     learning curve over the same replications, then this project's questions."""
@@ -276,6 +277,13 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
             "A larger network, chosen then tested again on fresh seeds, holds the object",
             "not asked", f"the robot test: {int(row['networks'])} fresh networks × "
             f"{int(row['trials'] // row['networks'])} grasping trials", "robot_test")  # fmt: skip
+    for k, (_, row) in enumerate(() if contact is None else contact.iterrows()):
+        prefix = f"score_robot_contact{k or ''}"
+        add(prefix, _contact(prefix, row, contact_cells),
+            "Congruent faster on the robot: the time until the required grip's fingers touch, "
+            "fresh networks", "not asked",
+            f"the robot test: {int(row['networks'])} fresh networks × 4 categorisation trials",
+            "robot_test")  # fmt: skip
     for _, row in signatures[signatures["family"] == "signatures"].iterrows():
         prefix, name = f"score_signature_{row['signature']}", row["signature"]
         said = {f"{prefix}_estimate": float(row["estimate"]),
@@ -286,6 +294,27 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
         add(prefix, (said, result), SIGNATURE_CLAIMS[name], SIGNATURE_PEOPLE[name],
             signature_scale(row), "signatures")  # fmt: skip
     return values, pd.DataFrame(rows)
+
+
+def _contact(prefix: str, row, cells: pd.DataFrame | None) -> tuple[dict, str]:
+    """The declared contact-time test's values and result cell, with the cells whose trials did
+    not all touch named by their cell (the test leaves those networks out)."""
+    word = text.CLAIM_WORDS[row["direction"]]
+    values = {f"{prefix}_estimate": float(row["estimate"]),
+              f"{prefix}_p_holm": float(row["p_holm"]),
+              f"{prefix}_verdict": text.Claim(word, (f"index.{prefix}_estimate",
+                                                     f"index.{prefix}_p_holm"))}  # fmt: skip
+    short = [] if cells is None else [
+        f"{c['congruency']} {c['size']} {int(c['touched'])} of {int(c['trials'])}"
+        for _, c in cells[(cells["run"] == row["run"]) & (cells["touched"] < cells["trials"])]
+        .iterrows()]  # fmt: skip
+    touched = "; trials that touched: " + ", ".join(short) if short else ""
+    units = (f"{int(row['networks_tested'])} of {int(row['networks'])} networks touched in all "
+             "four cells")  # fmt: skip
+    if not np.isfinite(row["p_holm"]):
+        return values, f"no test: {units}{touched}"
+    return values, (f"{row['estimate']:+.3f} s [{row['ci_low']:+.3f}, {row['ci_high']:+.3f}]; "
+                    f"Holm p {row['p_holm']:.2g} (declared); {units}{touched}")  # fmt: skip
 
 
 #: The scorecard's rows for the human signatures: the claim, and what people showed.

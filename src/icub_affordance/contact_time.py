@@ -1,0 +1,87 @@
+"""The declared contact-time test on the robot's fresh networks (config
+``robot.confirmation.contact_time``, declared in bec68e0 before any result of it): per confirmed
+variant, the congruency effect on the seconds until the required grip's fingers touch the object,
+incongruent minus congruent (positive: congruent faster, the paper's direction).
+
+Why a test of its own: the exploration's contact-time tests ran on the networks a variant was
+chosen on, so they cannot confirm anything about it; the fresh networks were tested on the robot
+in every build, but only for the share held. The estimator is the exploration's
+(``robot_stats.variant_effects``): each network x object once (its closed-loop sequences are one
+movement), the trials that touched, each network's contrast over its four congruency x size
+cells from the networks that touched in all four, t over them with the mapping as a covariate.
+Beside each test, per cell, the trials and how many touched: a cell that no network touches is
+an effect of its own, which no contrast shows.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from .robot_stats import distinct_trials
+from .stats import contrast_tests, holm, per_network_contrasts
+
+#: The family the declared tests are Holm-adjusted in, over themselves alone.
+FAMILY = "declared: contact-time congruency on fresh networks"
+#: A test's direction: the paper's (positive) or against it at Holm's p, neither, or no test.
+DIRECTIONS = ("paper", "reversed", "none", "not assessable")
+
+
+def _categorisation(trials: pd.DataFrame) -> pd.DataFrame:
+    """The distinct categorisation trials, with congruency and size named."""
+    df = distinct_trials(trials)
+    df = df[df["task"] == "categorisation"].copy()
+    df["congruency"] = np.where(df["congruent"].astype(str) == "True", "congruent", "incongruent")
+    return df
+
+
+def cell_counts(trials: pd.DataFrame) -> pd.DataFrame:
+    """Per run and congruency x size cell: the distinct trials, how many touched (a contact
+    time), and the networks that touched there."""
+    rows = []
+    df = _categorisation(trials) if len(trials) else trials.assign(congruency=[])
+    for (run, congruency, size), cell in df.groupby(["run", "congruency", "size"], sort=False):
+        touched = cell["contact_time"].notna()
+        rows.append({"run": run, "congruency": congruency, "size": size,
+                     "trials": int(len(cell)), "touched": int(touched.sum()),
+                     "networks_touched": int(cell.loc[touched, "network"].nunique())})  # fmt: skip
+    return pd.DataFrame(rows, columns=["run", "congruency", "size", "trials", "touched",
+                                       "networks_touched"])  # fmt: skip
+
+
+def contact_time_tests(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
+    """Per run (a confirmed variant's fresh networks) the declared test: the networks in all,
+    those that touched in all four cells (the test's units), estimate, interval, t, df, p, Holm's
+    p over the runs (``FAMILY``) and the direction (``DIRECTIONS``); no test with fewer than
+    ``min_networks`` networks, networks of one mapping only, or no spread."""
+    effect, alpha = declaration["effect"], float(declaration["alpha"])
+    least = max(int(declaration["min_networks"]), 3)
+    rows = []
+    for run, df in (_categorisation(trials) if len(trials) else trials).groupby("run", sort=False):
+        per_net = per_network_contrasts(df[df["contact_time"].notna()], "contact_time")
+        term = {k: np.nan for k in ("estimate", "se", "ci_low", "ci_high", "t", "df", "p")}
+        if len(per_net) >= least and per_net["mapping"].nunique() == 2:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                found = contrast_tests(per_net)[effect]
+            if np.isfinite(found["se"]) and found["se"] > 0:
+                term = {k: float(found[k]) for k in term}
+        rows.append({"run": run, "effect": effect, "networks": int(df["network"].nunique()),
+                     "networks_tested": int(len(per_net))} | term)  # fmt: skip
+    table = pd.DataFrame(rows, columns=["run", "effect", "networks", "networks_tested", "estimate",
+                                        "se", "ci_low", "ci_high", "t", "df", "p"])  # fmt: skip
+    table["family"] = FAMILY
+    table["p_holm"] = holm(table["p"].to_numpy(dtype=float)) if len(table) else []
+    pairs = zip(table["estimate"], table["p_holm"], strict=True)
+    table["direction"] = [_direction(e, p, alpha) for e, p in pairs]
+    return table
+
+
+def _direction(estimate: float, p_holm: float, alpha: float) -> str:
+    if not np.isfinite(p_holm):
+        return "not assessable"
+    if p_holm >= alpha:
+        return "none"
+    return "paper" if estimate > 0 else "reversed"

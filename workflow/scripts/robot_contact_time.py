@@ -1,0 +1,13 @@
+"""The declared contact-time test on the fresh networks (data/embodied/contact_time.csv) and the
+cells it rests on (contact_time_cells.csv), from the fresh networks' robot trials."""
+
+import pandas as pd
+
+from icub_affordance.contact_time import cell_counts, contact_time_tests
+from icub_affordance.io import redirect_log, write_tables
+
+with redirect_log(snakemake.log[0]):
+    trials = pd.read_csv(snakemake.input.trials)
+    tests = contact_time_tests(trials, dict(snakemake.params.declaration))
+    write_tables([(snakemake.output.tests, tests), (snakemake.output.cells, cell_counts(trials))])
+    print(tests.to_string())
