@@ -15,6 +15,7 @@ from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
 from icub_affordance.io import load_npz
+from icub_affordance.measures import margin_measure
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.size_dose import (
     FAMILY_MOTOR_ADDED,
@@ -124,6 +125,10 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
     }  # fmt: skip
     shown = _shown(summary, readings_science.direction)
     compared = _shown(diffs, readings_science.difference_verdict)
+    after = {m for m, d in config["readings"]["margin_declared"].items() if d["results_before"]}
+    late = (compared["verdict"] == "equivalent") & compared["measure"].map(
+        lambda m: margin_measure(m) in after)  # fmt: skip
+    compared.loc[late, "verdict"] = text.AFTER_RESULTS
     values |= text.reading_claims(shown) | text.difference_claims(compared, "cue_timing", "cue")
     values |= text.difference_claims(compared, "goal_response", "goal")
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(

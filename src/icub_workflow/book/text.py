@@ -93,6 +93,10 @@ SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "in
 MEASURE_LABELS = LABELS  # declared with the measures (icub_affordance.measures)
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
 #: The words of ``readings.direction`` and ``readings.difference_verdict``, where they differ.
+#: An equivalence whose margin was set after its measure's results were read
+#: (config ``readings.margin_declared``): said so wherever it appears, never counted with the
+#: equivalences whose margin came first.
+AFTER_RESULTS = "equivalent, margin set after results"
 WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller",
          "paper": "reproduced"}  # fmt: skip
 
@@ -144,8 +148,10 @@ def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
     changed = rows[rows["verdict"].isin(["larger", "smaller"])]
     out[f"{prefix}_changes"] = _claim(rows, stats, effects(changed))
-    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", "not shown"):
-        out[f"{prefix}_n_{word.replace(' ', '_')}"] = _claim(
+    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", "not shown",
+                 AFTER_RESULTS):  # fmt: skip
+        name = "equivalent_after" if word == AFTER_RESULTS else word.replace(" ", "_")
+        out[f"{prefix}_n_{name}"] = _claim(
             rows, stats, str((rows["verdict"] == word).sum()))  # fmt: skip
     for word in ("larger", "smaller"):
         out[f"{prefix}_{word}"] = _claim(rows, stats, effects(rows[rows["verdict"] == word]))
