@@ -174,7 +174,7 @@ def test_the_made_up_counts_are_the_ones_variant_effects_writes():
     real = variant_effects(robot_trials(HELD, TOUCHED, SECONDS))["v"]
     made = {"success": measure(HELD), "contact_time": measure(TOUCHED, SECONDS)}
     for name, m in made.items():
-        assert set(real[name]) == set(m) | {"networks", "contrasts", "tests"}
+        assert set(real[name]) == set(m) | {"networks", "contrasts", "tests", "simple"}
         assert real[name]["distinct_trials"] == m["distinct_trials"]
         for key in ("congruency", "size", "cells", "objects"):
             assert set(real[name][key]) == set(m[key]), (name, key)
@@ -433,3 +433,33 @@ def test_the_chapter_beyond_states_the_robots_effects_from_their_tests():
     assert low["beyond"]["emb_floor"].startswith("near the floor")
     assert words["suc_diff_mean"] == pytest.approx(-0.1)
     assert words["replay_wrong_grip_holds_commands"] == 1 and words["replay_trials_commands"] == 40
+
+
+def test_an_effect_one_cell_carries_is_named_as_that_cell_and_follows_a_swap():
+    """Holding fails in one cell only (1 of 12 held, every other cell 11 of 12): size's and
+    congruency's effects are that cell's, so the chapter names the cell, not an effect; swap
+    that cell's count with another's and the words follow the cell (issue 60)."""
+    from icub_affordance.robot_stats import variant_effects
+
+    def words(held: dict[str, int]) -> dict[str, str]:
+        effs = variant_effects(robot_trials(held, TOUCHED, SECONDS))
+        values = pages._best_effects(effs["v"])
+        return {k: values[f"best_success_{k}"].text for k in ("size", "congruency")}
+
+    held = dict.fromkeys(CELLS, 11) | {"incongruent_small": 1}
+    said = words(held)
+    assert (
+        said["size"]
+        == said["congruency"]
+        == ("one cell: a power grip on the small objects, held less often")
+    )
+    swapped = held | {"incongruent_small": 11, "congruent_small": 1}
+    said = words(swapped)
+    assert (
+        said["size"]
+        == said["congruency"]
+        == ("one cell: a precision grip on the small objects, held less often")
+    )
+    # no single cell (two cells fail): the effect keeps its word
+    two = dict.fromkeys(CELLS, 11) | {"incongruent_small": 1, "congruent_small": 1}
+    assert not words(two)["size"].startswith("one cell")

@@ -39,6 +39,7 @@ from .stats import (
     network_contrasts,
     per_network_contrasts,
     repeated_measures_anova,
+    simple_effects,
     trial_conditions,
 )
 from .variants import NetworkVariant
@@ -432,9 +433,27 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
         success = _measure_effects(held, held, "success", exact=df)
         touched = df[df["contact_time"].notna()]
         contact = _measure_effects(touched, df, "contact_time", exact=None)
+        success["simple"] = _simple_or_none(held, "success")
+        contact["simple"] = _simple_or_none(touched, "contact_time")
         out[str(run)] = {"success": success, "contact_time": contact}
     _holm_over_family(out)
     return out
+
+
+def _simple_or_none(df: pd.DataFrame, measure: str) -> dict[str, dict] | None:
+    """Each factor's effect within each level of the other (``stats.simple_effects``: small -
+    large among the congruent trials, ...) over the networks with all four cells, Holm over the
+    four (``p_holm``): where a main effect comes from one cell, these say which. None with fewer
+    than three such networks or a singular design."""
+    try:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            found = simple_effects(df, measure)
+    except (np.linalg.LinAlgError, ValueError, KeyError):  # KeyError: a cell no network has
+        return None
+    if not found or next(iter(found.values()))["networks"] < 3:
+        return None
+    adjusted = holm(np.array([t["p"] for t in found.values()], dtype=float))
+    return {k: t | {"p_holm": float(q)} for (k, t), q in zip(found.items(), adjusted, strict=True)}
 
 
 def _holm_over_family(effects: dict[str, dict]) -> None:

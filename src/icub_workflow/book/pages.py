@@ -185,14 +185,35 @@ def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
 
 def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     """One robot effect against the paper (Holm within the robot's family); the congruency x
-    size term, with no paper direction, is "shown" or not where a contrast tests it."""
+    size term, with no paper direction, is "shown" or not where a contrast tests it. A shown
+    effect that one cell carries (``carrying_cell``) is named as that cell, not as an effect."""
     test = effect["tests"][factor]
     if factor == INTERACTION:
-        return text.shown_word(test) if test["method"] == "contrasts" else "not tested"
-    verdict = science.robot_effect_verdict(effect, measure, factor)
-    if verdict is None or not verdict.significant:
-        return "not estimable" if verdict is None else "not shown"
-    return "reproduced" if verdict.paper_direction else "reversed"
+        word = text.shown_word(test) if test["method"] == "contrasts" else "not tested"
+    else:
+        verdict = science.robot_effect_verdict(effect, measure, factor)
+        if verdict is None or not verdict.significant:
+            return "not estimable" if verdict is None else "not shown"
+        word = "reproduced" if verdict.paper_direction else "reversed"
+    cell = carrying_cell(effect)
+    if cell is None or word not in ("reproduced", "reversed", "shown"):
+        return word
+    others = [c["mean"] for name, c in effect["cells"].items() if name != cell]
+    return text.one_cell(cell, measure, effect["cells"][cell]["mean"] < np.nanmean(others))
+
+
+def carrying_cell(effect: dict) -> str | None:
+    """The congruency x size cell that carries a measure's effects, if one does: size's effect
+    is shown (Holm within the four simple effects) within one congruency level only and
+    congruency's within one size only, so the two meet in one cell ("incongruent_small"); None
+    otherwise, or without simple effects (``robot_stats.variant_effects``)."""
+    simple = effect.get("simple") or {}
+    shown = [k for k, t in simple.items() if t["p_holm"] < science.ALPHA]
+    size_in = [k.removeprefix("size_in_") for k in shown if k.startswith("size_in_")]
+    congruency_in = [k.removeprefix("congruency_in_") for k in shown if k.startswith("congr")]
+    if len(size_in) == 1 and len(congruency_in) == 1:
+        return f"{size_in[0]}_{congruency_in[0]}"
+    return None
 
 
 def divergence_verdict(first: int | None) -> text.Claim:

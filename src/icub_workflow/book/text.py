@@ -247,3 +247,22 @@ def condition_count(words: list[str]) -> str:
     said = [f"{word} in {n}" for word, n in counts.items()]
     said[0] += f" of {len(words)}"
     return ", ".join(said)
+
+
+# -- the robot: an effect one cell carries ------------------------------------------------------
+
+#: The grip a cell requires: congruent, the object's natural grip (large: power, small:
+#: precision); incongruent, the other.
+CELL_GRIPS = {("congruent", "large"): "power", ("congruent", "small"): "precision",
+              ("incongruent", "large"): "precision", ("incongruent", "small"): "power"}  # fmt: skip
+#: What a cell that carries an effect does, per robot measure: lower or higher than the others.
+CELL_DOES = {"success": ("held less often", "held more often"),
+             "contact_time": ("touches sooner", "touches later")}  # fmt: skip
+
+
+def one_cell(cell: str, measure: str, lower: bool) -> str:
+    """An effect one congruency x size cell carries, named as that cell: "one cell: a power grip
+    on the small objects, held less often" (never as size or congruency)."""
+    congruency, size = cell.split("_")
+    does = CELL_DOES[measure][0 if lower else 1]
+    return f"one cell: a {CELL_GRIPS[(congruency, size)]} grip on the {size} objects, {does}"
