@@ -442,8 +442,9 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
 
 def _simple_or_none(df: pd.DataFrame, measure: str) -> dict[str, dict] | None:
     """Each factor's effect within each level of the other (``stats.simple_effects``: small -
-    large among the congruent trials, ...) over the networks with all four cells, Holm over the
-    four (``p_holm``): where a main effect comes from one cell, these say which. None with fewer
+    large among the congruent trials, ...) over the networks with all four cells, Holm over
+    those of the four that have a test (``p_holm``): where a main effect comes from one cell,
+    these say which. None with fewer
     than three such networks or a singular design."""
     try:
         with np.errstate(divide="ignore", invalid="ignore"):

@@ -430,6 +430,26 @@ def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     return out, pd.DataFrame(rows)
 
 
+def _contact_time(tests: pd.DataFrame) -> dict:
+    """The declared contact-time test on the first confirmed variant's fresh networks: its
+    numbers and verdict (``text.CLAIM_WORDS``), a claim on its estimate and Holm p."""
+    if not len(tests):
+        return {"contact_verdict": "not tested: no variant confirmed", "contact_said": ""}
+    row = tests.iloc[0]
+    out = {f"contact_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p_holm")}
+    out |= {"contact_networks": int(row["networks"]),
+            "contact_networks_tested": int(row["networks_tested"])}  # fmt: skip
+    word = text.CLAIM_WORDS[row["direction"]]
+    out["contact_verdict"] = text.Claim(word, ("robot_test.contact_estimate",
+                                               "robot_test.contact_p_holm"))  # fmt: skip
+    out["contact_said"] = (
+        f" ({row['estimate']:+.3f} s, Holm p {row['p_holm']:.2g}; "
+        f"{int(row['networks_tested'])} of {int(row['networks'])} networks)"
+        if np.isfinite(row["p_holm"]) else ""
+    )  # fmt: skip
+    return out
+
+
 def robot_test(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The robot grasps: the variants, the best confirmed, the arm's precision, the effects."""
     variants = pd.read_csv(inputs["robot_variants.csv"])
@@ -459,6 +479,7 @@ def robot_test(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     out |= _robot_scope(config, variants, records) | _exploration(confirmation)
     out |= _animated(config, confirmation)
     rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
+    out |= _contact_time(pd.read_csv(inputs["robot_contact_time.csv"]))
     return out | confirmed | _best_effects(effects[best["run"]]), {
         "robot_variants": variants, "robot_pairs": pd.DataFrame(pairs),
         "robot_confirmation": confirmation,
