@@ -29,7 +29,6 @@ from icub_affordance.readings import (
     difference_verdict,
     differences,
     direction,
-    matrix,
     replication_rows,
     summary,
 )
@@ -107,16 +106,6 @@ def test_summary_tests_each_reading_and_adjusts_over_the_family():
     assert direction(null) == "paper"  # a control's verdict is on its raw p
     assert direction(pd.Series({**one, "p_holm": 0.049})) == "paper"
     assert direction(pd.Series({**one, "p_holm": 0.049, "diff": -0.02})) == "reversed"
-
-
-def test_matrix_shows_raw_and_holm_p():
-    table = summary(
-        replications({"first_step+fixed": [(0.04, 0.0005)], "all_steps+fixed": [(0.02, 0.03)]})
-    )
-    wide = matrix(table)
-    cells = wide["rmse"].tolist()
-    assert "p < 0.001, Holm p 0.001" in cells[0] and "(paper)" in cells[0]
-    assert "p 0.030, Holm p 0.030" in cells[1]
 
 
 # -- synthetic runs: networks whose per-network effects are known -----------------------------

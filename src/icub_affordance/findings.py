@@ -56,16 +56,6 @@ def verdict(analysis: dict, effect: str, alpha: float = ALPHA) -> Verdict:
     return Verdict(paper_direction=bool(means[first] < means[second]), significant=bool(p < alpha))
 
 
-def contrast_verdict(contrasts: dict, effect: str, alpha: float = ALPHA) -> Verdict:
-    """The verdict on ``effect`` of one mode's per-network contrasts (``anova.json``'s
-    ``contrasts``): its estimate is the difference in the paper's direction (``stats.CODING``),
-    its p a t-test over networks, Holm-adjusted over its family where ``p_holm`` is given (the
-    paper's two effects in ``anova.json``)."""
-    term = contrasts[effect]
-    p = term.get("p_holm", term["p"])  # adjusted over its family where it has one
-    return Verdict(paper_direction=bool(term["estimate"] > 0), significant=bool(p < alpha))
-
-
 def curve_summary(
     curves: np.ndarray, phase1_iterations: int, iterations: np.ndarray | None = None
 ) -> dict[str, float | int]:

@@ -432,40 +432,6 @@ def direction(row) -> str:
     return "paper" if row["diff"] > 0 else "reversed"
 
 
-def fmt_p(p: float) -> str:
-    if not np.isfinite(p):
-        return "–"
-    return "< 0.001" if p < 0.001 else f"{p:.3f}"
-
-
-def matrix(summary_table: pd.DataFrame) -> pd.DataFrame:
-    """Readings x measures, both effects in every cell: the difference, its interval, p and
-    Holm's p, the verdict and, over several replications, those significant each way, as text
-    (the book's matrix)."""
-
-    def cell(row) -> str:
-        if direction(row) == "constant":
-            return "0 (every network scored the same on every object)"
-        counts = f"; {row['n_paper']}/{row['replications']} paper, {row['n_reversed']} reversed"
-        numbers = (
-            f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]; p {fmt_p(row['p'])}"
-        )
-        if is_null_control(row["measure"]):
-            return numbers + " (null control, not a hypothesis)"
-        if not is_hypothesis(row["measure"]):
-            return numbers + " (shown; its excess over the null control is the hypothesis)"
-        return (
-            f"{numbers}, Holm p {fmt_p(row['p_holm'])}"
-            f"{counts if row['replications'] > 1 else ''} ({direction(row)})"
-        )
-
-    out = summary_table.assign(text=summary_table.apply(cell, axis=1))
-    wide = out.pivot_table(
-        index=["reading", "effect"], columns="measure", values="text", aggfunc="first", sort=False
-    )
-    return wide.reset_index()
-
-
 def difference_verdict(row) -> str:
     """A differences row's verdict: "identical" when there was nothing to test (``identical``:
     no spread at all), "a > b" or "a < b" (its effect larger or smaller in a than in b) when its
@@ -480,30 +446,6 @@ def difference_verdict(row) -> str:
     if row["p_equivalence_holm"] < ALPHA:
         return "equivalent"
     return "not shown"
-
-
-def difference_display(table: pd.DataFrame) -> pd.DataFrame:
-    """The book's table of the differences between readings, as text."""
-
-    def interval(row) -> str:
-        return f"{row['diff']:+.3g} [{row['ci_low']:+.3g}, {row['ci_high']:+.3g}]"
-
-    return pd.DataFrame(
-        {
-            "comparison": [f"{a} − {b}" for a, b in zip(table["a"], table["b"], strict=True)],
-            "measure": table["measure"],
-            "effect": table["effect"],
-            "difference [95% interval]": table.apply(interval, axis=1),
-            "p": table["p"].map(fmt_p),
-            "Holm p": [
-                fmt_p(p) if is_hypothesis(m) else "not a hypothesis"
-                for m, p in zip(table["measure"], table["p_holm"], strict=True)
-            ],
-            "margin": table["margin"].map(lambda m: f"±{m:g}" if np.isfinite(m) else "–"),
-            "TOST Holm p": table["p_equivalence_holm"].map(fmt_p),
-            "verdict": table.apply(difference_verdict, axis=1),
-        }
-    )
 
 
 def finite(values) -> bool:
