@@ -100,6 +100,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
+    shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
     assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
@@ -136,6 +137,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
+    shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     shown.add("robot_animation")  # films the variant's networks 0.. (listed in robot.default)
     assert set(jobs) <= shown, jobs
@@ -161,6 +163,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
     shown.add("rulegraph_figure")  # the DAG, drawn again after rulegraph
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
+    shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
 
