@@ -21,13 +21,12 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from .claims import direction
 from .robot_stats import distinct_trials
 from .stats import contrast_tests, holm, per_network_contrasts
 
 #: The family the declared tests are Holm-adjusted in, over themselves alone.
 FAMILY = "declared: contact-time congruency on fresh networks"
-#: A test's direction: the paper's (positive) or against it at Holm's p, neither, or no test.
-DIRECTIONS = ("paper", "reversed", "none", "not assessable")
 
 
 def _categorisation(trials: pd.DataFrame) -> pd.DataFrame:
@@ -55,7 +54,8 @@ def cell_counts(trials: pd.DataFrame) -> pd.DataFrame:
 def contact_time_tests(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
     """Per run (a confirmed variant's fresh networks) the declared test: the networks in all,
     those that touched in all four cells (the test's units), estimate, interval, t, df, p, Holm's
-    p over the runs (``FAMILY``) and the direction (``DIRECTIONS``); no test with fewer than
+    p over the runs (``FAMILY``) and the direction (``claims.direction``, the confirmation's
+    reading: paper, reversed, none, not assessable); no test with fewer than
     ``min_networks`` networks, networks of one mapping only, or no spread."""
     effect, alpha = declaration["effect"], float(declaration["alpha"])
     least = max(int(declaration["min_networks"]), 3)
@@ -75,13 +75,5 @@ def contact_time_tests(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> 
     table["family"] = FAMILY
     table["p_holm"] = holm(table["p"].to_numpy(dtype=float)) if len(table) else []
     pairs = zip(table["estimate"], table["p_holm"], strict=True)
-    table["direction"] = [_direction(e, p, alpha) for e, p in pairs]
+    table["direction"] = [direction(e, p, alpha) for e, p in pairs]
     return table
-
-
-def _direction(estimate: float, p_holm: float, alpha: float) -> str:
-    if not np.isfinite(p_holm):
-        return "not assessable"
-    if p_holm >= alpha:
-        return "none"
-    return "paper" if estimate > 0 else "reversed"
