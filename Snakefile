@@ -66,10 +66,8 @@ include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 
 
-# Every file of the default target, the intermediate ones too: Snakemake remakes a missing file
-# only if a job still to run needs it, so a file deleted after a run (as the project's own errors
-# advise for a corrupt one) must be a target itself to be remade. Derived, never listed: every
-# file of each run the build makes (common.smk: built_runs, run_outputs) and every output of a
+# Every file the default target makes, the intermediate ones too (DEFAULT_TARGET below names
+# those that are missing). Derived, never listed: every file of each run the build makes (common.smk: built_runs, run_outputs) and every output of a
 # rule without wildcards, but the sweep's summary, which only `robustness=True` (or the target
 # `sweep`) asks for.
 ON_REQUEST = () if config["robustness"] else ("sweep_summary", "sweep_figure")
@@ -92,11 +90,29 @@ DEFAULT_OUTPUTS = list(
 include: "workflow/rules/manifest.smk"
 
 
+# What the default target names. The results manifest reads every result file and the book every
+# job's record, so the two reach every job of the build; the target names them, the build's files
+# that neither reads, and any file of the build that is missing: Snakemake remakes a missing file
+# only if a job still to run needs it, so a file deleted after a run (as the project's errors
+# advise for a corrupt one) must be named to be remade. Naming all ~3,900 files every time would
+# make every start match each of them to its rule (issue 56).
+_READ = {*RESULT_FILES, *BOOK_DATA.values(), *BOOK_FINDINGS.values(), *rules.book.output}
+DEFAULT_TARGET = list(
+    dict.fromkeys(
+        [
+            *rules.book.output,
+            *rules.manifest.output,
+            *(f for f in DEFAULT_OUTPUTS if f not in _READ or not os.path.exists(f)),
+        ]
+    )
+)
+
+
 rule all:
     """Everything: the book and every file it is made from."""
     default_target: True
     input:
-        DEFAULT_OUTPUTS,
+        DEFAULT_TARGET,
 
 
 # The paper's own model alone: its figures, its ANOVA and the config's own run's files, without

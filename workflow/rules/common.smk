@@ -214,44 +214,50 @@ def job_records(files):
     `benchmark:` file (the job's wall time in column `s`). The job is found as Snakemake finds
     it, by the one rule whose output matches the file (wildcard constraints included), so this
     holds whichever rule serves a run; call it from an input function, once every rule is read.
-    Only the outputs that can end in the file's name are tried (_outputs_by_name)."""
-    by_name, any_name = _outputs_by_name()
+    A file a rule names whole is looked up; only the others are matched, and only against the
+    outputs that can end in their name (_outputs_index)."""
+    exact, by_name, any_name = _outputs_index()
     records = []
     for path in files:
-        candidates = [*by_name.get(path.rsplit("/", 1)[-1], ()), *any_name]
-        makers = list(dict.fromkeys(r for r, output in candidates if output.match(path)))
+        if path in exact:
+            makers, wildcards = [exact[path]], {}
+        else:
+            candidates = [*by_name.get(path.rsplit("/", 1)[-1], ()), *any_name]
+            makers = list(dict.fromkeys(r for r, output in candidates if output.match(path)))
+            wildcards = makers[0].get_wildcards(path) if len(makers) == 1 else {}
         if len(makers) != 1 or not makers[0].benchmark:
             makers = [r for r in workflow.rules if any(o.match(path) for o in r.output)]
             raise ValueError(
                 f"{path}: made by the rules {[r.name for r in makers]}; its job's record needs "
                 "one rule, with a `benchmark:` file"
             )
-        maker = makers[0]
-        records.append(str(maker.expand_benchmark(maker.get_wildcards(path))))
+        records.append(str(makers[0].expand_benchmark(wildcards)))
     return list(dict.fromkeys(records))
 
 
-_OUTPUTS_BY_NAME = []
+_OUTPUTS_INDEX = []
 
 
-def _outputs_by_name():
-    """The outputs of the rules, each with its rule, read once when first asked (all rules read)
-    and filed by file name where that has no wildcard ({name: [...]}), else among the others
-    ([...]). A file is matched against its name's and the others only: 3,400 files against a few
-    outputs each, not against every output of every rule (issue 56)."""
-    if not _OUTPUTS_BY_NAME:
-        by_name, any_name = {}, []
+def _outputs_index():
+    """The outputs of the rules, read once when first asked (all rules read): the files a rule
+    names whole ({path: rule}; a replication's measures name hundreds), the patterns whose
+    file name has no wildcard, filed by it ({name: [(rule, output), ...]}), and the others
+    ([(rule, output), ...]). A file is looked up, or matched against its name's patterns and
+    the few others, not against every output of every rule (issue 56)."""
+    if not _OUTPUTS_INDEX:
+        exact, by_name, any_name = {}, {}, []
         for r in workflow.rules:
             for output in r.output:
                 pattern = str(output)
-                # the text after the last wildcard (all of it, if none)
-                tail = pattern[pattern.rfind("}") + 1 :]
-                if "{" not in pattern or "/" in tail:
+                tail = pattern[pattern.rfind("}") + 1 :]  # all of it, without a wildcard
+                if "{" not in pattern:
+                    exact[pattern] = r
+                elif "/" in tail:
                     by_name.setdefault(tail.rsplit("/", 1)[-1], []).append((r, output))
                 else:
                     any_name.append((r, output))
-        _OUTPUTS_BY_NAME.append((by_name, any_name))
-    return _OUTPUTS_BY_NAME[0]
+        _OUTPUTS_INDEX.append((exact, by_name, any_name))
+    return _OUTPUTS_INDEX[0]
 
 
 def sweep_job_records(wildcards=None):
