@@ -112,7 +112,8 @@ def filmed_networks(
         if len(recorded) != len(setup.trials):
             raise ValueError(
                 f"{trials_path} has {len(recorded)} trials, the test {len(setup.trials)}: "
-                "stale; rerun the robot test (rule embodied)"
+                "stale; rerun the robot test (rule robot_test, run_robot_test or "
+                "confirmation_robot_test)"
             )
         films.append(FilmedNetwork(net, mapping, weights, setup, recorded))
     return films
@@ -147,7 +148,8 @@ def film_trial(
         raise RuntimeError(
             f"network {net}, {trial['task']} {trial['object']} sequence {trial['sequence']}: "
             f"the re-run trial gives {seen}, the robot test recorded {was}. The film would not "
-            "show the recorded trial: rerun the robot test (rule embodied) with this code."
+            "show the recorded trial: rerun the robot test (rule robot_test, run_robot_test or "
+            "confirmation_robot_test) with this code."
         )
     held = "held" if outcome["success"] else "not held"
     return (
