@@ -117,8 +117,26 @@ def built(tmp_path_factory, worker_id) -> Path:
     return workdir
 
 
-def pytest_collection_modifyitems(items) -> None:
-    """Every test that reads the finished test run is slow: it waits for the pipeline."""
+#: The markers of the tests that cost more than a unit test (pyproject.toml): `--fast` leaves
+#: every test with one of them out.
+COSTLY = ("built", "dryrun", "reruns", "heavy")
+
+
+def pytest_addoption(parser) -> None:
+    parser.addoption(
+        "--fast",
+        action="store_true",
+        help=f"the fast tier: leave out the tests marked {', '.join(COSTLY)}",
+    )
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    """A test that reads the finished test run is marked `built`: it waits for the pipeline.
+    With `--fast`, every test marked with a cost (COSTLY) is deselected."""
     for item in items:
         if "built" in getattr(item, "fixturenames", ()):
-            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.built)
+    if config.getoption("fast"):
+        costly = [item for item in items if any(item.get_closest_marker(m) for m in COSTLY)]
+        config.hook.pytest_deselected(items=costly)
+        items[:] = [item for item in items if item not in costly]

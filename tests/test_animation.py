@@ -83,6 +83,7 @@ def test_panels_must_be_rgb_frames(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.heavy
 def test_filming_a_trial_does_not_change_it(robot):
     """The film shows the trial that was recorded: rendering reads the state, never moves it."""
     config = demo_config()

@@ -99,7 +99,7 @@ def test_front_page_shows_provenance(built, html):
     assert f"seed: {run['config']['seed']}" in html["reproduce"]
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_a_changed_output_changes_the_book_after_a_rebuild(built, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(built, copy, symlinks=True)
@@ -136,7 +136,7 @@ def without_build_time(page):
     )
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_a_rebuild_from_the_same_outputs_gives_the_same_pages(built, tmp_path):
     """No random table ids or layouts: only the build time and the job records move."""
     copy = tmp_path / "copy"
@@ -158,7 +158,7 @@ def seen(page: str) -> str:
     return " ".join(re.sub(r"<[^>]+>", " ", page).split())
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_the_robot_chapter_compares_variants_only_where_the_build_tests_them(built, html, tmp_path):
     """Issue 47: the default build tests the config's own networks alone beside the
     confirmation, so the robot chapter compares no variants, says that the full scale does,

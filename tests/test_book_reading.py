@@ -298,7 +298,7 @@ window.addEventListener("load", () => {
 </script>"""
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
     if chromium is None:

@@ -152,7 +152,7 @@ def script_sources(script: str) -> str:
     return source
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_derived_code_covers_what_python_imports():
     graph = CodeGraph(ROOTS)
     sources = {script: script_sources(script) for script in sorted({*rule_scripts().values()})}
@@ -162,7 +162,7 @@ def test_derived_code_covers_what_python_imports():
         assert not missing, f"{script}: imports {missing} but its rule does not list them"
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
     """Every job of the finished test run has among its inputs every module of the project that
     its script imports, so that editing the module reruns it (Snakemake reruns a job whose

@@ -63,7 +63,7 @@ def planned(result) -> dict[str, int]:
     return {m[0]: int(m[1]) for m in re.findall(r"^(\w+)\s+(\d+)$", table, re.M) if m[0] != "total"}
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tmp_path):
     path = tmp_path / "runs.yaml"
     path.write_text(
@@ -83,7 +83,7 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
     assert "data/runs/half_lr/eval/anova.json" in plan
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, tmp_path):
     """A variant added to robot.default trains its networks and drives the robot (a job each),
     then only the summaries and pages that show the variants rerun: nothing of the main run."""
@@ -106,7 +106,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, tmp_path):
     """The cue timing is a dimension of the robot grid: the variant with the config's network
     settings under the other cue is the cue ablation's run (tested on the robot, not retrained);
@@ -143,7 +143,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     assert set(jobs) <= shown, jobs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_path):
     """The learning-rate schedule is a dimension of the robot grid: the config's network with
     the annealed rate trains its own networks, in a run named by what differs (_anneal)."""
@@ -168,7 +168,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     assert set(jobs) <= shown, jobs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tmp_path):
     path = tmp_path / "runs.yaml"
     path.write_text(yaml.safe_dump(load_test_config() | {"runs": {"s7": {"seed": 7}}}))
@@ -178,7 +178,7 @@ def test_a_run_with_its_own_seed_makes_its_own_demonstrations_and_maps(built, tm
     assert "visual_maps" not in jobs  # the scene and the eye do not depend on the seed
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_bad_run_stops_snakemake_before_any_job(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     path = tmp_path / "bad.yaml"
@@ -249,7 +249,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     assert span == (first, first + count - 1)
 
 
-@pytest.mark.slow  # runs Snakemake
+@pytest.mark.dryrun  # runs Snakemake
 def test_the_paper_target_makes_the_papers_model_alone(tmp_path):
     """`snakemake paper`: the config's own run (demonstrations, maps, 12 networks, tests, ANOVA,
     Figures 1-5), nothing of the other runs, the robot, the readings, the size study or the

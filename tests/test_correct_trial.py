@@ -64,6 +64,7 @@ def estimator(df: pd.DataFrame) -> float:
     return stats.correct_trial_effects(correct)["congruency"]["estimate"]
 
 
+@pytest.mark.heavy
 def test_every_chapter_shows_the_one_estimators_number_and_follows_a_change_of_its_input():
     df = with_errors(synthetic(seed=11))
     before = every_chapter(df)

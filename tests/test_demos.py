@@ -85,6 +85,7 @@ def test_power_and_precision_differ_in_the_fingers(demos):
         assert power[others].sum() > precision[others].sum() + 60, DOF_NAMES
 
 
+@pytest.mark.heavy
 def test_demos_are_the_same_on_every_run():
     robot = Robot()
     config = demo_config(sequences=2)

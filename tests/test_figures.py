@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import pytest
 
+
+@pytest.mark.heavy
 def test_figure2s_diagram_names_the_hidden_units_and_draws_the_same_png(tmp_path):
     """Figure 2's diagram (rule ``figure2_architecture``): a PNG, the same for the same config;
     the hidden layer's size is the config's."""

@@ -418,7 +418,7 @@ def test_the_books_test_tables_name_their_families_and_adjust_within_them(built)
                 found[f"{key}_p_holm"])  # fmt: skip
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_findings_rule_reads_no_figure(tmp_path):
     from conftest import run_snakemake, scratch_workflow
 
@@ -454,6 +454,7 @@ def test_a_page_only_displays(page):
         assert word not in code, (page, word)
 
 
+@pytest.mark.heavy
 def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     """The sweep is too long for the tests' run: its findings from a made-up summary and job
     records (benchmark files), and the page executed on them."""
@@ -558,7 +559,7 @@ def test_the_hidden_layer_sentence_follows_the_adjusted_tests():
     assert divergence_verdict(3).rests_on == ("beyond.div_first_step",)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_headline_reads_the_declared_family_and_nothing_else(built, tmp_path):
     """Changing the declared family reruns the claims' tests and nothing trained or measured
     before them; this run's statistics do not depend on it."""

@@ -34,6 +34,7 @@ def test_network_shapes_and_outputs():
     assert ((y > 0) & (y < 1)).all()
 
 
+@pytest.mark.heavy
 @pytest.mark.parametrize("hidden", [10, 40])
 @pytest.mark.parametrize("rate", ["constant", "anneal"])
 def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
@@ -102,7 +103,7 @@ print("digest", digest.hexdigest())
 """
 
 
-@pytest.mark.slow  # three compilations of the kernel in fresh processes
+@pytest.mark.heavy  # three compilations of the kernel in fresh processes
 def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
     """A cold compile that fills an empty cache, a load from that cache and a compile without any
     cache train to the same bits, one network alone and networks together: what ran before
@@ -335,6 +336,7 @@ def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_alone():
     assert [i for group, _ in lane_groups(21) for i in group] == list(range(21))
 
 
+@pytest.mark.heavy
 def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alone():
     """Phase 1 of several networks trained together (train_phase1s), each the bytes of
     train_phase1, continued together with other settings after phase 1 (the annealed rate, the

@@ -244,7 +244,7 @@ def every_demo(m: Materials):
                 yield o, obj, g, grip, s
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_a_network_that_outputs_the_servo_targets_grasps(scene, materials):
     """What a perfect ``target: commands`` network sends (at step t the demonstration's servo
     targets of step t+1, clipped to 0-1 as the sigmoid outputs are) grasps and lifts on the
@@ -300,7 +300,7 @@ def first_contact_time(robot: Robot, obj: str, plan: np.ndarray, start: np.ndarr
     return float("nan"), len(log)
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_contact_time_is_the_first_physics_step_the_grip_touches(scene, materials):
     m, config = materials, demo_config()
     for obj, grip in (("big_ball", "power"), ("small_cube", "precision"), ("big_cube", "power")):
@@ -326,7 +326,7 @@ def test_a_trial_that_never_touches_has_no_contact_time(robot):
     assert np.isnan(outcome_columns(out, "power", start, None, demo_config())["contact_time"])
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_the_memo_of_identical_trials_changes_no_result(scene, materials):
     """embodied_network runs each distinct trial once; running every trial afresh gives the same
     rows and states, to the bit."""
@@ -374,7 +374,7 @@ def test_the_memo_of_identical_trials_changes_no_result(scene, materials):
 # -- how precisely the arm must move -----------------------------------------------------------
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_the_palm_measure_is_where_the_replayed_demo_put_the_palm(scene, materials):
     """``demo_palms`` (forward kinematics of a demonstration's final sensed posture) agrees with
     the palm the physics reached when the demonstration's servo targets are replayed, within a
@@ -395,7 +395,7 @@ def test_the_palm_measure_is_where_the_replayed_demo_put_the_palm(scene, materia
     assert spread.max() < 0.01
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_the_mean_plan_grasps_and_offsets_are_seeded(scene, demos):
     """The body's tolerance test: unshifted, the demonstrations' mean plan of each object's
     natural grasp holds the object, its palm within millimetres of the demonstrator's; every

@@ -184,7 +184,7 @@ def _machine() -> str:
     return f"\nthis machine: {model} ({os.cpu_count()} CPUs)"
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_default_build_in_data_is_the_tracked_manifest():
     """CI builds the default configuration (the README's first line) and then runs the tests:
     every result file must then be the bytes results.sha256 lists."""
@@ -207,7 +207,7 @@ def test_the_default_build_in_data_is_the_tracked_manifest():
     assert (REPO / "data" / "results.sha256").read_text() == (REPO / "results.sha256").read_text()
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_verify_passes_on_a_build_and_names_the_one_byte_changed(built, tmp_path):
     """`snakemake verify` against a manifest of the test build: it passes, then fails naming the
     one file with a changed byte."""

@@ -27,6 +27,7 @@ def cached_outputs(book: Path, path: Path):
     return [cell.outputs for cell in merged.cells if cell.cell_type == "code"]
 
 
+@pytest.mark.heavy
 def test_every_page_is_found_in_the_cache_with_its_outputs(tmp_path):
     (tmp_path / "data.txt").write_text("from the pipeline")
     a = page(tmp_path, "a.md", "print(open('data.txt').read())")  # runs in the page's directory
@@ -37,6 +38,7 @@ def test_every_page_is_found_in_the_cache_with_its_outputs(tmp_path):
     assert cached_outputs(tmp_path, b)[0][0]["data"]["text/plain"] == "42"
 
 
+@pytest.mark.heavy
 def test_a_new_build_never_shows_the_last_builds_outputs(tmp_path):
     """The cache is keyed on the code, not the data it reads: it must be emptied every build."""
     data = tmp_path / "data.txt"
@@ -48,6 +50,7 @@ def test_a_new_build_never_shows_the_last_builds_outputs(tmp_path):
     assert cached_outputs(tmp_path, a)[0][0]["text"] == "second run\n"
 
 
+@pytest.mark.heavy
 def test_a_page_never_sees_what_an_earlier_page_in_its_kernel_defined(tmp_path):
     """One kernel runs several pages: each must start from an empty namespace, as in its own."""
     first = page(tmp_path, "a_first.md", "import json\nsecret = 42")
@@ -60,6 +63,7 @@ def test_a_page_never_sees_what_an_earlier_page_in_its_kernel_defined(tmp_path):
     assert "a_first.md" not in str(error.value)
 
 
+@pytest.mark.heavy
 def test_a_failing_page_is_named_with_its_error(tmp_path):
     good = page(tmp_path, "good.md", "1")
     bad = page(tmp_path, "bad.md", "raise ValueError('anova.json lacks closed_loop')")

@@ -57,7 +57,7 @@ def test_missing_key_is_refused():
         validate(config, str(SCHEMA))
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
     bad = load_test_config()
     bad["seed"] = -5
@@ -74,7 +74,7 @@ def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
     assert not (workdir / "data").exists()
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_posture_outside_figure1_ranges_is_refused_before_any_job_with_the_joint_named(
     workdir, tmp_path
 ):
@@ -95,7 +95,7 @@ def test_posture_outside_figure1_ranges_is_refused_before_any_job_with_the_joint
     assert not (workdir / "data").exists()  # refused when the config is read: no job ran
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_test_config_runs_end_to_end(built):
     workdir = built
     body = workdir / "data" / "body"
@@ -150,7 +150,7 @@ def replace_with_edited_copy(workdir: Path, relative: str) -> None:
     target.write_text(target.read_text() + comment)
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 @pytest.mark.parametrize(
     "edited", ["assets/icub_scene.xml", "assets/icub_right_arm.xml", "src/icub_affordance/body.py"]
 )

@@ -96,7 +96,7 @@ def test_the_science_never_imports_the_workflow_and_benchmarks_import_no_tests()
         assert not re.search(r"^\s*(from|import) (test_|conftest)", path.read_text(), re.M), path
 
 
-@pytest.mark.slow  # runs Snakemake
+@pytest.mark.dryrun  # runs Snakemake
 def test_snakemake_lint_gives_no_advice_but_the_conda_one():
     result = subprocess.run(
         [sys.executable, "-m", "snakemake", "--lint"], cwd=REPO, capture_output=True, text=True

@@ -346,6 +346,7 @@ def test_a_difference_of_a_term_one_run_does_not_identify_is_undefined():
     assert other["p"].notna().all()  # the readings that identify them are tested
 
 
+@pytest.mark.heavy
 def test_identical_cells_are_not_tested():
     """A measure constant on every network in both readings (no wrong grip anywhere): its
     differences have no spread, so no test, no TOST and no place in any Holm family."""
@@ -427,6 +428,7 @@ def _family_tables():
     return summ, diffs
 
 
+@pytest.mark.heavy
 def test_the_summary_names_its_holm_family():
     """The null control and the measure tested by its excess are shown (with their raw p), in
     no family; the excess is the hypothesis, in the family with the other measures."""
@@ -537,6 +539,7 @@ def page(tmp_path, summ, diffs, with_tables=False):
     return (pages, tables) if with_tables else pages
 
 
+@pytest.mark.heavy
 def test_every_readings_claim_rests_on_values_the_page_stores(tmp_path):
     summ, diffs = built_tables()
     # a cell where every network scored the same has no test: its claim rests on its difference
@@ -714,7 +717,7 @@ def planned_outputs(stdout: str) -> dict[str, list[str]]:
     return made
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 @pytest.mark.parametrize("robustness", [False, True])
 def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
     """Every reading is replicated at the confirmation's seeds (each a job of its seed's

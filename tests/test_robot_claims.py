@@ -166,6 +166,7 @@ def robot_trials(held: dict[str, int], touched: dict[str, int], seconds: dict[st
     return pd.DataFrame(rows)
 
 
+@pytest.mark.heavy
 def test_the_made_up_counts_are_the_ones_variant_effects_writes():
     """The made-up variant's counts, per level, cell and object, are what
     ``robot_stats.variant_effects`` counts in trials made to give them."""
@@ -193,6 +194,7 @@ def test_the_made_up_counts_are_the_ones_variant_effects_writes():
         assert real["success"]["tests"][term]["estimate"] == pytest.approx(made_up["estimate"])
 
 
+@pytest.mark.heavy
 def test_the_made_up_counts_are_consistent():
     """Each level's counts are its two cells', each cell's its two objects' (one per mapping),
     and the tests' numbers are the counts'."""
@@ -255,6 +257,7 @@ def approx(row: dict, **expected) -> bool:
     )
 
 
+@pytest.mark.heavy
 def test_the_issues_size_effect_counted_once_is_not_significant():
     # the constant-rate all_steps variant's size effect, counted once per network and object
     assert fisher_exact([[19, 5], [15, 9]])[1] == pytest.approx(0.34, abs=0.005)
@@ -266,6 +269,7 @@ def test_the_issues_size_effect_counted_once_is_not_significant():
     assert fisher_exact([[95, 25], [75, 45]])[1] < 0.01
 
 
+@pytest.mark.heavy
 def test_a_contrast_verdict_follows_its_sign_and_its_adjusted_p():
     assert verdict(effects(), "best_success_congruency") == "reproduced"  # congruent held more
     row = rows(effects())["held", "congruency"]
@@ -300,6 +304,7 @@ SAME = {"congruent_large": 10, "congruent_small": 10, "incongruent_large": 9,
         "incongruent_small": 9}  # fmt: skip
 
 
+@pytest.mark.heavy
 def test_an_exact_verdict_follows_its_counts_and_its_p():
     swapped = effects(SWAPPED)
     assert swapped["v"]["success"]["tests"]["size"]["table"] == [[15, 9], [19, 5]]
@@ -318,6 +323,7 @@ def test_an_exact_verdict_follows_its_counts_and_its_p():
     assert values["best_success_size_estimate"] == pytest.approx(15 / 24 - 19 / 24)
 
 
+@pytest.mark.heavy
 def test_an_effect_that_cannot_be_estimated_says_so():
     assert verdict(effects(), "best_contact_time_size") == "not estimable"
     row = rows(effects())["contact, s", "size"]
@@ -327,6 +333,7 @@ def test_an_effect_that_cannot_be_estimated_says_so():
     assert np.isnan(values["best_contact_time_size_estimate"])
 
 
+@pytest.mark.heavy
 def test_the_required_grip_term_and_the_misses_rest_on_the_cells_and_objects():
     """The congruency x size term (twice the required grip's difference) is shown or not within
     its family, or not tested; the counts per cell and the misses per object stand beside it."""
@@ -397,6 +404,7 @@ def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> 
     }  # fmt: skip
 
 
+@pytest.mark.heavy
 def test_the_chapter_beyond_states_the_robots_effects_from_their_tests():
     own = effects()["v"]
     found = pages.traced({"beyond": pages._robot_values(analysis(+0.01, 0.02), own)})
@@ -435,6 +443,7 @@ def test_the_chapter_beyond_states_the_robots_effects_from_their_tests():
     assert words["replay_wrong_grip_holds_commands"] == 1 and words["replay_trials_commands"] == 40
 
 
+@pytest.mark.heavy
 def test_an_effect_one_cell_carries_is_named_as_that_cell_and_follows_a_swap():
     """Holding fails in one cell only (1 of 12 held, every other cell 11 of 12): size's and
     congruency's effects are that cell's, so the chapter names the cell, not an effect; swap

@@ -377,6 +377,7 @@ def made_up_trials(held, contact, networks: int, run: str = "v", sequences: int 
     return pd.DataFrame(rows)
 
 
+@pytest.mark.heavy
 def test_the_robot_effects_count_each_cell_and_each_object_by_hand():
     """Four networks (0, 1: mapping A; 2, 3: B), three sequences each: four misses, three of
     them incongruent small (A's small ball, B's small cube), one incongruent large (A's big
@@ -432,6 +433,7 @@ def per_network_grip_difference(trials: pd.DataFrame) -> pd.Series:
     return 2 * (rate["power"] - rate["precision"])
 
 
+@pytest.mark.heavy
 def test_the_interaction_is_twice_the_power_minus_precision_difference():
     """With four objects the congruency x size contrast is the required grip's: by hand, per
     network 2 x (power-required share held - precision-required), tested over networks with
@@ -454,6 +456,7 @@ def test_the_interaction_is_twice_the_power_minus_precision_difference():
     assert term["family"] == ROBOT_FAMILY
 
 
+@pytest.mark.heavy
 def test_an_interaction_without_variance_has_no_test_and_no_p_holm():
     """Every network holds the large objects only: the factors fall back to Fisher's exact test,
     the interaction (0 in every network) has no test and stays out of the family."""
@@ -466,6 +469,7 @@ def test_an_interaction_without_variance_has_no_test_and_no_p_holm():
     assert tests["size"]["family_size"] == 2  # the two exact tests, not the interaction
 
 
+@pytest.mark.heavy
 def test_every_robot_test_is_holm_adjusted_within_its_named_family():
     """Two variants, every method present: each test with a method names its family and its
     size, and its p_holm is statsmodels' Holm over that family's tests; no test with method

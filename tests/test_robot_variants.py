@@ -154,6 +154,7 @@ def test_a_contrast_without_variance_falls_back_to_the_exact_test_over_distinct_
     assert robot_effect_verdict(times, "contact_time", "size") is None
 
 
+@pytest.mark.heavy
 def test_success_is_tested_by_per_network_contrasts_and_contact_time_by_its_own():
     # every congruency x size cell has networks that hold the object and networks that do not
     order = list(OBJECTS)
@@ -203,6 +204,7 @@ def test_contact_time_needs_three_networks_that_touched_in_every_cell():
     assert "2 network(s)" in tests["congruency"]["reason"]
 
 
+@pytest.mark.heavy
 @pytest.mark.parametrize("case", ["exact", "contrasts"])
 def test_five_identical_sequences_give_the_counts_and_p_values_of_one(case):
     """The issue's check: every robot table and test over five identical test sequences of each
@@ -320,6 +322,7 @@ def test_the_interval_of_a_share_held_is_clopper_pearson():
     assert held_interval(0, 10)[0] == 0.0 and held_interval(10, 10)[1] == 1.0
 
 
+@pytest.mark.heavy
 def test_the_robots_tests_are_one_family_adjusted_by_holm():
     """Two variants' defined tests, Holm-adjusted together (by hand: sorted p times the tests
     left, made monotone), and the verdict reads the adjusted p."""

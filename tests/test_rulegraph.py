@@ -58,7 +58,7 @@ def test_a_text_that_is_no_rule_graph_is_refused():
         canonical_dot("Building DAG of jobs...\n")
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_the_drawing_is_byte_identical_across_runs_and_follows_the_config(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     out = workdir / "data/book/rulegraph.dot"

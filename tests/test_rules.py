@@ -29,7 +29,7 @@ def _rules(*config: str) -> set[str]:
     return {line.split()[0] for line in result.stdout.splitlines() if line[:1].strip()}
 
 
-@pytest.mark.slow  # runs Snakemake (twice: the default config and the full scale)
+@pytest.mark.dryrun  # runs Snakemake (twice: the default config and the full scale)
 def test_docs_pipeline_names_every_rule_the_snakefile_defines():
     # a rule made per group of runs is named as `measured_seed{n}`
     names = re.findall(r"`(\w+(?:\{\w+\}\w*)?)`", (REPO / "docs" / "pipeline.md").read_text())

@@ -293,6 +293,7 @@ def test_a_confirmed_animation_films_the_confirmations_fresh_networks(plan, conf
         plan.animated({"target": "sensed", "hidden": 20, "iterations": 48000})
 
 
+@pytest.mark.heavy
 def test_robot_variants_that_differ_only_after_phase_1_share_it(plan, config):
     """Earlier defaults' three variants (40 hidden, 768,000 iterations: two cue timings, two
     schedules), listed in robot.default, share one phase 1; the config's own run and a

@@ -23,7 +23,7 @@ COMPARED = [
 ]
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 @pytest.mark.parametrize("profile", ["default", "slurm", "local-cluster"])
 def test_profiles_parse(tmp_path, profile):
     workdir = scratch_workflow(tmp_path)
@@ -37,7 +37,7 @@ def test_profiles_parse(tmp_path, profile):
     assert result.returncode == 0, result.stderr[-3000:]
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_every_job_of_the_run_left_a_benchmark(built):
     """Each job's wall time and memory are on record (benchmarks/collect.py reads them)."""
     result = run_snakemake(built, "-n", "--forceall")
@@ -46,7 +46,7 @@ def test_every_job_of_the_run_left_a_benchmark(built):
     assert len(list((built / "data" / "benchmarks").rglob("*.tsv"))) == jobs
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
     workdir = scratch_workflow(tmp_path)
     result = run_snakemake(
@@ -58,7 +58,7 @@ def test_cluster_generic_executor_gives_the_local_outputs(built, tmp_path):
         assert (workdir / name).read_bytes() == (built / name).read_bytes(), name
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
 
     workdir = scratch_workflow(tmp_path)
@@ -156,7 +156,7 @@ def dry_run(workdir, *args, rule="book"):
     return counts, [name.strip() for name in inputs]
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     from icub_workflow.book.pages import robustness
 
@@ -227,7 +227,7 @@ def planned(dry_run_output: str) -> list[dict[str, str]]:
     return jobs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
     counts, book_inputs = dry_run(scratch_workflow(tmp_path))
     assert counts["book"] == 1
@@ -239,7 +239,7 @@ def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
     assert not [n for n in book_inputs if n.startswith("data/") and "sweep" in n], book_inputs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_robustness_in_lower_case_is_refused_with_the_command_that_works(tmp_path):
     result = run_snakemake(scratch_workflow(tmp_path), "-n", "--config", "robustness=true")
     assert result.returncode != 0
@@ -321,7 +321,7 @@ def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers(
     assert values["networks"] == points * config["network"]["networks"]
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_reproduction_notes_say_which_scale_this_build_is(built):
     found = json.loads((built / "data" / "book" / "findings.json").read_text())["reproduce"]
     config = yaml.safe_load((built / "config" / "config.yaml").read_text())

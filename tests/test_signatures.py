@@ -128,6 +128,7 @@ def by_hand_bin_effects(trials: pd.DataFrame) -> pd.DataFrame:
         ["replication", "bin"]).mean().rename("effect").reset_index()  # fmt: skip
 
 
+@pytest.mark.heavy
 def test_the_delta_plot_slope_is_recomputed_independently():
     trials = synthetic_trials(0.002)
     bins = bin_effects(trials, 4)
@@ -176,6 +177,7 @@ def test_over_units_takes_one_value_per_replication_and_counts_the_undefined():
     assert test["p"] == pytest.approx(sps.ttest_1samp([1.5, 5.5, 9.5], 0.0).pvalue)
 
 
+@pytest.mark.heavy
 def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
     """One minimum for every replicated test (icub_affordance.replicated): five replications
     against a declared minimum of six give no p and no verdict but "not assessable"; the
@@ -192,6 +194,7 @@ def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
     assert "fewer than 6 replications" in slope["reason"]
 
 
+@pytest.mark.heavy
 def test_the_leave_one_network_out_range_brackets_the_estimate():
     trials = synthetic_trials(0.002, replications=3)
     config = declared()
@@ -208,6 +211,7 @@ def test_the_leave_one_network_out_range_brackets_the_estimate():
     assert view["fewest_networks_per_cell"] == 12
 
 
+@pytest.mark.heavy
 def test_the_summary_holds_the_contract_and_holm_within_each_family():
     config = declared()
     trials = synthetic_trials(0.002)
@@ -221,6 +225,7 @@ def test_the_summary_holds_the_contract_and_holm_within_each_family():
     assert slope["verdict"] == "shown" and slope["estimate"] > 0
 
 
+@pytest.mark.heavy
 def test_no_signature_is_judged_while_the_in_view_effect_is_not_established():
     config = declared()
     trials = synthetic_trials(0.002)

@@ -81,6 +81,7 @@ def test_a_width_of_zero_sends_the_winner_alone_and_a_kept_cluster_is_whole():
     assert kept_whole(10, (5, 5), 2.0) == (5, 5)  # inside already: unmoved
 
 
+@pytest.mark.heavy
 def test_keeping_clusters_whole_delivers_the_dose_the_edge_cut():
     rng = np.random.default_rng(3)
     big = np.zeros((10, 10))
@@ -682,6 +683,7 @@ def test_an_error_that_follows_the_path_length_is_found():
     assert row["p_holm"] < 0.01 and row["estimate"] > 0
 
 
+@pytest.mark.heavy
 def test_the_motor_tests_planned_and_added_are_two_holm_families():
     out = motor_tests(motor_trials(["removed", 0.0, 0.6], effect=0.002))
     planned = out["dose"].astype(str) == "removed"

@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 from conftest import REPO, TEST_CONFIG, scratch_workflow
 
-pytestmark = pytest.mark.slow
+pytestmark = pytest.mark.reruns
 
 TOOLS = REPO / "tools" / "slurm-local"
 # the test cluster's own settings, beside the profile's: no accounting database, so job states

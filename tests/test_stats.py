@@ -101,7 +101,7 @@ def test_mapping_a_is_the_first_half_of_the_networks(outputs):
     assert (mapping[: n // 2] == "A").all() and (mapping[n // 2 :] == "B").all()
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_twelve_training_jobs_in_the_default_dag(tmp_path):
     workdir = scratch_workflow(tmp_path)
     result = run_snakemake(

@@ -29,7 +29,7 @@ COMPARED = [
 ]
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_killed_and_resumed_single_core_run_equals_the_two_core_run(built, tmp_path):
     """A run with -c1, killed hard part-way and resumed, gives byte-identical outputs."""
     workdir = scratch_workflow(tmp_path)
@@ -70,7 +70,7 @@ def changed_config(tmp_path: Path, change) -> Path:
     return path
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["network"].update(learning_rate=0.05))
     plan = run_snakemake(built, "-n", config=path)
@@ -88,7 +88,7 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
         assert rule not in jobs, (rule, jobs)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_cue_timing_reruns_training_too(built, tmp_path):
     def change(c):
         c["network"].update(categorisation_cue="all_steps")
@@ -103,7 +103,7 @@ def test_the_cue_timing_reruns_training_too(built, tmp_path):
     assert "train" in jobs and "demos" not in jobs and "soms" not in jobs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
     path = changed_config(tmp_path, lambda c: c["object_sizes_m"].update(big_ball=0.065))
     jobs = planned_jobs(run_snakemake(built, "-n", config=path).stdout)
@@ -111,7 +111,7 @@ def test_an_object_size_reruns_from_the_scene_on(built, tmp_path):
         assert rule in jobs, (rule, jobs)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
     path = changed_config(
         tmp_path, lambda c: c["figures"].update(filmstrip=[["small_ball", "power", 1]])
@@ -120,7 +120,7 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
     assert set(jobs) <= {"demo_filmstrip", "book", "all", "rulegraph", "rulegraph_figure"}, jobs
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 @pytest.mark.parametrize(
     ("change", "words"),
     [
@@ -156,7 +156,7 @@ def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path,
     assert not (workdir / "data").exists()
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_missing_scene_is_named_before_any_job(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     path = changed_config(tmp_path, lambda c: c.update(scene="assets/missing.xml"))
@@ -185,7 +185,7 @@ def test_a_truncated_file_is_named_with_what_to_do(built, tmp_path, name):
         load_npz(tmp_path / "gone.npz")
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_a_corrupt_weights_file_fails_the_evaluation_and_keeps_the_old_trials(built, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(built, copy, symlinks=True)
@@ -236,7 +236,7 @@ def default_targets(workdir: Path) -> set[str]:
     return set(re.search(r"input: (.*)", block)[1].split(", "))
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_default_target_names_the_book_and_every_missing_file(built, tmp_path):
     """Snakemake remakes a missing file only if a job still to run needs it. On a finished
     build the default target names the book and the manifest (which reach every job), not every
@@ -257,7 +257,7 @@ def test_the_default_target_names_the_book_and_every_missing_file(built, tmp_pat
     assert set(data_files(built)) - named == set()  # every file of the finished run
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_deleted_intermediate_files_are_remade_byte_identically(built, tmp_path):
     copy = tmp_path / "copy"
     shutil.copytree(built, copy, symlinks=True)
@@ -268,7 +268,7 @@ def test_deleted_intermediate_files_are_remade_byte_identically(built, tmp_path)
     assert data_files(copy) == data_files(built)
 
 
-@pytest.mark.slow
+@pytest.mark.reruns
 def test_following_the_advice_for_a_corrupt_file_restores_the_run(built, tmp_path):
     """A corrupt file: the job that reads it fails saying "delete it and rerun `snakemake -c2`";
     doing exactly that gives back every file, byte for byte."""
@@ -290,7 +290,7 @@ def test_following_the_advice_for_a_corrupt_file_restores_the_run(built, tmp_pat
     assert data_files(copy) == data_files(built)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_broken_benchmark_file_advice_rewrites_every_benchmark_the_timeline_reads(
     built, tmp_path
 ):
@@ -313,7 +313,7 @@ def test_a_broken_benchmark_file_advice_rewrites_every_benchmark_the_timeline_re
     assert subprocess.run(timeline, cwd=built, capture_output=True).returncode == 0
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_the_sweep_is_a_target_with_robustness_and_no_job_starts_snakemake(built):
     plan = run_snakemake(built, "-n", "--force", "all", "-c1", "--config", "robustness=True")
     targets = set(re.search(r"input: (.*)", plan.stdout.split("rule all:", 1)[1])[1].split(", "))
@@ -323,7 +323,7 @@ def test_the_sweep_is_a_target_with_robustness_and_no_job_starts_snakemake(built
     assert any(t.startswith("data/runs/sweep_seed1_") and "weights.npz" in t for t in targets)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_path):
     scene = built / "moved_scene"
     scene.mkdir(exist_ok=True)
@@ -337,7 +337,7 @@ def test_another_scene_path_reruns_everything_that_loads_the_scene(built, tmp_pa
         assert rule in jobs, (rule, jobs)
 
 
-@pytest.mark.slow
+@pytest.mark.dryrun
 def test_a_nested_command_line_override_means_what_the_config_file_would(tmp_path):
     workdir = scratch_workflow(tmp_path / "w")
     for entry in ("network={networks: 6}", "runs={x: {network: {learning_rate: 0.0375}}}"):
