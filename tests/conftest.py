@@ -117,6 +117,38 @@ def built(tmp_path_factory, worker_id) -> Path:
     return workdir
 
 
+@pytest.fixture(scope="session")
+def dry_run(tmp_path_factory, worker_id):
+    """`dry_run(*args, config=TEST_CONFIG)`: a dry run of the workflow from scratch in a scratch
+    copy (``snakemake -n *args``), made once per pytest run for each configuration and arguments
+    and shared by the tests and the workers (its output kept in the workers' shared directory,
+    as the build of ``built`` is). Gives a CompletedProcess-like record: returncode, stdout,
+    stderr."""
+    import hashlib
+    import json
+    import subprocess
+
+    from filelock import FileLock
+
+    shared = tmp_path_factory.getbasetemp()
+    if worker_id != "master":
+        shared = shared.parent
+
+    def planned(*args: str, config: Path = TEST_CONFIG) -> subprocess.CompletedProcess:
+        key = hashlib.sha256(json.dumps([str(config), *args]).encode()).hexdigest()[:16]
+        record = shared / f"dry_run_{key}.json"
+        with FileLock(str(shared / f"dry_run_{key}.lock")):
+            if not record.exists():
+                workdir = scratch_workflow(shared / f"dry_run_{key}")
+                done = run_snakemake(workdir, "-n", *args, config=config)
+                fields = {"returncode": done.returncode, "stdout": done.stdout}
+                record.write_text(json.dumps(fields | {"stderr": done.stderr}))
+        fields = json.loads(record.read_text())
+        return subprocess.CompletedProcess(["snakemake", "-n", *args], **fields)
+
+    return planned
+
+
 #: The markers of the tests that cost more than a unit test (pyproject.toml): `--fast` leaves
 #: every test with one of them out.
 COSTLY = ("built", "dryrun", "reruns", "heavy")
@@ -131,11 +163,15 @@ def pytest_addoption(parser) -> None:
 
 
 def pytest_collection_modifyitems(config, items) -> None:
-    """A test that reads the finished test run is marked `built`: it waits for the pipeline.
-    With `--fast`, every test marked with a cost (COSTLY) is deselected."""
+    """A test that reads the finished test run is marked `built` (it waits for the pipeline),
+    one that takes a shared dry run `dryrun`. With `--fast`, every test marked with a cost
+    (COSTLY) is deselected."""
     for item in items:
-        if "built" in getattr(item, "fixturenames", ()):
+        fixtures = getattr(item, "fixturenames", ())
+        if "built" in fixtures:
             item.add_marker(pytest.mark.built)
+        if "dry_run" in fixtures:
+            item.add_marker(pytest.mark.dryrun)
     if config.getoption("fast"):
         costly = [item for item in items if any(item.get_closest_marker(m) for m in COSTLY)]
         config.hook.pytest_deselected(items=costly)

@@ -142,9 +142,8 @@ def test_sweep_tables_count_significant_replications():
     assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(0.5)
 
 
-def dry_run(workdir, *args, rule="book"):
-    """Planned job counts and the inputs of one rule's job, from a dry run on the test config."""
-    result = run_snakemake(workdir, "-n", *args)
+def counts_and_inputs(result, rule="book"):
+    """Planned job counts and the inputs of one rule's job, from a dry run's output."""
     assert result.returncode == 0, result.stderr[-3000:]
     counts = {}
     for line in result.stdout.split("Job stats:")[-1].splitlines():
@@ -157,14 +156,14 @@ def dry_run(workdir, *args, rule="book"):
 
 
 @pytest.mark.dryrun
-def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
+def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(dry_run):
     from icub_workflow.book.pages import robustness
 
-    workdir = scratch_workflow(tmp_path)
     config = load_test_config()
     values, _ = robustness({}, config | {"robustness": False})
     points, networks = values["points"], values["networks"]
-    counts, book_inputs = dry_run(workdir, "--config", "robustness=True")
+    plan = dry_run("--config", "robustness=True")
+    counts, book_inputs = counts_and_inputs(plan)
     n = config["network"]["networks"]
     assert networks == points * n
     # a run's networks in one job: every run trains, the cue ablation, the sweep points, and the
@@ -205,7 +204,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(tmp_path):
     # the book's sentences about the sweep and its cost are the findings rule's; the cost from
     # the engine's own records: the benchmark file of every job that makes a sweep point's
     # files (not rule measures', which scores a point that is also a reading's replication)
-    jobs = planned(run_snakemake(workdir, "-n", "--config", "robustness=True").stdout)
+    jobs = planned(plan.stdout)
     findings_inputs = next(job for job in jobs if job["rule"] == "findings")["input"].split(", ")
     assert "data/sweep/summary.csv" in findings_inputs
     records = {name for name in findings_inputs if name.startswith("data/benchmarks/")}
@@ -228,8 +227,8 @@ def planned(dry_run_output: str) -> list[dict[str, str]]:
 
 
 @pytest.mark.dryrun
-def test_without_robustness_the_book_does_not_wait_for_the_sweep(tmp_path):
-    counts, book_inputs = dry_run(scratch_workflow(tmp_path))
+def test_without_robustness_the_book_does_not_wait_for_the_sweep(dry_run):
+    counts, book_inputs = counts_and_inputs(dry_run())
     assert counts["book"] == 1
     # nor for the robot grid (issue 47): the own networks (a job each) and the confirmation
     networks = load_test_config()["network"]["networks"]

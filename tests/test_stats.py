@@ -7,7 +7,7 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import REPO, load_config, run_snakemake, scratch_workflow
+from conftest import REPO, load_config
 from scipy import stats as sps
 
 from icub_workflow.runs import plan_runs
@@ -102,11 +102,8 @@ def test_mapping_a_is_the_first_half_of_the_networks(outputs):
 
 
 @pytest.mark.dryrun
-def test_twelve_training_jobs_in_the_default_dag(tmp_path):
-    workdir = scratch_workflow(tmp_path)
-    result = run_snakemake(
-        workdir, "-n", "--quiet", "rules", config=REPO / "config" / "config.yaml"
-    )
+def test_twelve_training_jobs_in_the_default_dag(dry_run):
+    result = dry_run("--quiet", "rules", config=REPO / "config" / "config.yaml")
     assert result.returncode == 0, result.stderr
     counts = {}
     for line in result.stdout.splitlines():
