@@ -268,13 +268,6 @@ def confirmation_csv(
     return pd.DataFrame(rows)[[*variant, *COLUMNS, *DETAIL_COLUMNS]]  # as the table writes it
 
 
-def test_the_fixtures_counts_add_up_to_each_rows():
-    table = confirmation_csv(explore=(30, 0.45, 0.78))
-    for _, row in table.iterrows():
-        assert sum(row[f"{c}_held"] for c in CELLS) == row["held"]
-        assert sum(row[f"{c}_trials"] for c in CELLS) == row["trials"]
-
-
 def page(table: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
     from icub_workflow.book import pages
 

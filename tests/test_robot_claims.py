@@ -194,43 +194,6 @@ def test_the_made_up_counts_are_the_ones_variant_effects_writes():
         assert real["success"]["tests"][term]["estimate"] == pytest.approx(made_up["estimate"])
 
 
-@pytest.mark.heavy
-def test_the_made_up_counts_are_consistent():
-    """Each level's counts are its two cells', each cell's its two objects' (one per mapping),
-    and the tests' numbers are the counts'."""
-    for name, m in effects()["v"].items():
-        counted = "held" if name == "success" else "touched"
-        assert m["distinct_trials"] == sum(o["trials"] for o in m["objects"].values()) == 48
-        for cell, c in m["cells"].items():
-            mine = [o for o in m["objects"].values() if f"{o['congruency']}_{o['size']}" == cell]
-            assert len(mine) == 2 and c["trials"] == 12
-            assert c[counted] == sum(o[counted] for o in mine)
-        for factor, levels in LEVELS.items():
-            for level in levels:
-                cells = [c for k, c in m["cells"].items() if level in k.split("_")]
-                assert m[factor][level]["trials"] == sum(c["trials"] for c in cells) == 24
-                if name == "success":
-                    held = sum(c["held"] for c in cells)
-                    assert m[factor][level]["mean"] == pytest.approx(held / 24)
-                else:
-                    assert m[factor][level]["n"] == sum(c["touched"] for c in cells)
-    success = effects()["v"]["success"]
-    assert [success["size"][s]["mean"] * 24 for s in ("large", "small")] == [19, 15]
-    assert success["tests"]["congruency"]["estimate"] == pytest.approx(14 / 24 - 20 / 24)
-    assert success["tests"]["size"]["table"] == [[19, 5], [15, 9]]
-    grips = {g: [o["held"] for o in success["objects"].values() if o["target_grip"] == g]
-             for g in ("power", "precision")}  # fmt: skip
-    assert [len(held) for held in grips.values()] == [4, 4]
-    assert success["tests"]["congruency:size"]["estimate"] == pytest.approx(
-        2 * (sum(grips["power"]) - sum(grips["precision"])) / 24
-    )
-    # every test with a method in the one family, Holm over its four
-    tests = [t for m in effects()["v"].values() for t in m["tests"].values()]
-    assert sorted(t["p_holm"] for t in tests if t["method"] != "none") == pytest.approx(
-        [0.004, 0.03, 0.04, fisher_exact([[19, 5], [15, 9]])[1]]
-    )
-
-
 def verdict(effs: dict, name: str) -> str:
     """The best variant's verdict ``name`` (``pages._best_effects``), a claim resting on the
     values stored beside it."""

@@ -133,7 +133,10 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         # rules between keys (src/icub_workflow/config_checks.py), checked when the config is read
         (lambda c: c["network"].update(phase1_iterations=1300), ["phase1_iterations", "1300"]),
         (lambda c: c["vision"].update(window=300), ["vision.window", "300", "320x240"]),
-        (lambda c: c["initial_posture_deg"].__setitem__(3, 150), ["initial_posture_deg[3]", "150"]),
+        (
+            lambda c: c["initial_posture_deg"].__setitem__(3, 150),
+            ["initial_posture_deg[3]", "150", "elbow", "6..106", "Fix"],
+        ),
         (
             lambda c: c["figures"].update(filmstrip=[["big_ball", "power", 7]]),
             ["figures.filmstrip[0]", "7", "0..4"],
