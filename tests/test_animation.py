@@ -111,9 +111,9 @@ def test_filming_a_trial_does_not_change_it(robot):
 def test_the_films_want_two_networks_one_of_each_mapping():
     settings = {"networks": 4, "categorisation_cue": "first_step", "target": "commands"}
     with pytest.raises(ValueError, match="two networks"):
-        filmed_networks(None, settings, [0], ["w0.npz"], ["t0.csv"])
+        filmed_networks(None, settings, [0], [None], ["t0.csv"])
     with pytest.raises(ValueError, match="one of each is needed"):  # 0 and 1 both learn A
-        filmed_networks(None, settings, [0, 1], ["w0.npz", "w1.npz"], ["t0.csv", "t1.csv"])
+        filmed_networks(None, settings, [0, 1], [None, None], ["t0.csv", "t1.csv"])
 
 
 def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run(tmp_path):
@@ -122,8 +122,8 @@ def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run(t
     12 and 13 are both A; the exploration's 0 and 6 are not networks of this run."""
     settings = {"networks": 12, "first_network": 12}
     settings |= {"categorisation_cue": "all_steps", "target": "commands"}
-    files = [str(tmp_path / f"w{n}.npz") for n in (12, 18)], ["t12.csv", "t18.csv"]
-    with pytest.raises(FileNotFoundError, match="w12.npz"):
+    files = [None, None], [str(tmp_path / f"t{n}.csv") for n in (12, 18)]
+    with pytest.raises(FileNotFoundError, match="t12.csv"):
         filmed_networks(None, settings, [12, 18], *files)
     with pytest.raises(ValueError, match="one of each is needed"):
         filmed_networks(None, settings, [12, 13], *files)

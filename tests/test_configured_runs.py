@@ -73,7 +73,7 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
     )
     jobs = planned(run_snakemake(built, "-n", config=path))
     assert jobs == {
-        "run_train": 1,  # the run's networks in one job
+        "train": 1,  # the run's networks in one job (its part `all`)
         "evaluate": 1,  # the rules of every run
         "stats": 1,
         "figure5": 1,
@@ -94,7 +94,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("run_train") == jobs.pop("run_robot_test") == 1
+    assert jobs.pop("train") == jobs.pop("run_robot_test") == 1
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
@@ -129,9 +129,9 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     # runs.RunPlan.phase1_run) and continue from it; the animated variant, listed now, is
     # filmed on its networks 0.. instead of the confirmation's fresh ones, so the film runs too
     assert jobs.pop("run_phase1") == 1
-    assert jobs.pop("run_train") == 2 and jobs.pop("run_robot_test") == 3
+    assert jobs.pop("train") == 2 and jobs.pop("run_robot_test") == 3
     assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
-    assert "data/runs/robot_commands_h10_it1200_all_steps/train/net00/weights.npz" in result.stdout
+    assert "data/runs/robot_commands_h10_it1200_all_steps/train/all/weights.npz" in result.stdout
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
@@ -155,9 +155,9 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("run_train") == 1 and jobs.pop("run_robot_test") == 1
+    assert jobs.pop("train") == 1 and jobs.pop("run_robot_test") == 1
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
-    assert f"data/runs/{run}/train/net00/weights.npz" in result.stdout
+    assert f"data/runs/{run}/train/all/weights.npz" in result.stdout
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
@@ -206,6 +206,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     import pandas as pd
 
     from icub_affordance.train import load_materials
+    from icub_workflow.parts import load_weights
     from icub_workflow.runs import plan_runs
     from icub_workflow.steps import train_networks
 
@@ -217,14 +218,13 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     # the plan: the run's networks, from the main run's demonstrations and maps
     plan = run_snakemake(scratch_workflow(tmp_path / "w"), "-n").stdout
     jobs = [job for job in re.split(r"^(?=rule \w+:$)", plan, flags=re.M) if f"runs/{run}/" in job]
-    trainings = [job for job in jobs if "rule confirmation_train:" in job]  # one job
+    trainings = [job for job in jobs if "rule train:" in job]  # one job, its part `all`
     assert len(trainings) == 1
     for job in trainings:
         inputs = re.search(r"input: (.*)", job)[1].split(", ")
         assert "data/demos/demos.npz" in inputs and "data/soms/soms.npz" in inputs, job
     assert f"data/runs/{run}/demos" not in plan and f"data/runs/{run}/soms" not in plan
-    for net in nets:
-        assert f"data/runs/{run}/train/net{net}/weights.npz" in plan
+    assert f"data/runs/{run}/train/all/weights.npz" in plan
     assert sum("rule confirmation_robot_test:" in job for job in jobs) == 1
     assert f"data/runs/{explored}/" not in plan  # the exploration is not part of this build
     # the built run: fresh networks, unlike the exploration's at 0.., their trials, the table
@@ -235,9 +235,11 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     network = plan_runs(config | {"robustness": False}).config(explored)["network"]
     curves = [tmp_path / f"curve{k:02d}.csv" for k in range(count)]
     train_networks(materials, network, config["seed"], list(range(count)), curves, weights)
+    fresh = dict(load_weights([str(data / f"runs/{run}/train/all/weights.npz")]))
+    assert sorted(fresh) == [int(net) for net in nets]
     for net, path in zip(nets, weights, strict=True):
-        fresh, old = np.load(data / f"runs/{run}/train/net{net}/weights.npz"), np.load(path)
-        assert fresh["W1"].shape == old["W1"].shape and not np.allclose(fresh["W1"], old["W1"])
+        new, old = fresh[int(net)].W1, np.load(path)["W1"]
+        assert new.shape == old.shape and not np.allclose(new, old)
     trials = pd.read_csv(built / "data/embodied/confirmation_trials.csv")
     assert sorted(trials["network"].unique()) == list(range(first, first + count))
     mapping = trials.drop_duplicates("network").set_index("network")["mapping"]

@@ -183,14 +183,16 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
 @pytest.mark.parametrize("robustness", [False, True])
 def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
     """The plan routes every run's maps, networks, measures and robot test to one rule, and the
-    runs a rule serves are exactly those routed to it: a job per network for the config's own
-    networks, one job for another run's (the config's indices or the confirmations' fresh
-    ones), the measured runs with their seed's others; every rule a step names exists."""
+    runs a rule serves are exactly those routed to it: one rule trains every run but the
+    measured ones (a job per part: each of the config's own networks, another run's `all`);
+    on the robot a job per network for the config's own networks, one job for another run's
+    (the config's indices or the confirmations' fresh ones); the measured runs with their
+    seed's others; every rule a step names exists."""
     plan = plan_runs(config | {"robustness": robustness})
     rules = {
         "soms": {"soms", "measured"},
         "measures": {"measures", "measured"},
-        "train": {"train", "run_train", "confirmation_train", "measured"},
+        "train": {"train", "measured"},
         "robot_test": {"robot_test", "run_robot_test", "confirmation_robot_test"},
     }
     for step, names in rules.items():
@@ -201,22 +203,23 @@ def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
         assert sorted(served) == sorted(runs)  # each run once
     measured = {run for group in plan.measured_groups.values() for run in group}
     assert {r for r in plan.runs if plan.rule_for(r, "train") == "measured"} == measured
-    assert plan.served_by("train", "train") == [MAIN] == plan.served_by("robot_test", "robot_test")
-    fresh = plan.served_by("confirmation_train", "train")
-    assert (
-        fresh == plan.confirmation_runs == plan.served_by("confirmation_robot_test", "robot_test")
-    )
+    assert plan.served_by("train", "train") == [r for r in plan.runs if r not in measured]
+    assert plan.served_by("robot_test", "robot_test") == [MAIN]
+    assert plan.parts(MAIN) == [f"net{net}" for net in plan.networks(MAIN)]
+    assert all(plan.parts(r) == ["all"] for r in plan.runs if r not in measured | {MAIN})
+    fresh = plan.served_by("confirmation_robot_test", "robot_test")
+    assert fresh == plan.confirmation_runs
     assert plan.fresh_networks == plan.networks(fresh[0]) != plan.networks(MAIN)
     with pytest.raises(ValueError, match="no rule"):
         plan.rule_for(MAIN, "evaluate")
 
 
-def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
-    """A run of `runs:` with 6 networks: no run-wide rule names its files, so one job each; a
+def test_a_run_with_other_network_indices_trains_in_one_job_but_has_no_robot_rule(config):
+    """A run of `runs:` with 6 networks is trained like any other (one job, its part `all`); a
     robot run with such networks has no rule to test it, and the plan says so."""
     plan = plan_runs(config | {"runs": {"six": {"network": {"networks": 6}}}})
-    assert plan.rule_for("six", "train") == "train"
-    assert set(plan.served_by("train", "train")) == {MAIN, "six"}
+    assert plan.rule_for("six", "train") == "train" and plan.parts("six") == ["all"]
+    assert {MAIN, "six"} <= set(plan.served_by("train", "train"))
     robot = dataclasses.replace(plan.runs["six"], origin="robot")
     odd = dataclasses.replace(plan, runs=plan.runs | {"six": robot})
     with pytest.raises(ValueError, match="tests networks 00..05 on the robot"):
@@ -225,7 +228,9 @@ def test_a_run_with_other_network_indices_trains_a_job_per_network(config):
     same = plan_runs(config | {"robot": config["robot"] | {
         "confirmation": config["robot"]["confirmation"] | {"first_network": 0}}})  # fmt: skip
     assert same.fresh_networks == []
-    assert all(same.rule_for(run, "train") == "run_train" for run in same.confirmation_runs)
+    assert all(
+        same.rule_for(run, "robot_test") == "run_robot_test" for run in same.confirmation_runs
+    )
 
 
 #: The variants earlier default builds tested beside the config's own networks: 40 hidden,

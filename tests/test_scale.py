@@ -77,7 +77,7 @@ def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
-    assert counts["run_train"] == points  # a point's 12 networks in one job
+    assert counts["train"] == points  # a point's 12 networks in one job (its part `all`)
     assert counts["evaluate"] == points and counts["sweep_summary"] == 1
     # whole replications: each seed makes its own demonstrations and SOMs, once
     assert counts["demos"] == counts["soms"] == len(sweep["seeds"])
@@ -193,7 +193,9 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(dry_run):
     assert counts["confirmation_robot_test"] == 1  # the confirmation, as in the default build
     # the cue ablation, the sweep points (a point that is also a reading's replication is trained
     # with its seed's measured runs) and the robot variants; the readings are measured runs
-    assert counts["run_train"] == 1 + points - shared + variants - own
+    # (rule train: the config's own networks a job each, every other run's in one, the
+    # confirmation's too)
+    assert counts["train"] == n + 1 + points - shared + variants - own + 1
     # the main run, the cue ablation and the sweep points are tested in silico
     assert counts["evaluate"] - 2 == counts["stats"] - 2 == points
     assert counts["sweep_summary"] == counts["sweep_figure"] == 1

@@ -135,12 +135,12 @@ def test_the_test_config_on_slurm_is_the_local_build_and_survives_a_failed_job(
     rules = {re.sub(r"_wildcards_.*", "", jobs[i][1]) for i in submitted}
     assert {"rule_train", "rule_soms", "rule_manifest", "rule_book", "rule_findings"} <= rules
 
-    # the replication group: the run trained by run_train (the cue ablation; the test config, like
-    # the default, explores no robot variant) went as one job with its evaluation and statistics;
-    # no run_train job went alone
+    # the replication group: a run trained in one job (part `all`: the cue ablation; the test
+    # config, like the default, explores no robot variant) went as one job with its evaluation
+    # and statistics; the confirmation's training, which only the robot test reads, alone
     kinds = [Path(p).parent.name for p in submitted.values()]
-    trained = sorted(k for k in kinds if "run_train" in k)
-    assert trained == ["group_replication_evaluate_run_train_stats"], kinds
+    trained = sorted(k for k in kinds if k.startswith("group_") and "train" in k)
+    assert trained == ["group_replication_evaluate_stats_train", "group_replication_train"], kinds
 
     # the book says where its build ran
     timeline = json.loads((work / "book/_data/timeline.json").read_text())

@@ -102,7 +102,7 @@ def test_mapping_a_is_the_first_half_of_the_networks(outputs):
 
 
 @pytest.mark.dryrun
-def test_twelve_training_jobs_in_the_default_dag(dry_run):
+def test_a_training_job_per_own_network_and_per_other_run_in_the_default_dag(dry_run):
     result = dry_run("--quiet", "rules", config=REPO / "config" / "config.yaml")
     assert result.returncode == 0, result.stderr
     counts = {}
@@ -110,11 +110,10 @@ def test_twelve_training_jobs_in_the_default_dag(dry_run):
         parts = line.split()
         if len(parts) == 2 and parts[1].isdigit():
             counts[parts[0]] = int(parts[1])
-    # a job per network: the config's own 12; a confirmation's fresh networks in one job
-    # (confirmation_train), every other run's too (run_train, measured_seed<n>)
+    # a job per network: the config's own 12; the cue ablation's networks in one job, each
+    # confirmation's fresh ones too (their part `all`); the measured runs' in measured_seed<n>
     confirmation = load_config()["robot"]["confirmation"]
-    assert counts["train"] == 12
-    assert counts["confirmation_train"] == len(confirmation["variants"])
+    assert counts["train"] == 12 + 1 + len(confirmation["variants"])
     # a job per run that makes its own demonstrations (its four objects in it)
     plan = plan_runs(load_config())
     made = [r for r in plan.runs if plan.makes(r, "demos") and plan.runs[r].origin != "sweep"]

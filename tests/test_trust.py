@@ -77,9 +77,8 @@ def test_a_training_hyperparameter_reruns_training_and_after_but_not_the_data(bu
     jobs = planned_jobs(plan.stdout)
     config = load_test_config()
     confirmation = config["robot"]["confirmation"]
-    # a job per network of the main run; the confirmation's fresh ones in one job
-    assert jobs.get("train") == config["network"]["networks"]
-    assert jobs.get("confirmation_train") == len(confirmation["variants"])
+    # a job per network of the main run; the cue ablation's and each confirmation's in one
+    assert jobs.get("train") == config["network"]["networks"] + 1 + len(confirmation["variants"])
     for rule in ("evaluate", "stats", "figure5"):  # the main run and the cue ablation
         assert jobs.get(rule) == 2, (rule, jobs)
     for rule in ("figure4", "book"):
@@ -346,7 +345,7 @@ def test_a_nested_command_line_override_means_what_the_config_file_would(tmp_pat
     for entry in ("network={networks: 6}", "runs={x: {network: {learning_rate: 0.0375}}}"):
         result = run_snakemake(workdir, "-n", "-c1", "--config", entry)
         assert result.returncode == 0, (entry, result.stderr[-2000:])
-    assert "run_train" in planned_jobs(result.stdout)
+    assert "data/runs/x/train/all/weights.npz" in result.stdout  # its networks in one job
     result = run_snakemake(workdir, "-n", "-c1", "--config", "network={phase1_iterations: 1300}")
     message = result.stdout + result.stderr
     assert result.returncode != 0 and "network.phase1_iterations: 1300" in message, message

@@ -24,7 +24,7 @@ import numpy as np
 from .body import Robot
 from .demos import DemoConfig
 from .evaluate import TrialSet, describe_trial
-from .io import atomic_path, load_npz
+from .io import atomic_path
 from .jordan import Weights
 from .robot_test import Outcome, network_policy, outcome_columns, run_trial
 from .spec import TASKS
@@ -81,7 +81,7 @@ def filmed_networks(
     m: Materials,
     settings: Mapping[str, object],
     nets: list[int],
-    weights_files: list[str],
+    weights: list[Weights],
     trials_files: list[str],
 ) -> list[FilmedNetwork]:
     """The two networks to film, one of each mapping, from their weights and the robot test's
@@ -89,10 +89,10 @@ def filmed_networks(
     place in the run, as in training: a confirmation's fresh networks start at its
     ``first_network``. Raises where they are not two networks of the run of different mappings,
     or a trials file is not as long as the test (stale)."""
-    if not len(nets) == len(weights_files) == len(trials_files) == 2:
+    if not len(nets) == len(weights) == len(trials_files) == 2:
         raise ValueError(
             f"two networks (one of each mapping) with their weights and trials, not {nets}, "
-            f"{len(weights_files)} weights and {len(trials_files)} trials files"
+            f"{len(weights)} weights and {len(trials_files)} trials files"
         )
     first, count = int(settings.get("first_network", 0)), int(settings["networks"])
     if not all(first <= net < first + count for net in nets):
@@ -101,21 +101,19 @@ def filmed_networks(
     if sorted(mappings) != ["A", "B"]:
         raise ValueError(f"networks {nets} learned mappings {mappings}: one of each is needed")
     films = []
-    for net, mapping, weights_path, trials_path in zip(
-        nets, mappings, weights_files, trials_files, strict=True
+    for net, mapping, net_weights, trials_path in zip(
+        nets, mappings, weights, trials_files, strict=True
     ):
-        stored = load_npz(weights_path, required=("W1", "b1", "W2", "b2"))
-        weights = Weights(**{k: stored[k] for k in ("W1", "b1", "W2", "b2")})
-        setup = TrialSet.of(m, mapping, settings["categorisation_cue"], settings["target"])
         with open(trials_path, newline="") as f:
             recorded = list(csv.DictReader(f))
+        setup = TrialSet.of(m, mapping, settings["categorisation_cue"], settings["target"])
         if len(recorded) != len(setup.trials):
             raise ValueError(
                 f"{trials_path} has {len(recorded)} trials, the test {len(setup.trials)}: "
                 "stale; rerun the robot test (rule robot_test, run_robot_test or "
                 "confirmation_robot_test)"
             )
-        films.append(FilmedNetwork(net, mapping, weights, setup, recorded))
+        films.append(FilmedNetwork(net, mapping, net_weights, setup, recorded))
     return films
 
 

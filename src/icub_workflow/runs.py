@@ -22,6 +22,7 @@ from icub_affordance.spec import AFTER_PHASE1
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.config_checks import ConfigError
 from icub_workflow.configs import merged
+from icub_workflow.parts import part_names
 
 #: The config's own run: its name in the tables (column ``run``).
 MAIN = "main"
@@ -127,6 +128,13 @@ class RunPlan:
         """Does this run make its own ``stage`` (rather than read an earlier run's)?"""
         return self.stage_run(run, stage) == run
 
+    def parts(self, run: str) -> list[str]:
+        """A run's trained networks as files (icub_workflow.parts): one part per network for
+        the config's own run (a job each) and for a measured run (its seed's job writes each
+        network's files), else the one part ``all`` (rule train, one job)."""
+        measured = self.runs[run].origin in ("reading", "size_dose")
+        return part_names(self.networks(run), self.jobs_per_network(run) or measured)
+
     def jobs_per_network(self, run: str) -> bool:
         """Is each network a job of its own (trained, and tested on the robot)? For the config's
         own run, whose networks every later stage waits on: in parallel at the start. Any other
@@ -150,18 +158,16 @@ class RunPlan:
 
         - A reading's or the size study's run (``measured_groups``) is trained and scored on the
           measures with its seed's others in one job, its own maps too: ``measured``.
-        - ``train``: a job per network for the config's own run and for a run whose network
-          indices no run-wide rule names; ``run_train``, one job, for the config's indices;
-          ``confirmation_train`` for the confirmations' fresh ones.
-        - ``robot_test`` likewise (``robot_test``, ``run_robot_test``,
-          ``confirmation_robot_test``); a robot run with yet another set of indices is refused.
+        - ``train``: rule ``train`` for every other run, one job per part (``parts``).
+        - ``robot_test``: a job per network for the config's own run and for a run whose
+          network indices no run-wide rule names; ``run_robot_test``, one job, for the config's
+          indices; ``confirmation_robot_test`` for the confirmations' fresh ones; a robot run
+          with yet another set of indices is refused.
         """
         measured = self.runs[run].origin in ("reading", "size_dose")
-        if step in ("soms", "measures"):
+        if step in ("soms", "train", "measures"):
             return "measured" if measured else step
-        if step == "train" and measured:
-            return "measured"
-        if step not in ("train", "robot_test"):
+        if step != "robot_test":
             raise ValueError(f"no rule is named for the step {step!r}")
         nets = self.networks(run)
         if self.jobs_per_network(run) or not nets:
@@ -170,12 +176,10 @@ class RunPlan:
             return f"run_{step}"
         if nets == self.fresh_networks:
             return f"confirmation_{step}"
-        if step == "robot_test":
-            raise ValueError(
-                f"run {run!r} tests networks {nets[0]}..{nets[-1]} on the robot: only the config's "
-                f"own indices and the confirmations' ({self.fresh_networks}) have a rule"
-            )
-        return step
+        raise ValueError(
+            f"run {run!r} tests networks {nets[0]}..{nets[-1]} on the robot: only the config's "
+            f"own indices and the confirmations' ({self.fresh_networks}) have a rule"
+        )
 
     def served_by(self, rule: str, step: str) -> list[str]:
         """The runs whose ``step`` the rule ``rule`` makes (see ``rule_for``); for the robot

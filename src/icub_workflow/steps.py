@@ -14,12 +14,13 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from icub_affordance.io import atomic_path, load_npz, save_npz, write_columns, write_text
+from icub_affordance.io import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.jordan import Weights
 from icub_affordance.spec import TASKS
 from icub_affordance.train import Materials, Phase1, TrainConfig, mapping_of, network_seed
 from icub_affordance.train import train_networks as train_side_by_side
 from icub_affordance.train import train_phase1s as train_phase1s_side_by_side
+from icub_workflow.parts import load_weights, part_networks, write_part
 
 
 def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
@@ -46,14 +47,14 @@ def curve_columns(curve: Mapping[str, np.ndarray], objects: Sequence[str]) -> di
     }
 
 
-def _networks(network: Mapping, nets: Sequence[int] | None, files: Sequence[str]):
+def _networks(network: Mapping, nets: Sequence[int] | None):
     """A run's training settings, and each network asked for with its mapping: (net, mapping)."""
     settings = dict(network)
     n_networks = settings.pop("networks")
     # a confirmation's fresh networks start at this index (robot.confirmation); others at 0
     first = settings.pop("first_network", 0)
     nets = list(range(first, first + n_networks)) if nets is None else list(nets)
-    if len(files) != len(nets) or not first <= min(nets) <= max(nets) < first + n_networks:
+    if not first <= min(nets) <= max(nets) < first + n_networks:
         raise ValueError(
             f"networks {nets} asked for, but the run's are {first}..{first + n_networks - 1}"
         )
@@ -61,12 +62,18 @@ def _networks(network: Mapping, nets: Sequence[int] | None, files: Sequence[str]
     return TrainConfig(**settings), [(net, mapping_of(net - first, n_networks)) for net in nets]
 
 
+def _check_files(nets: Sequence, files: Sequence[str]) -> None:
+    if len(files) != len(nets):
+        raise ValueError(f"{len(nets)} networks, but {len(files)} files to write them to")
+
+
 def train_phase1s(
     materials: Materials, network: Mapping, seed: int, phase1_files: Sequence[str]
 ) -> None:
     """Phase 1 of each of a run's networks, saved for the runs that continue from it: trained
     side by side, each the bits it has trained alone (``train.train_phase1s``)."""
-    config, nets = _networks(network, None, phase1_files)
+    config, nets = _networks(network, None)
+    _check_files(nets, phase1_files)
     phase1s = train_phase1s_side_by_side(
         materials,
         config,
@@ -75,6 +82,42 @@ def train_phase1s(
     )
     for phase1, path in zip(phase1s, phase1_files, strict=True):
         phase1.save(path)
+
+
+def _trained(
+    materials: Materials,
+    network: Mapping,
+    seed: int,
+    nets: Sequence[int] | None,
+    phase1_files: Sequence[str],
+) -> tuple[list[int], list[tuple[Weights, dict[str, list]]]]:
+    """Train a run's networks ``nets`` (all of them when None), each from its own seed or
+    continued from its saved phase 1: each one's index, and its weights and curve's columns,
+    checked finite."""
+    config, nets = _networks(network, nets)
+    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else None
+    if starts is not None and len(starts) != len(nets):
+        raise ValueError(f"{len(starts)} saved phase 1s for {len(nets)} networks")
+    # side by side in a vector's lanes, each network the bits it has trained alone
+    trained = train_side_by_side(
+        materials,
+        config,
+        [mapping for _, mapping in nets],
+        [network_seed(seed, net) for net, _ in nets],
+        starts,
+    )
+    done = []
+    for (net, mapping), (weights, curve) in zip(nets, trained, strict=True):
+        weights.check_finite(f"network {net:02d}")
+        if not np.all(np.isfinite(curve["rmse"])):
+            raise FloatingPointError(
+                f"network {net:02d}: its training error became NaN (the outputs diverged). "
+                "Lower config network.learning_rate or network.init_scale."
+            )
+        final = curve["rmse"][-500:].mean()
+        print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
+        done.append((weights, curve_columns(curve, materials.objects)))
+    return [net for net, _ in nets], done
 
 
 def train_networks(
@@ -89,33 +132,29 @@ def train_networks(
     """Train a run's networks ``nets`` (all of them when None) with its ``network`` settings
     (config key ``network``), each from its own seed, or continued from the phase 1 in
     ``phase1_files`` (one per network, in order; :func:`train_phase1s`); write each one's curve
-    and weights."""
-    config, nets = _networks(network, nets, curves)
-    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else None
-    if starts is not None and len(starts) != len(nets):
-        raise ValueError(f"{len(starts)} saved phase 1s for {len(nets)} networks")
-    # side by side in a vector's lanes, each network the bits it has trained alone
-    trained = train_side_by_side(
-        materials,
-        config,
-        [mapping for _, mapping in nets],
-        [network_seed(seed, net) for net, _ in nets],
-        starts,
-    )
-    for (net, mapping), curve_path, weights_path, (weights, curve) in zip(
+    and weights to its own files (a measured run's layout)."""
+    nets, trained = _trained(materials, network, seed, nets, phase1_files)
+    _check_files(nets, curves)
+    _check_files(nets, weights_files)
+    for net, curve_path, weights_path, result in zip(
         nets, curves, weights_files, trained, strict=True
     ):
-        weights.check_finite(f"network {net:02d}")
-        if not np.all(np.isfinite(curve["rmse"])):
-            raise FloatingPointError(
-                f"network {net:02d}: its training error became NaN (the outputs diverged). "
-                "Lower config network.learning_rate or network.init_scale."
-            )
-        # not pandas: a training job is short
-        write_columns(curve_path, curve_columns(curve, materials.objects))
-        save_npz(weights_path, **weights.as_dict())
-        final = curve["rmse"][-500:].mean()
-        print(f"network {net} (mapping {mapping}): final RMSE {final:.4f}")
+        write_part([net], [result], curve_path, weights_path)
+
+
+def train_part(
+    materials: Materials,
+    network: Mapping,
+    seed: int,
+    part: str,
+    curve_path: str,
+    weights_path: str,
+    phase1_files: Sequence[str] = (),
+) -> None:
+    """Train a run's part (icub_workflow.parts: one network, ``net03``, or ``all``) and write
+    its curve and weights."""
+    nets, trained = _trained(materials, network, seed, part_networks(part), phase1_files)
+    write_part(nets, trained, curve_path, weights_path)
 
 
 def measure_networks(
@@ -133,8 +172,7 @@ def measure_networks(
 
     n_networks = network["networks"]
     rows = []
-    for net, path in enumerate(weights_files):
-        weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+    for net, weights in load_weights(weights_files):
         mapping = mapping_of(net, n_networks)
         rows += measure_network(
             materials, weights, net, mapping, network["categorisation_cue"], network["target"]
@@ -166,8 +204,7 @@ def signature_tables(
     for rep in replications:
         materials = load_materials(rep["maps"], rep["soms"], rep["demos"], rep["grip_distance"])
         network = rep["network"]
-        for net, path in enumerate(rep["weights"]):
-            weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
+        for net, weights in load_weights(rep["weights"]):
             mapping = mapping_of(net, network["networks"])
             cue, target = network["categorisation_cue"], network["target"]
             trials = network_trials(

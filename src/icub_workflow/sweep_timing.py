@@ -159,7 +159,7 @@ def time_sweep(
             for path in line.split(", ")
             if not path.startswith(("data/runs/", "data/sweep/"))
         )
-        if others or not plan.get("run_train"):
+        if others or not plan.get("train"):
             raise RuntimeError(
                 f"{what}: the scratch run would run {plan}, not only the sweep's rules "
                 f"(also {others}); the sweep's inputs in {repo} may be incomplete."

@@ -121,22 +121,26 @@ def run_file(path):
     return lambda wildcards: PLAN.path(run_of(wildcards), path)
 
 
-def run_network_files(path):
-    """An input: `path` (with `{net}`) for every network of this run."""
+def weights_files(run, nets=None):
+    """A run's trained weights, part by part (icub_workflow.parts: one file per network of the
+    config's own run or a measured run, one file `all` for any other run): those holding the
+    networks `nets` (all, if None). Read with icub_workflow.parts.load_weights."""
+    parts = PLAN.parts(run)
+    if nets is not None and parts != ["all"]:
+        parts = [f"net{net}" for net in nets]
+    return [PLAN.path(run, f"train/{part}/weights.npz") for part in parts]
 
-    def files(wildcards):
-        run = run_of(wildcards)
-        return [PLAN.path(run, path.format(net=net)) for net in PLAN.networks(run)]
 
-    return files
+def run_weights(wildcards):
+    """An input: this run's trained weights, every part."""
+    return weights_files(run_of(wildcards))
 
 
 def robot_test_weights(wildcards):
     """The weights the robot test of a run drives with: the wildcard `net`'s (one network a job),
     or every network's of the run (one job)."""
-    run = run_of(wildcards)
-    nets = [wildcards.net] if "net" in wildcards.keys() else PLAN.networks(run)
-    return [PLAN.path(run, f"train/net{net}/weights.npz") for net in nets]
+    nets = [wildcards.net] if "net" in wildcards.keys() else None
+    return weights_files(run_of(wildcards), nets)
 
 
 def outputs(rule, run, **wildcards):
@@ -171,7 +175,7 @@ def run_files(run, tests=True):
         files += outputs("demos", run)
     if PLAN.makes(run, "soms"):
         files += outputs("soms", run)
-    files += outputs("train", run, net=PLAN.networks(run))
+    files += outputs("train", run, part=PLAN.parts(run))
     if tests and not PLAN.trained_for_robot(run):
         files += [f for rule in ("evaluate", "stats", "figure5") for f in outputs(rule, run)]
     return files
@@ -285,10 +289,7 @@ def signature_replications():
             **model_inputs({"folder": PLAN.folder(row["run"])}),
             "grip_distance": PLAN.config(row["run"])["grip_distance"],
             "network": settings(PLAN.config(row["run"])["network"]),
-            "weights": [
-                PLAN.path(row["run"], f"train/net{net}/weights.npz")
-                for net in PLAN.networks(row["run"])
-            ],
+            "weights": weights_files(row["run"]),
         }
         for row in rows
     ]

@@ -57,30 +57,39 @@ rule figure2_architecture:
         "../scripts/figure2_architecture.py"
 
 rule train:
-    """One Jordan network, its own seed; networks 0-5 learn mapping A, 6-11 mapping B. One job
-    per network for the config's own run (in parallel at the start) and for a run with its own
-    number of networks; every other run's networks in one job (runs.smk: run_train)."""
+    """A run's Jordan networks, each from its own seed; networks 0-5 learn mapping A, 6-11
+    mapping B. A job per part (icub_workflow.parts): one network of the config's own run
+    (`net03`: its twelve in parallel at the start), or every network of another run (`all`),
+    continued from a shared phase 1 where the run has one (runs.smk: run_phase1)."""
     input:
         unpack(model_inputs),
+        phase1=phase1_files,
         code=script_code("train"),
     output:
-        curve="data/{folder}train/net{net}/curve.csv",
-        weights="data/{folder}train/net{net}/weights.npz",
+        curve="data/{folder}train/{part}/curve.csv",
+        weights="data/{folder}train/{part}/weights.npz",
     params:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     wildcard_constraints:
         folder=served_by("train", "train"),
-    # before the cue ablation's training when both are ready: the robot test waits on these
-    # networks, and its jobs are the longest that follow (see workflow/rules/robot.smk)
-    priority: 1
+        part=r"net\d\d|all",
+    # before the other rules' jobs when both are ready: the robot tests wait on these networks,
+    # and theirs are the longest jobs that follow (see workflow/rules/robot.smk)
+    priority: 2
+    # on a cluster, another run's networks go as one job with its tests and measures (group
+    # `replication`, workflow/profiles/slurm); the config's own, a job each, go apart
+    group:
+        lambda wildcards: "replication" if wildcards.part == "all" else None
     resources:
+        # a run's networks side by side: the 768,000-iteration robot trainings take about 600 MB
+        mem_mb=lambda wildcards: 1000 if wildcards.part == "all" else 500,
         runtime=10,
     log:
-        "data/logs/{folder}train/net{net}.log",
+        "data/logs/{folder}train/{part}.log",
     benchmark:
-        "data/benchmarks/{folder}train/net{net}.tsv"
+        "data/benchmarks/{folder}train/{part}.tsv"
     script:
         "../scripts/train.py"
 
@@ -89,7 +98,7 @@ rule evaluate:
     """Test every network on both tasks, all objects and sequences, closed loop and forced."""
     input:
         unpack(model_inputs),
-        weights=run_network_files("train/net{net}/weights.npz"),
+        weights=run_weights,
         code=script_code("evaluate"),
     output:
         trials="data/{folder}eval/trials.csv",

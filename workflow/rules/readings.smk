@@ -11,7 +11,7 @@ rule measures:
     per-network contrasts, cell means and per-object means."""
     input:
         unpack(model_inputs),
-        weights=run_network_files("train/net{net}/weights.npz"),
+        weights=run_weights,
         code=script_code("measures"),
     output:
         trials="data/{folder}eval/measures.csv",

@@ -249,9 +249,7 @@ rule robot_animation:
     re-run trial is checked against the recorded one)."""
     input:
         unpack(lambda w: model_inputs({"folder": PLAN.folder(ANIMATED_RUN)})),
-        weights=[
-            PLAN.path(ANIMATED_RUN, f"train/net{net}/weights.npz") for net in ANIMATED_NETWORKS
-        ],
+        weights=weights_files(ANIMATED_RUN, ANIMATED_NETWORKS),
         trials=[
             PLAN.path(ANIMATED_RUN, f"embodied/net{net}/trials.csv") for net in ANIMATED_NETWORKS
         ],

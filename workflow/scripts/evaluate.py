@@ -4,9 +4,9 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.evaluate import evaluate_network
-from icub_affordance.io import atomic_path, load_npz, redirect_log, save_npz
-from icub_affordance.jordan import Weights
+from icub_affordance.io import atomic_path, redirect_log, save_npz
 from icub_affordance.train import load_materials, mapping_of
+from icub_workflow.parts import load_weights
 
 with redirect_log(snakemake.log[0]):
     materials = load_materials(
@@ -19,9 +19,8 @@ with redirect_log(snakemake.log[0]):
     cue = snakemake.params.network["categorisation_cue"]
     target = snakemake.params.network["target"]
     rows, hidden = [], {}
-    for net, path in enumerate(snakemake.input.weights):
-        weights = Weights(**load_npz(path, required=("W1", "b1", "W2", "b2")))
-        weights.check_finite(f"network {net:02d} ({path})")
+    for net, weights in load_weights(list(snakemake.input.weights)):
+        weights.check_finite(f"network {net:02d}")
         net_rows, net_hidden = evaluate_network(
             materials, weights, net, mapping_of(net, n_networks), cue, target
         )

@@ -16,6 +16,7 @@ from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
 from icub_affordance.io import redirect_log
 from icub_affordance.train import load_materials
+from icub_workflow.parts import load_weights
 
 
 def as_list(paths):
@@ -29,11 +30,13 @@ with redirect_log(snakemake.log[0]):
         snakemake.input.demos,
         snakemake.params.grip_distance,
     )
+    nets = [int(n) for n in snakemake.params.networks]
+    trained = dict(load_weights(as_list(snakemake.input.weights)))
     films = filmed_networks(
         m,
         snakemake.params.network,
-        [int(n) for n in snakemake.params.networks],
-        as_list(snakemake.input.weights),
+        nets,
+        [trained[net] for net in nets],
         as_list(snakemake.input.trials),
     )
     config = DemoConfig(**snakemake.params.demos)

@@ -1,0 +1,52 @@
+"""A run's networks in parts (icub_workflow.parts): a part `all` holds each network's arrays and
+curve, bit for bit, as that network's own part would; the loader reads either."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from icub_affordance.jordan import Weights
+from icub_workflow.parts import load_weights, part_names, part_networks, write_part
+
+
+def made_up(net: int) -> tuple[Weights, dict[str, list]]:
+    rng = np.random.default_rng(net)
+    weights = Weights(
+        W1=rng.normal(size=(5, 7)), b1=rng.normal(size=5), W2=rng.normal(size=(3, 5)),
+        b2=rng.normal(size=3),
+    )  # fmt: skip
+    curve = {"iteration": [0, 10], "phase": [1, 2], "rmse": [rng.random(), rng.random() / 3]}
+    return weights, curve
+
+
+def test_a_part_all_holds_each_networks_own_bits(tmp_path):
+    nets = [12, 13, 14]
+    trained = [made_up(net) for net in nets]
+    (tmp_path / "all").mkdir()
+    write_part(nets, trained, str(tmp_path / "all/curve.csv"), str(tmp_path / "all/weights.npz"))
+    for net, result in zip(nets, trained, strict=True):
+        (tmp_path / f"net{net}").mkdir()
+        write_part([net], [result], *(str(tmp_path / f"net{net}/{f}") for f in
+                                      ("curve.csv", "weights.npz")))  # fmt: skip
+    packed = load_weights([str(tmp_path / "all/weights.npz")])
+    alone = load_weights([str(tmp_path / f"net{net}/weights.npz") for net in nets])
+    assert [net for net, _ in packed] == [net for net, _ in alone] == nets
+    for (_, a), (_, b) in zip(packed, alone, strict=True):
+        for name in ("W1", "b1", "W2", "b2"):
+            assert getattr(a, name).tobytes() == getattr(b, name).tobytes()
+    curves = pd.read_csv(tmp_path / "all/curve.csv")
+    assert list(curves.columns) == ["network", "iteration", "phase", "rmse"]
+    for net in nets:
+        own = pd.read_csv(tmp_path / f"net{net}/curve.csv")
+        assert own.equals(curves[curves["network"] == net].drop(columns="network").reset_index(
+            drop=True))  # fmt: skip
+
+
+def test_parts_are_the_networks_or_all():
+    assert part_names(["00", "01"], per_network=True) == ["net00", "net01"]
+    assert part_names(["00", "01"], per_network=False) == ["all"]
+    assert part_networks("net07") == [7] and part_networks("all") is None
+    with pytest.raises(ValueError, match="not a part"):
+        part_networks("net7")
