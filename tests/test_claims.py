@@ -10,6 +10,7 @@ from scipy import stats as sps
 from statsmodels.stats.power import TTestPower
 
 from icub_affordance import claims
+from icub_affordance.outcome import Outcome
 
 DECLARATION = {
     "seeds": [101, 102, 103],
@@ -111,9 +112,9 @@ def test_a_claim_on_fewer_replications_than_the_minimum_is_not_assessable():
         for test in claims.declared_tests(DECLARATION) for seed in (101, 102, 103)
     ]  # fmt: skip
     estimates = pd.DataFrame(rows)
-    for least, word in ((3, "paper"), (4, "not assessable")):
+    for least, code in ((3, Outcome.PAPER), (4, Outcome.NOT_ASSESSABLE)):
         table = claims.confirm(estimates, DECLARATION | {"min_replications": least})
-        assert (table["direction"] == word).all()
+        assert (table["direction"] == code).all()
     first = estimates.iloc[:3]["estimate"]
     made = claims.confirm(estimates, DECLARATION | {"min_replications": 3}).iloc[0]
     assert made["p"] == pytest.approx(sps.ttest_1samp(first, 0.0).pvalue)

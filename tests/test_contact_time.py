@@ -10,6 +10,7 @@ import pytest
 from scipy import stats as sps
 
 from icub_affordance.contact_time import FAMILY, cell_counts, contact_time_tests
+from icub_affordance.outcome import Outcome
 
 DECLARATION = {"effect": "congruency", "alpha": 0.05, "min_networks": 3}
 #: Under mapping A the big ball and the small cube are congruent, under B the other two.
@@ -65,15 +66,15 @@ def test_the_declared_test_is_the_networks_contrast_with_the_mapping_as_a_covari
     assert row["networks"] == 8 and row["networks_tested"] == networks == 7
     assert row["estimate"] == pytest.approx(estimate) and row["p"] == pytest.approx(p)
     assert row["df"] == networks - 2 and row["family"] == FAMILY
-    assert row["direction"] == "paper" and row["p_holm"] == pytest.approx(p)
+    assert row["direction"] == Outcome.PAPER and row["p_holm"] == pytest.approx(p)
     slower = contact_time_tests(made_up(shift=-0.1), DECLARATION).iloc[0]
-    assert slower["direction"] == "reversed"
+    assert slower["direction"] == Outcome.AGAINST
 
 
 def test_too_few_networks_touching_every_cell_is_not_assessable():
     row = contact_time_tests(made_up(untouched=6), DECLARATION).iloc[0]
     assert row["networks_tested"] == 2 and np.isnan(row["p"])
-    assert row["direction"] == "not assessable"
+    assert row["direction"] == Outcome.NOT_ASSESSABLE
 
 
 def test_the_cells_count_distinct_trials_and_those_that_touched():

@@ -180,16 +180,16 @@ def term(estimate: float, p: float, df: float = 10.0, se: float = 0.01, **extra)
 
 
 def test_a_verdict_word_reads_the_p_adjusted_within_its_family():
-    from icub_workflow.book import text
+    from icub_workflow.book import text, words
 
-    assert text.verdict_word(term(0.03, 0.01)) == "reproduced"
-    assert text.verdict_word(term(-0.03, 0.01)) == "reversed"
+    assert words.verdict_word(term(0.03, 0.01)) == "reproduced"
+    assert words.verdict_word(term(-0.03, 0.01)) == "reversed"
     # the raw p is significant, the adjusted one is not: not shown
-    assert text.verdict_word(term(-0.03, 0.01, p_holm=0.2)) == "not shown"
-    assert text.verdict_word(term(0.03, float("nan"))) == "not testable"
+    assert words.verdict_word(term(-0.03, 0.01, p_holm=0.2)) == "not shown"
+    assert words.verdict_word(term(0.03, float("nan"))) == "not testable"
     # the adjusted p crosses alpha and the word follows
-    assert text.verdict_word(term(0.03, 0.049)) == "reproduced"
-    assert text.verdict_word(term(0.03, 0.051)) == "not shown"
+    assert words.verdict_word(term(0.03, 0.049)) == "reproduced"
+    assert words.verdict_word(term(0.03, 0.051)) == "not shown"
     assert "within the family “a family” (4 tests) p = 0.010" in text.fmt_term(term(0.03, 0.01))
 
 
@@ -210,12 +210,12 @@ def test_a_tests_page_values_carry_its_verdict_and_what_it_rests_on():
 
 
 def test_a_difference_the_paper_does_not_predict_is_shown_or_not_without_a_direction():
-    from icub_workflow.book import text
+    from icub_workflow.book import text, words
 
-    assert text.shown_word(term(-0.03, 0.001)) == text.shown_word(term(0.03, 0.001)) == "shown"
-    assert text.shown_word(term(0.03, 0.001, p_holm=0.2)) == "not shown"
-    assert text.shown_word(term(0.03, float("nan"))) == "not testable"
-    values = text.test_values("d", "grip", term(0.06, 0.3), text.shown_word)
+    assert words.shown_word(term(-0.03, 0.001)) == words.shown_word(term(0.03, 0.001)) == "shown"
+    assert words.shown_word(term(0.03, 0.001, p_holm=0.2)) == "not shown"
+    assert words.shown_word(term(0.03, float("nan"))) == "not testable"
+    values = text.test_values("d", "grip", term(0.06, 0.3), words.shown_word)
     assert values["grip_verdict"].text == "not shown"
 
 
@@ -261,7 +261,7 @@ def test_the_main_runs_verdicts_keep_errors_apart():
 
 
 def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
-    from icub_workflow.book import pages, text
+    from icub_workflow.book import pages, text, words
 
     def said(t):
         words = {"reproduced": "larger first", "reversed": "larger every"}
@@ -269,7 +269,7 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
         assert found["claims"]["beyond"]["d_verdict"] == ["beyond.d_estimate", "beyond.d_p_holm"]
         return found["beyond"]["d_verdict"]
 
-    assert text.verdict_word(term(0.03, 0.001)) == "reproduced"
+    assert words.verdict_word(term(0.03, 0.001)) == "reproduced"
     assert said(term(0.03, 0.001)) == "larger first"
     # the verdict reads the readings' table's Holm p where given
     assert said(term(0.03, 0.001, p_holm=0.2)) == "not shown"

@@ -15,6 +15,7 @@ import pytest
 from conftest import REPO, load_config, run_snakemake, scratch_workflow
 from scipy import stats as sps
 
+from icub_affordance.outcome import Outcome
 from icub_affordance.readings import (
     BY_EXCESS,
     DIFFERENCE_COLUMNS,
@@ -102,10 +103,10 @@ def test_summary_tests_each_reading_and_adjusts_over_the_family():
     assert [many["p_holm"], one["p_holm"]] == pytest.approx(holm([many["p"], 0.03]))
     assert np.isnan(null["p_holm"])
     # verdicts on the adjusted p: 0.03 alone would pass, 0.06 after Holm does not
-    assert one["p_holm"] == pytest.approx(0.06) and direction(one) == "none"
-    assert direction(null) == "paper"  # a control's verdict is on its raw p
-    assert direction(pd.Series({**one, "p_holm": 0.049})) == "paper"
-    assert direction(pd.Series({**one, "p_holm": 0.049, "diff": -0.02})) == "reversed"
+    assert one["p_holm"] == pytest.approx(0.06) and direction(one) == Outcome.NONE
+    assert direction(null) == Outcome.PAPER  # a control's verdict is on its raw p
+    assert direction(pd.Series({**one, "p_holm": 0.049})) == Outcome.PAPER
+    assert direction(pd.Series({**one, "p_holm": 0.049, "diff": -0.02})) == Outcome.AGAINST
 
 
 # -- synthetic runs: networks whose per-network effects are known -----------------------------

@@ -12,6 +12,7 @@ from conftest import REPO
 from scipy import stats as sps
 
 from icub_affordance.jordan import Weights
+from icub_affordance.outcome import Outcome
 from icub_affordance.signatures import (
     FAMILY,
     IN_VIEW,
@@ -27,6 +28,7 @@ from icub_affordance.signatures import (
     visual_inputs,
 )
 from icub_affordance.train import synthetic_materials
+from icub_workflow.book.words import SIGNATURE_WORDS
 
 
 def declared() -> SignatureConfig:
@@ -189,7 +191,7 @@ def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
         chosen = SignatureConfig(**{**vars(config), "list": [config.list[0]],
                                     "min_replications": least})  # fmt: skip
         slope = summary(trials, chosen).query("family == @FAMILY").iloc[0]
-        assert slope["verdict"] == word
+        assert SIGNATURE_WORDS[slope["verdict"]] == word
         assert np.isfinite(slope["p"]) == (least == 5)
     assert "fewer than 6 replications" in slope["reason"]
 
@@ -222,7 +224,7 @@ def test_the_summary_holds_the_contract_and_holm_within_each_family():
 
     assert np.allclose(levels["p_adjusted"], multipletests(levels["p"], method="holm")[1])
     slope = table[table["family"] == FAMILY].iloc[0]
-    assert slope["verdict"] == "shown" and slope["estimate"] > 0
+    assert slope["verdict"] == Outcome.PAPER and slope["estimate"] > 0
 
 
 @pytest.mark.heavy
@@ -232,7 +234,7 @@ def test_no_signature_is_judged_while_the_in_view_effect_is_not_established():
     trials.loc[~trials["congruent"], "rmse"] -= 0.0125  # the in-view effect now reversed
     table = summary(trials, SignatureConfig(**{**vars(config), "list": [config.list[0]]}))
     slope = table[table["family"] == FAMILY].iloc[0]
-    assert slope["verdict"] == "not assessable" and "in-view" in slope["reason"]
+    assert slope["verdict"] == Outcome.NOT_ASSESSABLE and "in-view" in slope["reason"]
 
 
 @pytest.mark.parametrize(
@@ -254,4 +256,4 @@ def test_no_signature_is_judged_while_the_in_view_effect_is_not_established():
     ],
 )  # fmt: skip
 def test_each_verdict_word_follows_its_statistic_across_the_threshold(test, expected, row, word):
-    assert verdict(test, expected, row) == word
+    assert SIGNATURE_WORDS[verdict(test, expected, row)] == word  # the book's word for it

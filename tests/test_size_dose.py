@@ -934,14 +934,14 @@ def test_no_test_of_the_default_builds_study_is_reported_under_two_names():
 
 
 def test_the_size_verdict_words_follow_their_holm_tests():
-    from icub_workflow.book import text
+    from icub_workflow.book import text, words
 
     row = {"estimate": -0.03, "p": 0.001, "p_holm": 0.01}
-    assert text.verdict_word(row) == "reversed"
-    assert text.verdict_word(row | {"estimate": 0.03}) == "reproduced"
+    assert words.verdict_word(row) == "reversed"
+    assert words.verdict_word(row | {"estimate": 0.03}) == "reproduced"
     # a raw p under 0.05 that Holm lifts above it: not shown, whatever the raw interval
-    assert text.verdict_word(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
-    assert text.verdict_word(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
+    assert words.verdict_word(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
+    assert words.verdict_word(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
     assert text.size_part_word("size", row) == "reversed"
     assert text.size_part_word("grip_distance", row | {"estimate": 0.03}) == (
         "carries part of it, the paper's way"
@@ -962,7 +962,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     """The chapter's values from this build's study tables; a flipped estimate or a lifted p
     changes the words (the verdicts, and which part carries the size effect), and every verdict
     names the numbers it rests on."""
-    from icub_workflow.book import pages, text
+    from icub_workflow.book import pages, text, words
 
     folder = REPO / "data" / "size_dose"
     if not (folder / "declared.csv").exists():
@@ -1000,7 +1000,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     flipped, _ = chapter(declared=negate)
     turned = {"reversed": "reproduced", "reproduced": "reversed"}
     for test in ("grip_distance", "dose"):
-        ways = text.SIZE_PART_WORDS[test]
+        ways = words.SIZE_PART_WORDS[test]
         turned |= {ways["reproduced"]: ways["reversed"], ways["reversed"]: ways["reproduced"]}
     changed = 0
     for row in declared.to_dict("records"):

@@ -33,6 +33,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from .outcome import Outcome
+
 #: The family's name wherever its tests appear.
 FAMILY = "confirmatory: the paper's claims over fresh replications"
 
@@ -164,9 +166,6 @@ SUMMARY_COLUMNS: tuple[str, ...] = (
     "fewest_networks_per_cell",
 )
 
-#: A test's direction: the paper's or against it (Holm p below alpha), neither, or no test.
-DIRECTIONS = ("paper", "reversed", "none", "not assessable")
-
 
 def replication_estimates(
     rows: Sequence[Mapping[str, Any]],
@@ -232,14 +231,14 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
     return table[[*TEST_KEYS, *SUMMARY_COLUMNS]]
 
 
-def direction(estimate: float, p_holm: float, alpha: float) -> str:
-    """``DIRECTIONS``: a significant test in the paper's direction (positive: incongruent or
-    small higher) or against it; neither; no test."""
+def direction(estimate: float, p_holm: float, alpha: float) -> Outcome:
+    """A declared test's ``Outcome``: significant in the paper's direction (positive: incongruent
+    or small higher) or against it; neither; no test (``NOT_ASSESSABLE``)."""
     if not np.isfinite(p_holm):
-        return "not assessable"
+        return Outcome.NOT_ASSESSABLE
     if p_holm >= alpha:
-        return "none"
-    return "paper" if estimate > 0 else "reversed"
+        return Outcome.NONE
+    return Outcome.PAPER if estimate > 0 else Outcome.AGAINST
 
 
 #: The columns a pilot table must have (config ``confirmation.pilot``).

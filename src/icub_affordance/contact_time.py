@@ -55,7 +55,7 @@ def contact_time_tests(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> 
     """Per run (a confirmed variant's fresh networks) the declared test: the networks in all,
     those that touched in all four cells (the test's units), estimate, interval, t, df, p, Holm's
     p over the runs (``FAMILY``) and the direction (``claims.direction``, the confirmation's
-    reading: paper, reversed, none, not assessable); no test with fewer than
+    reading: an ``Outcome``); no test with fewer than
     ``min_networks`` networks, networks of one mapping only, or no spread."""
     effect, alpha = declaration["effect"], float(declaration["alpha"])
     least = max(int(declaration["min_networks"]), 3)

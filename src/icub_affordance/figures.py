@@ -15,6 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .io import atomic_path  # noqa: E402
+from .outcome import Outcome  # noqa: E402
 from .variants import NetworkVariant  # noqa: E402
 
 LABELS = {
@@ -304,7 +305,8 @@ def readings_effects(summary, replications, path) -> None:
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     readings = list(dict.fromkeys(summary["reading"]))
     effects = ("congruency", "size")
-    colour = {"paper": "C2", "reversed": "C3", "none": "0.5", "constant": "0.5"}
+    colour = {Outcome.PAPER: "C2", Outcome.AGAINST: "C3", Outcome.NONE: "0.5",
+              Outcome.CONSTANT: "0.5"}  # fmt: skip
     fig, axes = plt.subplots(
         len(measures), 2, figsize=(10, 1.0 + 0.55 * len(readings) * len(measures)), squeeze=False
     )
@@ -643,16 +645,18 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     save(fig, path)
 
 
-#: The forest plot's colour for each direction of a declared test (``claims.DIRECTIONS``).
-DIRECTION_COLOURS = {"paper": "#1b7837", "reversed": "#b2182b", "none": "#636363",
-                     "not assessable": "#bdbdbd"}  # fmt: skip
+#: The forest plot's colour for each direction of a declared test (``claims.direction``), in the
+#: legend's order.
+DIRECTION_COLOURS = {Outcome.PAPER: "#1b7837", Outcome.AGAINST: "#b2182b",
+                     Outcome.NONE: "#636363", Outcome.NOT_ASSESSABLE: "#bdbdbd"}  # fmt: skip
 
 
-def claims_forest(summary, path) -> None:
+def claims_forest(summary, path, legend: dict) -> None:
     """The paper's two claims at a glance: each declared test's mean over the replications with
     its 95% interval, one panel per claim, a row per cue timing x test mode x measure; the
     paper's direction (positive: incongruent or small higher) shaded; the colour the test's
-    direction at Holm's p (confirmed, reversed, not shown, not assessable)."""
+    direction at Holm's p (``direction``: its ``Outcome``), named in the legend by ``legend``
+    (the book's words for each ``Outcome``)."""
     from matplotlib.patches import Patch
 
     effects = list(dict.fromkeys(summary["effect"]))
@@ -682,9 +686,7 @@ def claims_forest(summary, path) -> None:
         ax.set_title(titles.get(effect, effect), fontsize=10)
         ax.set_xlabel("difference in RMSE (paper's direction shaded)")
         ax.grid(axis="x", alpha=0.3)
-    words = {"paper": "confirmed", "reversed": "reversed", "none": "not shown",
-             "not assessable": "not assessable"}  # fmt: skip
-    handles = [Patch(color=c, label=words[d]) for d, c in DIRECTION_COLOURS.items()]
+    handles = [Patch(color=c, label=legend[d]) for d, c in DIRECTION_COLOURS.items()]
     fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     save(fig, path)

@@ -16,10 +16,10 @@ several, a t-test of the replications' estimates (df = replications - 1). The fa
 adjustment is every row of a table that is a hypothesis: every reading x measure x effect of the
 summary, every comparison x measure x effect of the differences; a null control's rows
 (``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
-out of the family (their ``p_holm`` is empty). A verdict ("paper", "reversed") needs the adjusted p
-below ``findings.ALPHA``; otherwise it is "none", which is not "no difference": only an equivalence
-test (TOST, with a margin declared in config) can say that. Each table names, per row, the family
-its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
+out of the family (their ``p_holm`` is empty). A verdict (``direction``) needs the adjusted p
+below ``findings.ALPHA``; otherwise it is ``NONE``, which is not "no difference": only an
+equivalence test (TOST, with a margin declared in config) can say that. Each table names, per
+row, the family its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
 
 A measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``: the correct-trial
 RMSE) is tested with ``stats.correct_trial_effects``, which keeps such a network; its differences
@@ -43,6 +43,7 @@ from .measures import (
     margin_measure,
     with_excess,
 )
+from .outcome import Outcome
 from .spec import MODES
 from .stats import (
     categorisation_trials,
@@ -420,23 +421,23 @@ def verdict_p(row) -> float:
     return float(row["p_holm"] if is_hypothesis(row["measure"]) else row["p"])
 
 
-def direction(row) -> str:
-    """A summary row's effect: "paper" or "reversed" when its (Holm-adjusted, ``verdict_p``) p
-    is below ALPHA, on the side of its difference; "none" otherwise; "constant" when the measure
-    did not vary at all (a difference of exactly 0 with a zero-width interval)."""
+def direction(row) -> Outcome:
+    """A summary row's effect: ``PAPER`` or ``AGAINST`` when its (Holm-adjusted, ``verdict_p``) p
+    is below ALPHA, on the side of its difference; ``NONE`` otherwise; ``CONSTANT`` when the
+    measure did not vary at all (a difference of exactly 0 with a zero-width interval)."""
     if row["diff"] == row["ci_low"] == row["ci_high"] == 0:
-        return "constant"
+        return Outcome.CONSTANT
     p = verdict_p(row)
     if not (p < ALPHA):
-        return "none"
-    return "paper" if row["diff"] > 0 else "reversed"
+        return Outcome.NONE
+    return Outcome.PAPER if row["diff"] > 0 else Outcome.AGAINST
 
 
 def difference_verdict(row) -> str:
     """A differences row's verdict: "identical" when there was nothing to test (``identical``:
     no spread at all), "a > b" or "a < b" (its effect larger or smaller in a than in b) when its
     p (Holm's; a null control's raw p) is below ALPHA, "equivalent" when the TOST within the
-    margin is (Holm's), else "not shown" (neither a difference nor its absence)."""
+    margin is (Holm's), else "none" (neither a difference nor its absence)."""
     if str(row.get("identical", False)) == "True":  # a bool, or the CSV's text
         return "identical"
     if not is_hypothesis(row["measure"]):
@@ -445,7 +446,7 @@ def difference_verdict(row) -> str:
         return "a > b" if row["diff"] > 0 else "a < b"
     if row["p_equivalence_holm"] < ALPHA:
         return "equivalent"
-    return "not shown"
+    return "none"
 
 
 def finite(values) -> bool:

@@ -25,6 +25,7 @@ import pandas as pd
 
 from .findings import ALPHA
 from .jordan import Weights, run_closed_loop
+from .outcome import Outcome
 from .replicated import assessable, over_replications
 from .spec import CATEGORISATION, OBJECTS
 from .stats import correct_trial_effects, equivalence, holm
@@ -34,7 +35,6 @@ from .train import N_VISUAL, Materials, context, target_grip
 IN_VIEW = 9
 #: The family of the signatures' verdict tests (one per chapter), and of the tests beside them.
 FAMILY, LEVELS_FAMILY, ERRORS_FAMILY = "signatures", "signatures: levels", "signatures: errors"
-VERDICTS = ("shown", "not shown", "opposite", "not assessable", "not testable here")
 #: Each signature this module has a condition for (config ``signatures.list``): the test its
 #: verdict comes from, the directions that test can expect, and whether it has levels (the
 #: steps the object is seen). The config's schema and checks read it from here.
@@ -277,29 +277,30 @@ def over_units(values: pd.DataFrame, column: str, least: int) -> dict[str, float
     return test
 
 
-def verdict(test: str, expected: str, row: Mapping[str, float], alpha: float = ALPHA) -> str:
-    """The verdict word of a signature's test (``VERDICTS``). A slope: shown if significant
-    (Holm) in the expected direction, opposite if significant against it. Equivalence: shown if
-    TOST is significant (Holm), opposite if the difference itself is (``p_difference_adjusted``),
-    else not shown. No test, or no data for one: not testable here. A signature describes the
-    shape of the congruency effect, so while the in-view effect is not established
-    (``in_view_established`` False) it is not assessable; so is a test on fewer replications
-    with an estimate than the declared minimum (``assessable`` False: ``replicated``)."""
+def verdict(test: str, expected: str, row: Mapping[str, float], alpha: float = ALPHA) -> Outcome:
+    """The ``Outcome`` of a signature's test. A slope: ``PAPER`` (the signature shown) if
+    significant (Holm) in the expected direction, ``AGAINST`` if significant against it.
+    Equivalence: ``PAPER`` if TOST is significant (Holm), ``AGAINST`` if the difference itself is
+    (``p_difference_adjusted``), else ``NONE``. No test, or no data for one: ``NOT_TESTED``. A
+    signature describes the shape of the congruency effect, so while the in-view effect is not
+    established (``in_view_established`` False) it is ``NOT_ASSESSABLE``; so is a test on fewer
+    replications with an estimate than the declared minimum (``assessable`` False:
+    ``replicated``)."""
     if test == "none" or not np.isfinite(row.get("estimate", np.nan)):
-        return "not testable here"
+        return Outcome.NOT_TESTED
     if not row.get("assessable", True) or not row.get("in_view_established", True):
-        return "not assessable"
+        return Outcome.NOT_ASSESSABLE
     p = row.get("p_adjusted", np.nan)
     if test == "slope":
         if not (np.isfinite(p) and p < alpha):
-            return "not shown"
+            return Outcome.NONE
         want = 1.0 if expected == "positive" else -1.0
-        return "shown" if np.sign(row["estimate"]) == want else "opposite"
+        return Outcome.PAPER if np.sign(row["estimate"]) == want else Outcome.AGAINST
     if test == "equivalence":
         if np.isfinite(p) and p < alpha:
-            return "shown"
+            return Outcome.PAPER
         p_diff = row.get("p_difference_adjusted", np.nan)
-        return "opposite" if np.isfinite(p_diff) and p_diff < alpha else "not shown"
+        return Outcome.AGAINST if np.isfinite(p_diff) and p_diff < alpha else Outcome.NONE
     raise ValueError(f"unknown signature test {test!r}")
 
 
@@ -424,13 +425,13 @@ def in_view_established(table: pd.DataFrame, alpha: float = ALPHA) -> bool:
 
 
 def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame:
-    """Holm's p within each family, and each verdict test's word."""
+    """Holm's p within each family, and each verdict test's ``Outcome`` ("" in the other rows)."""
     table = table.copy()
     table["p_adjusted"] = np.nan
     for _family, idx in table.groupby("family").groups.items():
         table.loc[idx, "p_adjusted"] = holm(table.loc[idx, "p"])
     established = in_view_established(table)
-    table["verdict"] = ""
+    table["verdict"] = pd.Series("", index=table.index, dtype=object)  # "" or an Outcome
     for i, row in table[table["family"] == FAMILY].iterrows():
         entry = config.entry(row["signature"])
         extra = {"in_view_established": established}
@@ -441,11 +442,11 @@ def _with_verdicts(table: pd.DataFrame, config: SignatureConfig) -> pd.DataFrame
                 & (table["level"] == row["level"])
             ]
             extra["p_difference_adjusted"] = float(twin["p_adjusted"].iloc[0])
-        word = verdict(entry["test"], entry["expected"], row.to_dict() | extra)
-        table.loc[i, "verdict"] = word
-        if word == "not testable here" and not row["reason"]:
+        code = verdict(entry["test"], entry["expected"], row.to_dict() | extra)
+        table.loc[i, "verdict"] = code
+        if code == Outcome.NOT_TESTED and not row["reason"]:
             table.loc[i, "reason"] = "too few replications with an estimate"
-        if word == "not assessable":
+        if code == Outcome.NOT_ASSESSABLE:
             table.loc[i, "reason"] = (
                 "the in-view congruency effect it describes is not established"
                 if row.get("assessable", True)

@@ -193,11 +193,13 @@ def signature_tables(
 ) -> None:
     """The human signatures' conditions on each replication's networks (``icub_affordance.
     signatures``): every noisy trial (``outputs["trials"]``), each signature's tests and verdict
-    (``summary``), and the errors apart (``errors``). A replication: its seed, its model inputs
-    (maps, soms, demos), grip_distance, network settings and weights files. A test needs
+    word (``summary``; the words ``icub_workflow.book.words``'), and the errors apart
+    (``errors``). A replication: its seed, its model inputs (maps, soms, demos), grip_distance,
+    network settings and weights files. A test needs
     ``min_replications`` replications with an estimate (config ``confirmation``)."""
     from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
     from icub_affordance.train import load_materials
+    from icub_workflow.book.words import signature_words
 
     config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []
@@ -216,7 +218,9 @@ def signature_tables(
         pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.6g")
     trials = pd.read_csv(outputs["trials"])  # as readers see it: a recomputation from it agrees
     for name, table in {
-        "summary": summary(trials, config),
+        "summary": (found := summary(trials, config)).assign(
+            verdict=signature_words(found["verdict"])
+        ),
         "errors": errors(trials, min_replications),
     }.items():
         with atomic_path(outputs[name]) as tmp:

@@ -16,6 +16,7 @@ from icub_affordance.claims import (
     replication_estimates,
 )
 from icub_affordance.io import redirect_log, write_tables
+from icub_workflow.book.words import direction_codes
 
 with redirect_log(snakemake.log[0]):
     declaration = dict(snakemake.params.declaration)
@@ -23,6 +24,7 @@ with redirect_log(snakemake.log[0]):
     analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
     estimates = replication_estimates(rows, analyses, declaration)
     summary = confirm(estimates, declaration)
+    summary["direction"] = direction_codes(summary["direction"])
     power = pilot_power(read_pilot(snakemake.input.pilot), declaration, len(snakemake.params.seeds))
     curves = [pd.read_csv(path) for path in snakemake.input.curves]
     trained = learning(curves, snakemake.params.seeds, snakemake.params.networks,

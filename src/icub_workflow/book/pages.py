@@ -28,7 +28,7 @@ from icub_affordance.stats import WITHIN
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.runs import MAIN
 
-from . import text
+from . import text, words
 from .scorecard import claims_values, scorecard, signature_result, signature_scale
 
 
@@ -57,7 +57,7 @@ def main_tests(anova: dict, curve: dict, demos: dict, cue: str) -> dict:
         for prefix, outcome, tests in sources:
             for effect in WITHIN:
                 name = f"{mode}_{prefix}{effect.replace('congruency:size', 'grip')}"
-                said = lambda t, o=outcome, e=effect: text.claim_verdict(t, o, e)  # noqa: E731
+                said = lambda t, o=outcome, e=effect: words.claim_verdict(t, o, e)  # noqa: E731
                 out |= text.test_values("tests", name, tests[effect], said)
         for name, term in anova["simple"][mode].items():
             out |= text.test_values("tests", f"{mode}_{name}", term)  # the paper's direction
@@ -85,18 +85,19 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
     return family
 
 
-def _shown(table: pd.DataFrame, test) -> pd.DataFrame:
+def _shown(table: pd.DataFrame, test, said: Mapping) -> pd.DataFrame:
     """The readings' tests with what the page shows beside their numbers: the reading's name, the
-    verdict word ("not estimable": too few replications answered, never tested), why no Holm p."""
+    verdict word (``test``'s code in ``said``'s words; "not estimable": too few replications
+    answered, never tested), why no Holm p."""
     compared = "comparison" in table
-    words = table.apply(test, axis=1).map(lambda word: text.WORDS.get(word, word))
-    words = words.where(table["measure"].map(readings_science.is_hypothesis), "")
+    verdicts = table.apply(test, axis=1).map(lambda code: said.get(code, code))
+    verdicts = verdicts.where(table["measure"].map(readings_science.is_hypothesis), "")
     named = table[["comparison", "at"] if compared else ["cue", "goal_response"]]
     return table.assign(
         named=named.replace(text.CUE_LABELS).agg(" · ".join, axis=1),
         label=table["measure"].map(text.MEASURE_LABELS), holm=table.apply(_holm, axis=1),
         hypothesis=table["measure"].map(readings_science.is_hypothesis),
-        verdict=words.where(table["diff"].notna(), "not estimable"))  # fmt: skip
+        verdict=verdicts.where(table["diff"].notna(), "not estimable"))  # fmt: skip
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -123,12 +124,12 @@ def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, p
         "family": _family(summary), "family_differences": _family(diffs),
         "family_equivalence": _family(diffs, "family_equivalence", "p_equivalence_holm"),
     }  # fmt: skip
-    shown = _shown(summary, readings_science.direction)
-    compared = _shown(diffs, readings_science.difference_verdict)
+    shown = _shown(summary, readings_science.direction, words.READING_WORDS)
+    compared = _shown(diffs, readings_science.difference_verdict, words.DIFFERENCE_WORDS)
     after = {m for m, d in config["readings"]["margin_declared"].items() if d["results_before"]}
     late = (compared["verdict"] == "equivalent") & compared["measure"].map(
         lambda m: margin_measure(m) in after)  # fmt: skip
-    compared.loc[late, "verdict"] = text.AFTER_RESULTS
+    compared.loc[late, "verdict"] = words.AFTER_RESULTS
     values |= text.reading_claims(shown) | text.difference_claims(compared, "cue_timing", "cue")
     values |= text.difference_claims(compared, "goal_response", "goal")
     tost = diffs.apply(_holm, axis=1, column="p_equivalence_holm").where(
@@ -151,7 +152,7 @@ def _also_confirmatory(summary: pd.DataFrame, claims: pd.DataFrame, config: dict
         if row["goal_response"] != goal or key not in keyed.index:
             return ""
         test = keyed.loc[key]
-        return (f"confirmatory family: {text.CLAIM_WORDS[test['direction']]}, Holm p "
+        return (f"confirmatory family: {words.CLAIM_WORDS[test['direction']]}, Holm p "
                 f"{test['p_holm']:.2g} (the verdict the book reads)")  # fmt: skip
 
     return summary.apply(said, axis=1)
@@ -172,9 +173,9 @@ FAMILY_NONE = "none: one test at one seed, unadjusted; the readings replicate it
 def short_label(row: Mapping, leave_out: tuple[str, ...] = ()) -> str:
     """A variant in short words, e.g. ``all · cmd · h40 · 768k · anneal``."""
     v = NetworkVariant.from_row(row).row()
-    words = {k: SHORT[k].get(v[k], v[k]) for k in SHORT}
-    words |= {"hidden": f"h{int(v['hidden'])}", "iterations": f"{int(v['iterations']) / 1000:g}k"}
-    return " · ".join(words[k] for k in NetworkVariant.keys() if k not in leave_out)
+    short = {k: SHORT[k].get(v[k], v[k]) for k in SHORT}
+    short |= {"hidden": f"h{int(v['hidden'])}", "iterations": f"{int(v['iterations']) / 1000:g}k"}
+    return " · ".join(short[k] for k in NetworkVariant.keys() if k not in leave_out)
 
 
 def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
@@ -189,12 +190,12 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     effect that one cell carries (``carrying_cell``) is named as that cell, not as an effect."""
     test = effect["tests"][factor]
     if factor == INTERACTION:
-        word = text.shown_word(test) if test["method"] == "contrasts" else "not tested"
+        word = words.shown_word(test) if test["method"] == "contrasts" else "not tested"
     else:
         verdict = science.robot_effect_verdict(effect, measure, factor)
         if verdict is None or not verdict.significant:
-            return "not estimable" if verdict is None else "not shown"
-        word = "reproduced" if verdict.paper_direction else "reversed"
+            return words.robot_word(None if verdict is None else verdict.paper_direction, False)
+        word = words.robot_word(verdict.paper_direction, True)
     cell = carrying_cell(effect)
     if cell is None or word not in ("reproduced", "reversed", "shown"):
         return word
@@ -248,10 +249,10 @@ def _robot_values(emb: dict, own: dict) -> dict:
         ("beyond.emb_categorisation_success",),
     )
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
-        words = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
+        phrases = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
                  "not shown": "not shown to differ"}  # fmt: skip
         term = (err["contrasts"] or {}).get(effect) or {}
-        out |= text.test_values("beyond", f"emb_final_error_{effect}", term, words=words)
+        out |= text.test_values("beyond", f"emb_final_error_{effect}", term, words=phrases)
     return out
 
 
@@ -280,10 +281,10 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "@goal_response & replications == 1", local_dict=config["soms"])  # fmt: skip
     difference |= (row[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
     out |= {f"cue_difference_{k}": difference[k] for k in ("df", "t")}
-    words = {"reproduced": "larger with the cue at the first step only",
+    phrases = {"reproduced": "larger with the cue at the first step only",
              "reversed": "larger with the cue at every step",
              "not shown": "not shown to differ between the timings"}  # fmt: skip
-    out |= text.test_values("beyond", "cue_difference", difference, words=words)
+    out |= text.test_values("beyond", "cue_difference", difference, words=phrases)
     p, family = out["cue_difference_p_holm"], out["cue_difference_family"]
     out["cue_difference_p_words"] = (
         f"Holm p {p:.2g} within “{family}”" if family != FAMILY_NONE
@@ -432,14 +433,14 @@ def _confirmation(confirmation: pd.DataFrame) -> tuple[dict, pd.DataFrame]:
 
 def _contact_time(tests: pd.DataFrame) -> dict:
     """The declared contact-time test on the first confirmed variant's fresh networks: its
-    numbers and verdict (``text.CLAIM_WORDS``), a claim on its estimate and Holm p."""
+    numbers and verdict (``words.CLAIM_WORDS``), a claim on its estimate and Holm p."""
     if not len(tests):
         return {"contact_verdict": "not tested: no variant confirmed", "contact_said": ""}
     row = tests.iloc[0]
     out = {f"contact_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p_holm")}
     out |= {"contact_networks": int(row["networks"]),
             "contact_networks_tested": int(row["networks_tested"])}  # fmt: skip
-    word = text.CLAIM_WORDS[row["direction"]]
+    word = words.CLAIM_WORDS[row["direction"]]
     out["contact_verdict"] = text.Claim(word, ("robot_test.contact_estimate",
                                                "robot_test.contact_p_holm"))  # fmt: skip
     out["contact_said"] = (
@@ -475,7 +476,7 @@ def robot_test(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     for p in (pairs := stats["schedule_pairs"]):  # paired by network and object: McNemar
         p["same"] = short_label(p | {"learning_rate_schedule": p["a"]}, ("learning_rate_schedule",))
         below = "p < 0.05, unadjusted" if len(pairs) > 1 else "differ"  # several: no family
-        p["verdict"] = below if p["p"] < science.ALPHA else "not shown"
+        p["verdict"] = words.below_alpha(p["p"], below)
     out |= _robot_scope(config, variants, records) | _exploration(confirmation)
     out |= _animated(config, confirmation)
     rows = [_effect_rows(effects[v["run"]], v["variant"]) for _, v in variants.iterrows()]
@@ -511,7 +512,7 @@ def robustness(inputs: Mapping[str, str], config: dict,
                f"{len(summary)} setting(s)"}  # fmt: skip
     values |= {f"cost_{k}": v for k, v in replication_cost(sweep_jobs or {}).items()}
     directions = {  # each effect's mean over the replications, by its 95% interval
-        f"{e}_direction": [text.SWEEP_DIRECTIONS[science.interval_direction(
+        f"{e}_direction": [words.SWEEP_DIRECTIONS[science.interval_direction(
             r["replications"], *(r[f"{e}_{k}"] for k in ("effect", "ci_low", "ci_high")))]
             for _, r in summary.iterrows()] for e in ("congruency", "size")}  # fmt: skip
     return values, summary.assign(**directions)
@@ -547,10 +548,10 @@ def _declared_key(row) -> str:
 
 
 def _declared_values(values: dict, declared: pd.DataFrame) -> pd.Series:
-    """Each declared test's numbers and its verdict word (``text.SIZE_PART_WORDS``), and, per
+    """Each declared test's numbers and its verdict word (``words.SIZE_PART_WORDS``), and, per
     dose and cue timing, which of the two parts its tests show (``text.carrier``). Returns the
     verdict word of each row."""
-    words = []
+    said_words = []
     for _, row in declared.iterrows():
         key = _declared_key(row)
         term = {k: float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p", "p_holm")}
@@ -558,14 +559,14 @@ def _declared_values(values: dict, declared: pd.DataFrame) -> pd.Series:
         values[f"{key}_replications"] = int(row["replications"])
         word = text.size_part_word(row["test"], term)
         values[f"{key}_verdict"] = text.Claim(word, (f"size.{key}", f"size.{key}_p_holm"))
-        words.append(word)
+        said_words.append(word)
     for (dose, cue), rows in declared[declared["test"] != "dose"].groupby(["dose", "cue"],
                                                                           sort=False):  # fmt: skip
         by = {row["test"]: row for _, row in rows.iterrows()}
         if {"size", "grip_distance"} <= set(by):
             keys = [_declared_key(by[t]) for t in ("size", "grip_distance")]
             said = text.carrier(
-                *(text.verdict_word(dict(by[t])) for t in ("size", "grip_distance"))
+                *(words.verdict_word(dict(by[t])) for t in ("size", "grip_distance"))
             )
             values[f"carrier_{str(dose).replace('.', '')}_{cue}"] = text.Claim(
                 said, tuple(f"size.{k}{s}" for k in keys for s in ("", "_p_holm"))
@@ -581,7 +582,7 @@ def _declared_values(values: dict, declared: pd.DataFrame) -> pd.Series:
                 "; ".join(f"{SIZE_CUES[c]}: {v.text}" for c, v in claims.items()),
                 tuple(r for v in claims.values() for r in v.rests_on),
             )
-    return pd.Series(words, index=declared.index, dtype=object)
+    return pd.Series(said_words, index=declared.index, dtype=object)
 
 
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -634,7 +635,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         rests = (f"size.removed_{row['cue']}", f"size.removed_p_holm_{row['cue']}")
         values |= {f"removed_{row['cue']}": float(row["estimate"]),
                    f"removed_p_holm_{row['cue']}": float(row["p_holm"]),
-                   f"removed_verdict_{row['cue']}": text.Claim(text.verdict_word(dict(row)),
+                   f"removed_verdict_{row['cue']}": text.Claim(words.verdict_word(dict(row)),
                                                                rests)}  # fmt: skip
     ran = [cue for cue in SIZE_CUES if f"removed_{cue}" in values]
     values["removed_by_cue"] = text.Claim(
@@ -711,9 +712,8 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         text.listing([SIGNATURE_NAMES[n].lower() for n in verdicts.loc[
             verdicts["verdict"] == "shown", "signature"]], "none"),
         tuple(f"signatures.{n}_p_adjusted" for n in verdicts["signature"]))  # fmt: skip
-    values["counts"] = ", ".join(f"{counts[w]} {w}" for w in (
-        "shown", "not shown", "opposite", "not assessable", "not testable here")
-        if w in counts)  # fmt: skip
+    values["counts"] = ", ".join(f"{counts[w]} {w}" for w in words.SIGNATURE_WORDS.values()
+                                 if w in counts)  # fmt: skip
     return values, {"signatures": pd.DataFrame(rows)}
 
 

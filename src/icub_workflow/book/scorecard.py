@@ -11,7 +11,7 @@ import pandas as pd
 
 from icub_affordance import findings as science
 
-from . import text
+from . import text, words
 
 #: The paper's training RMSE after about 2,000 iterations and at the end (its Figure 4).
 PAPER_FINAL_RMSE = 0.05
@@ -61,7 +61,7 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.Da
     keyed = power.set_index(["cue", "mode", "measure", "effect"])
     for _, row in summary.iterrows():
         key = claim_key(row)
-        word = text.CLAIM_WORDS[row["direction"]]
+        word = words.CLAIM_WORDS[row["direction"]]
         values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p",
                                                          "p_holm")}  # fmt: skip
         values[f"{key}_estimable"] = int(row["estimable"])
@@ -94,10 +94,6 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.Da
     return values, pd.DataFrame(rows)
 
 
-#: A confirmatory test's direction and the exploration's verdict word that says the same.
-SAME_WORD = {"paper": "reproduced", "reversed": "reversed", "none": "not shown"}
-
-
 def sens_key(row) -> str:
     """A correct-trial test's name in the sensitivity's values."""
     return "sens_" + "_".join(str(row[k]) for k in ("cue", "mode", "effect"))
@@ -105,7 +101,7 @@ def sens_key(row) -> str:
 
 def sensitivity_values(sensitivity: pd.DataFrame) -> dict[str, object]:
     """The correct-trial effects over every replication (exploration): estimate, interval, Holm
-    p within its own family, and the verdict word (``text.verdict_word``)."""
+    p within its own family, and the verdict word (``words.verdict_word``)."""
     values: dict[str, object] = {}
     for _, row in sensitivity.iterrows():
         key = sens_key(row)
@@ -113,7 +109,7 @@ def sensitivity_values(sensitivity: pd.DataFrame) -> dict[str, object]:
                                                          "p_holm")}  # fmt: skip
         values[f"{key}_replications"] = int(row["replications_used"])
         values[f"{key}_verdict"] = text.Claim(
-            text.verdict_word(dict(row)), (f"index.{key}_estimate", f"index.{key}_p_holm")
+            words.verdict_word(dict(row)), (f"index.{key}_estimate", f"index.{key}_p_holm")
         )
     return values
 
@@ -144,7 +140,7 @@ def differing(summary: pd.DataFrame, values: dict) -> list[tuple[pd.Series, str]
     found = []
     for _, row in summary[summary["measure"] == "rmse_correct"].iterrows():
         said = values.get(f"{sens_key(row)}_verdict")
-        if said is not None and SAME_WORD.get(row["direction"]) != said.text:
+        if said is not None and words.SAME_WORD.get(row["direction"]) != said.text:
             found.append((row, said.text))
     return found
 
@@ -167,16 +163,18 @@ def by_condition(summary: pd.DataFrame) -> dict[str, text.Claim]:
     counted, not the tests pooled."""
     values: dict[str, text.Claim] = {}
     for (measure, effect), group in summary.groupby(["measure", "effect"], sort=False):
-        words = []
+        said_words = []
         for mode in _ordered(group, "mode", MODE_ORDER):
             rows = group[group["mode"] == mode].set_index("cue")
-            said = {cue: text.CLAIM_WORDS[rows.loc[cue, "direction"]]
+            said = {cue: words.CLAIM_WORDS[rows.loc[cue, "direction"]]
                     for cue in _ordered(rows.reset_index(), "cue", CUE_ORDER)}  # fmt: skip
             rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in rows.reset_index().iterrows())
             values[f"claims_{mode}_{measure}_{effect}"] = text.Claim(text.by_cue(said), rests)
-            words += said.values()
+            said_words += said.values()
         rests = tuple(f"index.{claim_key(r)}_p_holm" for _, r in group.iterrows())
-        values[f"claims_count_{measure}_{effect}"] = text.Claim(text.condition_count(words), rests)
+        values[f"claims_count_{measure}_{effect}"] = text.Claim(
+            text.condition_count(said_words), rests
+        )
     return values
 
 
@@ -299,7 +297,7 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
 def _contact(prefix: str, row, cells: pd.DataFrame | None) -> tuple[dict, str]:
     """The declared contact-time test's values and result cell, with the cells whose trials did
     not all touch named by their cell (the test leaves those networks out)."""
-    word = text.CLAIM_WORDS[row["direction"]]
+    word = words.CLAIM_WORDS[row["direction"]]
     values = {f"{prefix}_estimate": float(row["estimate"]),
               f"{prefix}_p_holm": float(row["p_holm"]),
               f"{prefix}_verdict": text.Claim(word, (f"index.{prefix}_estimate",

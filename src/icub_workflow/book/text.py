@@ -1,13 +1,15 @@
-"""The book's verdict words and the few phrases a test chooses; the pages hold the sentences.
-Each is a ``Claim`` on the entries it rests on, which the tests flip to see the words follow."""
+"""The few phrases a test chooses (its verdict words are ``words``'); the pages hold the
+sentences. Each is a ``Claim`` on the entries it rests on, which the tests flip to see the
+words follow."""
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from icub_affordance.findings import ALPHA
 from icub_affordance.measures import LABELS
+
+from .words import AFTER_RESULTS, CLAIM_WORDS, PART_DIRECTIONS, SIZE_PART_WORDS, verdict_word
 
 
 @dataclass(frozen=True)
@@ -33,35 +35,6 @@ def fmt_term(term: dict) -> str:
             f"{fmt_p(term['p'])}{family}")  # fmt: skip
 
 
-def verdict_word(term: dict, alpha: float = ALPHA) -> str:
-    """A test in the paper's direction (a positive estimate) is "reproduced", against it
-    "reversed", where its p adjusted within its family is below ``alpha``; else "not shown"
-    (which is not "no difference") or, with no p, "not testable"."""
-    p = term.get("p_holm", term["p"])
-    if not math.isfinite(p):
-        return "not testable"
-    if p >= alpha:
-        return "not shown"
-    return "reproduced" if term["estimate"] > 0 else "reversed"
-
-
-def shown_word(term: dict, alpha: float = ALPHA) -> str:
-    """A difference the paper does not predict: "shown" or "not shown"; its sign is beside it."""
-    word = verdict_word(term, alpha)
-    return "shown" if word in ("reproduced", "reversed") else word
-
-
-def claim_verdict(term: dict, outcome: str, effect: str) -> str:
-    """The paper's two effects, on its measure and on correct trials, are "reproduced" or not; it
-    claims nothing of errors ("shown", "shown, opposite") or the required grip ("shown")."""
-    word = verdict_word(term)
-    if effect == "congruency:size":
-        return shown_word(term)
-    if outcome == "errors":
-        return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
-    return word
-
-
 def test_values(page: str, prefix: str, term: dict, verdict=verdict_word, words=None) -> dict:
     """A test's numbers as the analysis wrote them (NaN: untested), family, statistics, and
     ``_verdict``: a ``Claim`` on its estimate and adjusted p, said in ``words`` where given."""
@@ -83,22 +56,12 @@ def listing(items, none: str) -> str:
 
 
 CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at every step"}
-#: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
-SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "includes 0",
-                    "single": "one replication"}  # fmt: skip
 
 
 # -- which reading reproduces the paper: phrases on the readings' tests (``pages._shown``) -----
 
 MEASURE_LABELS = LABELS  # declared with the measures (icub_affordance.measures)
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
-#: The words of ``readings.direction`` and ``readings.difference_verdict``, where they differ.
-#: An equivalence whose margin was set after its measure's results were read
-#: (config ``readings.margin_declared``): said so wherever it appears, never counted with the
-#: equivalences whose margin came first.
-AFTER_RESULTS = "equivalent, margin set after results"
-WORDS = {"none": "not shown", "constant": "no variation", "a > b": "larger", "a < b": "smaller",
-         "paper": "reproduced"}  # fmt: skip
 
 
 def stat_key(row, stat: str) -> str:
@@ -173,25 +136,10 @@ def trend_phrase(term) -> str:
     return ("away from" if word == "reversed" else "towards") + " the paper's direction"
 
 
-#: The size study's declared tests' verdict words, by test, for a verdict_word: the size part
-#: against the paper's direction; the grips' distance's part and the dose contrast as what they
-#: move the natural run's size effect by.
-SIZE_PART_WORDS = {
-    "size": {},
-    "grip_distance": {"reproduced": "carries part of it, the paper's way",
-                      "reversed": "carries part of it, against the paper"},
-    "dose": {"reproduced": "moves it the paper's way", "reversed": "moves it against the paper"},
-}  # fmt: skip
-
-
 def size_part_word(test: str, term: dict) -> str:
     """A declared test of the size study in words (``SIZE_PART_WORDS``)."""
     word = verdict_word(term)
     return SIZE_PART_WORDS[test].get(word, word)
-
-
-#: A shown part's direction, from its verdict word.
-PART_DIRECTIONS = {"reproduced": "the paper's way", "reversed": "against the paper"}
 
 
 def carrier(size_word: str, grip_word: str) -> str:
@@ -215,9 +163,6 @@ def named_measures(measures) -> str:
 
 # -- the paper's claims over fresh replications ------------------------------------------------
 
-#: A declared test's verdict word for each ``claims.direction``.
-CLAIM_WORDS = {"paper": "confirmed", "reversed": "reversed", "none": "not shown",
-               "not assessable": "not assessable"}  # fmt: skip
 #: The words of a declared test's parts, for its row of the front page.
 CLAIM_PARTS = {
     "congruency": "Congruent lower (incongruent − congruent)",
