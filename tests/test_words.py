@@ -6,6 +6,7 @@ import of the book layer fails here."""
 from __future__ import annotations
 
 import ast
+from pathlib import Path
 
 import pytest
 from conftest import REPO
@@ -37,11 +38,14 @@ def docstrings(tree: ast.AST) -> set[int]:
     return out
 
 
-def verdict_strings(source: str) -> list[tuple[int, str]]:
+def verdict_strings(source: str, keys: bool = True) -> list[tuple[int, str]]:
     """Each string constant in ``source`` outside its docstrings that is a verdict word: returned,
-    compared with, or held in a constant alike, with its line."""
+    compared with, or held in a constant alike, with its line; with ``keys`` False, not one that
+    only names an entry (``values["shown"]``)."""
     tree = ast.parse(source)
     skip = docstrings(tree)
+    if not keys:
+        skip |= {id(n.slice) for n in ast.walk(tree) if isinstance(n, ast.Subscript)}
     return [
         (node.lineno, node.value)
         for node in ast.walk(tree)
@@ -73,6 +77,35 @@ def test_no_science_module_returns_or_holds_a_verdict_word(path):
     assert verdict_strings(path.read_text()) == [], "say it in icub_workflow.book.words"
 
 
+#: The book layer's modules besides ``words``, and the rule that writes its findings.
+BOOK = [
+    *sorted((REPO / "src" / "icub_workflow" / "book").glob("*.py")),
+    REPO / "workflow" / "scripts" / "findings.py",
+]
+
+
+@pytest.mark.parametrize("path", [p for p in BOOK if p.name != "words.py"], ids=lambda p: p.name)
+def test_the_rest_of_the_book_layer_names_its_verdict_words_from_the_words_module(path):
+    """One module spells every verdict word: changing what "reproduced" reads is one edit."""
+    assert verdict_strings(path.read_text(), keys=False) == [], "name it from book.words"
+
+
+def test_a_words_change_reruns_only_the_rules_that_write_words():
+    """The words module is code only of the scripts whose outputs hold words (the claims', the
+    contact-time test's and the signatures' tables, the forest plot's legend, the findings):
+    a word changed reruns none of the model's rules."""
+    from icub_workflow.code_deps import CodeGraph
+
+    graph = CodeGraph([REPO / "src"])
+    words_file = REPO / "src" / "icub_workflow" / "book" / "words.py"
+    users = {
+        script.stem
+        for script in (REPO / "workflow" / "scripts").glob("*.py")
+        if words_file in {Path(p).resolve() for p in graph.closure([script.read_text()])}
+    }
+    assert users == {"claims", "claims_figure", "findings", "robot_contact_time", "signatures"}
+
+
 def test_the_scans_catch_what_they_look_for():
     """Each scan finds a regression of the kind it guards against, and passes over a docstring."""
     returned = 'def f(p):\n    """Is "reversed" or "not shown"."""\n    return "Not shown"\n'
@@ -80,6 +113,8 @@ def test_the_scans_catch_what_they_look_for():
     held = 'WORDS = {"paper": "confirmed"}\nif x == "opposite":\n    pass\n'
     assert [w for _, w in verdict_strings(held)] == ["confirmed", "opposite"]
     assert verdict_strings('CODES = ("paper", "against", "none")\n') == []
+    assert verdict_strings('values["shown"] = 1\n', keys=False) == []
+    assert verdict_strings('values["shown"] = "shown"\n', keys=False) == [(1, "shown")]
     assert book_imports("from icub_workflow.book import words\n") == ["icub_workflow.book"]
     assert book_imports("def f():\n    import icub_workflow.book.text\n") == [
         "icub_workflow.book.text"

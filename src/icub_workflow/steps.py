@@ -9,7 +9,7 @@ runs the same code, and a run's files are the same bytes whichever rule made the
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 import pandas as pd
@@ -190,16 +190,17 @@ def signature_tables(
     signatures: Mapping,
     min_replications: int,
     outputs: Mapping[str, str],
+    verdict_words: Callable[[pd.Series], list],
 ) -> None:
     """The human signatures' conditions on each replication's networks (``icub_affordance.
     signatures``): every noisy trial (``outputs["trials"]``), each signature's tests and verdict
-    word (``summary``; the words ``icub_workflow.book.words``'), and the errors apart
+    word (``summary``; ``verdict_words`` says its codes, as ``icub_workflow.book.words``, which the
+    rule's script passes, so that a word's change reruns no model), and the errors apart
     (``errors``). A replication: its seed, its model inputs (maps, soms, demos), grip_distance,
     network settings and weights files. A test needs
     ``min_replications`` replications with an estimate (config ``confirmation``)."""
     from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
     from icub_affordance.train import load_materials
-    from icub_workflow.book.words import signature_words
 
     config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []
@@ -219,7 +220,7 @@ def signature_tables(
     trials = pd.read_csv(outputs["trials"])  # as readers see it: a recomputation from it agrees
     for name, table in {
         "summary": (found := summary(trials, config)).assign(
-            verdict=signature_words(found["verdict"])
+            verdict=verdict_words(found["verdict"])
         ),
         "errors": errors(trials, min_replications),
     }.items():

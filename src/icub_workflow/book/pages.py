@@ -197,7 +197,7 @@ def robot_verdict(effect: dict, measure: str, factor: str) -> str:
             return words.robot_word(None if verdict is None else verdict.paper_direction, False)
         word = words.robot_word(verdict.paper_direction, True)
     cell = carrying_cell(effect)
-    if cell is None or word not in ("reproduced", "reversed", "shown"):
+    if cell is None or word not in (words.REPRODUCED, words.REVERSED, words.SHOWN):
         return word
     others = [c["mean"] for name, c in effect["cells"].items() if name != cell]
     return text.one_cell(cell, measure, effect["cells"][cell]["mean"] < np.nanmean(others))
@@ -249,8 +249,8 @@ def _robot_values(emb: dict, own: dict) -> dict:
         ("beyond.emb_categorisation_success",),
     )
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
-        phrases = {"reproduced": f"larger {where}", "reversed": f"smaller {where}",
-                 "not shown": "not shown to differ"}  # fmt: skip
+        phrases = {words.REPRODUCED: f"larger {where}", words.REVERSED: f"smaller {where}",
+                   words.NOT_SHOWN: "not shown to differ"}  # fmt: skip
         term = (err["contrasts"] or {}).get(effect) or {}
         out |= text.test_values("beyond", f"emb_final_error_{effect}", term, words=phrases)
     return out
@@ -281,9 +281,9 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "@goal_response & replications == 1", local_dict=config["soms"])  # fmt: skip
     difference |= (row[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
     out |= {f"cue_difference_{k}": difference[k] for k in ("df", "t")}
-    phrases = {"reproduced": "larger with the cue at the first step only",
-             "reversed": "larger with the cue at every step",
-             "not shown": "not shown to differ between the timings"}  # fmt: skip
+    phrases = {words.REPRODUCED: "larger with the cue at the first step only",
+               words.REVERSED: "larger with the cue at every step",
+               words.NOT_SHOWN: "not shown to differ between the timings"}  # fmt: skip
     out |= text.test_values("beyond", "cue_difference", difference, words=phrases)
     p, family = out["cue_difference_p_holm"], out["cue_difference_family"]
     out["cue_difference_p_words"] = (
@@ -710,7 +710,7 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     counts = verdicts["verdict"].value_counts()
     values["shown"] = text.Claim(
         text.listing([SIGNATURE_NAMES[n].lower() for n in verdicts.loc[
-            verdicts["verdict"] == "shown", "signature"]], "none"),
+            verdicts["verdict"] == words.SHOWN, "signature"]], "none"),
         tuple(f"signatures.{n}_p_adjusted" for n in verdicts["signature"]))  # fmt: skip
     values["counts"] = ", ".join(f"{counts[w]} {w}" for w in words.SIGNATURE_WORDS.values()
                                  if w in counts)  # fmt: skip

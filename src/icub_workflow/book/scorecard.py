@@ -15,8 +15,6 @@ from . import text, words
 
 #: The paper's training RMSE after about 2,000 iterations and at the end (its Figure 4).
 PAPER_FINAL_RMSE = 0.05
-#: The robot rows: the bar (``findings.GRASPS``) against the 95% interval of the share held.
-BAR_WORDS = {"above": "shown", "includes": "not known", "below": "falls short"}
 PAPER_SAYS = {"congruency": "congruent lower, significant", "size": "large lower, significant"}
 #: What the paper says of a declared test's measure: it reports the all-trial RMSE only (its test
 #: mode unnamed); the correct-trial RMSE is this project's reading of its reaction-time claim.
@@ -38,7 +36,7 @@ def _held(prefix: str, share: float, low: float, high: float, how: str) -> tuple
               f"{prefix}_ci_high": float(high)}  # fmt: skip
     side = "above" if low > science.GRASPS else "below" if high < science.GRASPS else "includes"
     rests = (f"index.{prefix}_ci_low", f"index.{prefix}_ci_high")
-    values[f"{prefix}_verdict"] = text.Claim(BAR_WORDS[side], rests)
+    values[f"{prefix}_verdict"] = text.Claim(words.BAR_WORDS[side], rests)
     pct = "{:.1%}".format
     return values, f"{pct(share)} of grasping trials [{pct(low)}, {pct(high)}] ({how} interval); " \
         f"bar {science.GRASPS:.0%}"  # fmt: skip
@@ -206,7 +204,7 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
                      "chapter": chapter})  # fmt: skip
 
     end = float(learning["end"].mean())
-    learnt = "reproduced" if end <= PAPER_FINAL_RMSE else "not shown"
+    learnt = words.REPRODUCED if end <= PAPER_FINAL_RMSE else words.NOT_SHOWN
     learn = {"score_learn_start": float(learning["start"].mean()), "score_learn_end": end,
              "score_learn_end_low": float(learning["end"].min()),
              "score_learn_end_high": float(learning["end"].max()),

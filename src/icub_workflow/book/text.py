@@ -9,7 +9,17 @@ from dataclasses import dataclass
 
 from icub_affordance.measures import LABELS
 
-from .words import AFTER_RESULTS, CLAIM_WORDS, PART_DIRECTIONS, SIZE_PART_WORDS, verdict_word
+from .words import (
+    AFTER_RESULTS,
+    CLAIM_WORDS,
+    NOT_SHOWN,
+    NOT_TESTABLE,
+    PART_DIRECTIONS,
+    REPRODUCED,
+    REVERSED,
+    SIZE_PART_WORDS,
+    verdict_word,
+)
 
 
 @dataclass(frozen=True)
@@ -83,7 +93,7 @@ def reading_claims(shown) -> dict[str, Claim | str]:
     the paper's way on Holm's p (``paper_<measure>_<effect>``)."""
     out = {}
     for measure, rows in shown[shown["hypothesis"]].groupby("measure", sort=False):
-        paper = rows[rows["verdict"] == "reproduced"].groupby("named")["effect"].agg(set)
+        paper = rows[rows["verdict"] == REPRODUCED].groupby("named")["effect"].agg(set)
         for effects in (("congruency",), ("size",), ("congruency", "size")):
             chosen = [n for n in rows["named"].unique() if set(effects) <= paper.get(n, set())]
             said = "every reading" if len(chosen) == rows["named"].nunique() else chosen
@@ -111,7 +121,7 @@ def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
     changed = rows[rows["verdict"].isin(["larger", "smaller"])]
     out[f"{prefix}_changes"] = _claim(rows, stats, effects(changed))
-    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", "not shown",
+    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", NOT_SHOWN,
                  AFTER_RESULTS):  # fmt: skip
         name = "equivalent_after" if word == AFTER_RESULTS else word.replace(" ", "_")
         out[f"{prefix}_n_{name}"] = _claim(
@@ -131,9 +141,9 @@ GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread",
 def trend_phrase(term) -> str:
     """Where a tested change moves the size effect (positive: towards the paper's direction)."""
     word = verdict_word(term)
-    if word in ("not shown", "not testable"):
+    if word in (NOT_SHOWN, NOT_TESTABLE):
         return "by no amount its test shows"
-    return ("away from" if word == "reversed" else "towards") + " the paper's direction"
+    return ("away from" if word == REVERSED else "towards") + " the paper's direction"
 
 
 def size_part_word(test: str, term: dict) -> str:

@@ -12,6 +12,14 @@ from collections.abc import Mapping
 from icub_affordance.findings import ALPHA
 from icub_affordance.outcome import Outcome
 
+#: The verdict words themselves, each spelled once: the rest of the book layer names them here.
+REPRODUCED, CONFIRMED, REVERSED = "reproduced", "confirmed", "reversed"
+SHOWN, NOT_SHOWN, OPPOSITE = "shown", "not shown", "opposite"
+NOT_ASSESSABLE, NOT_TESTABLE = "not assessable", "not testable"
+#: The robot rows of the scorecard: the bar (``findings.GRASPS``) against the 95% interval of
+#: the share held.
+BAR_WORDS = {"above": SHOWN, "includes": "not known", "below": "falls short"}
+
 # -- a test's p against ALPHA, on the side of its estimate -------------------------------------
 
 
