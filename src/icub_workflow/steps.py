@@ -1,5 +1,5 @@
-"""What a training or measuring job does, for the scripts that run it: one run per job (rules
-train, run_train, measures) or several runs in one process (the measured runs of a seed, rule
+"""What a training or measuring job does, for the scripts that run it: one run's part or run
+per job (rules train, measures) or several runs in one process (the measured runs of a seed, rule
 ``measured_<group>``: one start-up, one load of the compiled trainer, for a dozen runs).
 
 Plain functions of paths and settings, without Snakemake, so that every rule that runs a step

@@ -79,9 +79,12 @@ rule train:
     # and theirs are the longest jobs that follow (see workflow/rules/robot.smk)
     priority: 2
     # on a cluster, another run's networks go as one job with its tests and measures (group
-    # `replication`, workflow/profiles/slurm); the config's own, a job each, go apart
+    # `replication`, workflow/profiles/slurm); the config's own, a job each, go apart (and a
+    # local run, a dry run too, shows no group)
     group:
-        lambda wildcards: "replication" if wildcards.part == "all" else None
+        lambda wildcards: (
+            "replication" if wildcards.part == "all" and workflow.non_local_exec else None
+        )
     resources:
         # a run's networks side by side: the 768,000-iteration robot trainings take about 600 MB
         mem_mb=lambda wildcards: 1000 if wildcards.part == "all" else 500,

@@ -1,6 +1,6 @@
 """Several measured runs (readings, size study) of one seed in one process: each run's maps
 trained where the run makes its own, its networks trained, then scored on the declared measures
-(the steps of rules soms, run_train and measures)."""
+(the steps of rules soms, train and measures)."""
 
 from icub_affordance.io import redirect_log
 from icub_affordance.train import load_materials
