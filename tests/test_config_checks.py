@@ -200,6 +200,67 @@ def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change,
         assert word in message, (word, message)
 
 
+@pytest.mark.parametrize(
+    ("change", "words"),
+    [
+        # the issue's case: the confirmation declares every-step tests no reading replicates
+        (
+            lambda c: c["readings"].update(categorisation_cue=["first_step"]),
+            ["confirmation.cues", "['all_steps'] has no replication", "Fix"],
+        ),
+        (
+            lambda c: c["readings"].update(goal_response=["grows"]),
+            ["readings.goal_response", "soms.goal_response: fixed", "Fix"],
+        ),
+        (
+            lambda c: c["readings"].update(measures=["rmse"]),
+            ["confirmation.measures", "['rmse_correct']", "Fix"],
+        ),
+        (
+            lambda c: (
+                c["network"].update(categorisation_cue="all_steps")
+                or c["confirmation"].update(cues=["first_step"])
+            ),
+            ["confirmation.cues", "network.categorisation_cue: all_steps", "Fix"],
+        ),
+        (
+            lambda c: c["confirmation"].update(min_replications=11),
+            ["confirmation.min_replications", "11", "Allowed: at most 10", "Fix"],
+        ),
+        (
+            lambda c: c["readings"].update(goal_response=["fixed"]),
+            ["readings.equivalence_margin", "Goal response", "Fix"],
+        ),
+        (
+            lambda c: c["robot"]["confirmation"]["contact_time"].update(min_networks=13),
+            ["robot.confirmation.contact_time.min_networks", "13", "at most 12", "Fix"],
+        ),
+    ],
+)
+def test_a_declaration_no_run_backs_is_refused_naming_key_and_fix(change, words):
+    """A declared test, margin or minimum whose runs the build does not make would pass every
+    check and then rest on nothing: refused, naming the key and the fix; the shipped configs
+    pass."""
+    message = refusal(change)
+    for word in words:
+        assert word in message, (word, message)
+
+
+def test_a_run_of_runs_declares_nothing_so_its_cue_timing_is_free():
+    """A run laid over the config is checked by the rules between keys, not as a declaration:
+    another cue timing than the confirmation's passes for it, not for the config's own."""
+    from icub_workflow.config_checks import check_runs, load_schema
+
+    schema = load_schema(REPO / "workflow" / "schemas" / "config.schema.yaml")
+    config = load_config()
+    config["confirmation"]["cues"] = ["first_step"]
+    config["runs"] = {"other_cue": {"network": {"categorisation_cue": "all_steps"}}}
+    check_runs(config, schema)
+    config["network"]["categorisation_cue"] = "all_steps"
+    with pytest.raises(ConfigError, match="lacks the config's own cue timing"):
+        check_config(config)
+
+
 def test_a_confirmed_variant_of_the_grid_need_not_be_tested_in_the_default_build():
     """The exploration is the grid's, tested at full scale: a confirmed variant that the default
     build does not test on networks 0.. (robot.default empty) passes, and so does an animation

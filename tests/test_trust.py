@@ -142,6 +142,11 @@ def test_a_plot_setting_reruns_only_the_plot(built, tmp_path):
         ),
         (lambda c: c["runs"].update(x={"network": {"phase1_iterations": 5000}}), ["runs.x."]),
         (lambda c: c.update(scene="assets/icub_right_arm.xml"), ["config key scene", "Fix"]),
+        # a declared test no run backs (issue 57)
+        (
+            lambda c: c["readings"].update(categorisation_cue=["first_step"]),
+            ["confirmation.cues", "all_steps", "Fix"],
+        ),
     ],
 )
 def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path, change, words):

@@ -397,10 +397,74 @@ def check_config(config: Mapping[str, Any], prefix: str = "") -> None:
     `prefix` is put before every key named (`runs.half_lr.` for a run's config).
     """
     problems = list(_problems(config, prefix))
+    if not prefix:
+        problems += _backed_problems(config, lambda name: f"config key {name}")
     if len(problems) == 1:
         raise ConfigError(problems[0])
     if problems:
         raise ConfigError(f"{len(problems)} problems:\n  - " + "\n  - ".join(problems))
+
+
+def _backed_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """Every declared test needs the runs that make it (issue 57), else it would pass every
+    check and plan, and then rest on nothing: the confirmation's cue timings, Goal response and
+    measures must be readings the build runs; the signatures and the learning curves read the
+    config's own cue timing among the confirmation's; a declared minimum must be reachable by
+    the replications or networks declared; an equivalence margin needs both Goal responses.
+    The config's own keys only: a run of `runs:` declares no test."""
+    readings, declared = config["readings"], config["confirmation"]
+    cues, goals = readings["categorisation_cue"], readings["goal_response"]
+    missing = [cue for cue in declared["cues"] if cue not in cues]
+    if missing:
+        yield (
+            f"{key('confirmation.cues')}: {missing} has no replication to test: the "
+            f"confirmation's replications are the readings' runs, and readings."
+            f"categorisation_cue is {cues}. Fix: add {missing} to readings.categorisation_cue, "
+            "or take it out of confirmation.cues."
+        )
+    goal = config["soms"]["goal_response"]
+    if goal not in goals:
+        yield (
+            f"{key('readings.goal_response')}: {goals} lacks the config's Goal response "
+            f"(soms.goal_response: {goal}), at which the confirmation and the signatures test "
+            f"the readings' runs. Fix: add {goal} to readings.goal_response."
+        )
+    unmeasured = [m for m in declared["measures"] if m not in readings["measures"]]
+    if unmeasured:
+        yield (
+            f"{key('confirmation.measures')}: {unmeasured} is not scored on the readings' runs "
+            f"(readings.measures: {readings['measures']}). Fix: add it to readings.measures, or "
+            "take it out of confirmation.measures."
+        )
+    own = config["network"]["categorisation_cue"]
+    if own not in declared["cues"]:
+        yield (
+            f"{key('confirmation.cues')}: {declared['cues']} lacks the config's own cue timing "
+            f"(network.categorisation_cue: {own}), whose replications the signatures and the "
+            f"learning curves test. Fix: add {own} to confirmation.cues."
+        )
+    least, seeds = declared["min_replications"], declared["seeds"]
+    if least > len(seeds):
+        yield (
+            f"{key('confirmation.min_replications')}: {least} is more than the {len(seeds)} "
+            "replications of confirmation.seeds, so every declared replicated test would be "
+            f"not assessable. Allowed: at most {len(seeds)}. Fix: lower it or add seeds."
+        )
+    if len(goals) < 2 and readings["equivalence_margin"]:
+        yield (
+            f"{key('readings.equivalence_margin')}: its margins test whether the Goal response "
+            f"makes a difference, but readings.goal_response runs one ({goals}). Fix: list both "
+            "Goal responses, fixed and grows."
+        )
+    robot = config["robot"]["confirmation"]
+    fewest = min(robot["networks"], robot["robustness_networks"])
+    if robot["variants"] and robot["contact_time"]["min_networks"] > fewest:
+        yield (
+            f"{key('robot.confirmation.contact_time.min_networks')}: "
+            f"{robot['contact_time']['min_networks']} is more than the confirmation's "
+            f"{fewest} networks, so the declared contact-time test could never be assessed. "
+            f"Allowed: at most {fewest}. Fix: lower it or confirm on more networks."
+        )
 
 
 def _claims_problems(config: Mapping[str, Any], key) -> Iterator[str]:
