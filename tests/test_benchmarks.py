@@ -73,3 +73,120 @@ def test_the_sweeps_cost_sums_its_jobs_seconds_per_replication(tmp_path):
         replication_cost(records)
     with pytest.raises(ValueError, match="did the sweep run"):
         replication_cost({})
+
+
+#: An excerpt of `snakemake -n --forceall --cores 2` (Snakemake 9.27, the test config; the
+#: book's block from the default config, for its threads), the input lists shortened: plain
+#: jobs, a group job's indented member, the book's threads, and the target `all`.
+DRY_RUN = """\
+Building DAG of jobs...
+[Sun Dec  6 18:40:12 2026]
+rule visual_maps:
+    input: assets/icub_scene.xml, assets/icub_scene.xml, src/icub_affordance/vision.py
+    output: data/vision/visual_maps.npz, data/vision/vision_stages.npz
+    log: data/logs/visual_maps.log
+    jobid: 5
+    benchmark: data/benchmarks/visual_maps.tsv
+    reason: Forced execution
+    priority: 3
+    resources: tmpdir=/tmp, mem_mb=1000, mem=1 GB, mem_mib=954
+[Sun Dec  6 18:40:12 2026]
+rule figure3:
+    input: data/vision/vision_stages.npz, src/icub_affordance/__init__.py
+    output: data/vision/figure3.png
+    log: data/logs/figure3.log
+    jobid: 7
+    benchmark: data/benchmarks/figure3.tsv
+    reason: Forced execution
+    resources: tmpdir=/tmp
+[Sun Dec  6 18:40:12 2026] Group job replication (jobs in lexicogr. order):
+
+    [Sun Dec  6 18:40:12 2026]
+    rule train:
+        input: data/vision/visual_maps.npz, data/soms/soms.npz, data/demos/demos.npz
+        output: data/runs/cue_all_steps/train/all/curve.csv, data/runs/cue_all_steps/train/all/weights.npz
+        log: data/logs/runs/cue_all_steps/train/all.log
+        jobid: 20
+        benchmark: data/benchmarks/runs/cue_all_steps/train/all.tsv
+        reason: Forced execution
+        wildcards: folder=runs/cue_all_steps/, part=all
+        priority: 2
+        resources: tmpdir=/tmp, runtime=10, mem_mb=1000, mem=1 GB, mem_mib=954
+[Sun Dec  6 18:40:12 2026]
+rule book:
+    input: data/vision/figure3.png, data/vision/visual_maps.npz, src/icub_workflow/manifest.py
+    output: book/_build/html/index.html
+    log: data/logs/book.log
+    jobid: 1
+    benchmark: data/benchmarks/book.tsv
+    reason: Forced execution
+    threads: 2
+    resources: tmpdir=/tmp, runtime=15, mem_mb=2000, mem=2 GB, mem_mib=1908
+[Sun Dec  6 18:41:15 2026]
+rule all:
+    input: book/_build/html/index.html, data/runs/cue_all_steps/train/all/curve.csv
+    jobid: 0
+    reason: Forced execution
+    resources: tmpdir=/tmp
+Job stats:
+job            count
+-----------  -------
+all                1
+"""  # noqa: E501 (the real lines)
+
+
+def test_the_dry_run_gives_each_job_its_record_and_the_jobs_it_waits_for(tmp_path):
+    """benchmarks/critical_path.py: the DAG and the records from Snakemake's dry-run text."""
+    from icub_workflow.critical_path import dependencies, parse_dry_run, record_path
+
+    jobs = parse_dry_run(DRY_RUN)
+    assert {j: job.rule for j, job in jobs.items()} == {
+        5: "visual_maps", 7: "figure3", 20: "train", 1: "book", 0: "all"}  # fmt: skip
+    assert jobs[20].benchmark == "data/benchmarks/runs/cue_all_steps/train/all.tsv"
+    assert jobs[20].outputs[1] == "data/runs/cue_all_steps/train/all/weights.npz"
+    assert (jobs[5].priority, jobs[7].priority, jobs[1].threads, jobs[7].threads) == (3, 0, 2, 1)
+    assert jobs[0].benchmark is None
+    assert dependencies(jobs) == {5: set(), 7: {5}, 20: {5}, 1: {5, 7}, 0: {1, 20}}
+    assert (
+        record_path(jobs[20].benchmark, tmp_path) == tmp_path / "runs/cue_all_steps/train/all.tsv"
+    )
+    import pytest
+
+    with pytest.raises(ValueError, match="--quiet"):
+        parse_dry_run("Building DAG of jobs...\nJob stats:\n")
+
+
+def test_the_critical_path_and_the_wall_time_on_n_cores_of_a_small_dag():
+    """Worked by hand: a(3) and b(2) start; c(4) waits for a and b, d(6) for b, e(1) for c and
+    d. Chains a-c-e 8 s, b-c-e 7 s, b-d-e 9 s: the critical path is b, d, e (9 s). On two
+    cores: a and b at 0; b ends at 2, d runs 2-8; a ends at 3, c runs 3-7; e runs 8-9: 9 s,
+    the critical path itself. On one core, the sum: 16 s."""
+    from icub_workflow.critical_path import critical_path, remaining_chain, simulate
+
+    a, b, c, d, e = range(5)
+    depends = {a: set(), b: set(), c: {a, b}, d: {b}, e: {c, d}}
+    seconds = {a: 3.0, b: 2.0, c: 4.0, d: 6.0, e: 1.0}
+    assert critical_path(depends, seconds) == [b, d, e]
+    assert remaining_chain(depends, seconds) == {a: 8.0, b: 9.0, c: 5.0, d: 7.0, e: 1.0}
+    assert simulate(depends, seconds, cores=2) == 9.0
+    assert simulate(depends, seconds, cores=1) == 16.0
+    assert simulate(depends, seconds, cores=4) == 9.0
+
+
+def test_the_schedule_follows_snakemakes_priority_and_a_jobs_threads():
+    """x(5), y(1), z(1), and w(5) waiting for y, on two cores. By longest remaining chain, y
+    (6 s to the end) and x start; w runs 1-6, z 5-6: 6 s. With x and z given priority, x and z
+    start, y runs 1-2 and w 2-7: 7 s. A two-thread job holds both cores: p(2, 2 threads) and
+    q(2) take 4 s, not 2."""
+    from icub_workflow.critical_path import simulate
+
+    x, y, z, w = range(4)
+    depends = {x: set(), y: set(), z: set(), w: {y}}
+    seconds = {x: 5.0, y: 1.0, z: 1.0, w: 5.0}
+    assert simulate(depends, seconds, cores=2) == 6.0
+    assert simulate(depends, seconds, cores=2, priority={x: 1, z: 1}) == 7.0
+    p, q = 0, 1
+    pair = {p: set(), q: set()}
+    assert simulate(pair, {p: 2.0, q: 2.0}, cores=2) == 2.0
+    assert simulate(pair, {p: 2.0, q: 2.0}, cores=2, threads={p: 2}) == 4.0
+    assert simulate(pair, {p: 2.0, q: 2.0}, cores=1, threads={p: 2}) == 4.0

@@ -1,0 +1,132 @@
+"""The longest chain of jobs of a configuration, and the wall time its job records allow on N cores.
+
+    python benchmarks/critical_path.py [data/benchmarks] [--cores 2] [-- SNAKEMAKE ARGS]
+    python benchmarks/critical_path.py data/benchmarks -- --config robustness=True  # full scale
+
+The DAG is Snakemake's own, from a dry run of every job (`snakemake -n --forceall --cores N`,
+plus the arguments after `--`); nothing runs. Each job is weighed by its wall time on record
+(column `s` of its benchmark file, under the given folder). The critical path (the chain of
+jobs, each waiting for the one before, with the most seconds) bounds the build from below
+whatever the cores, and the summed job time over N cores bounds it too; a greedy schedule
+(ready jobs by Snakemake's priority, then longest remaining chain) predicts it.
+
+A job with no record (the configuration has jobs the last build never ran) counts 0 s, with
+a warning naming how many and a few of them, so that the figures over the jobs on record are
+still given, labelled as such in the JSON (`missing`); `--strict` refuses instead. A job whose
+rule keeps no benchmark (the target `all`) counts 0 s too. Snakemake's own time (its start,
+the dry run's wall time, and its work between jobs, `--overhead` s a job) is not in the
+records: the first is printed apart, the second added to each job if given.
+
+Prints the critical path (each job, its rule and seconds), then the figures; the last line is
+JSON: jobs, missing, critical_path_s, sum_of_job_seconds, cores, lower_bound_s, predicted_s.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from icub_workflow.benchmark_tables import job_seconds
+from icub_workflow.critical_path import (
+    critical_path,
+    dependencies,
+    parse_dry_run,
+    record_path,
+    simulate,
+)
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def dry_run(cores: int, extra: list[str]) -> tuple[str, float]:
+    """Snakemake's dry run of every job at the checkout's root, and its wall time. ``--cores``
+    is passed so that each job's threads are shown as a build on that many cores gives them."""
+    snakemake = str(Path(sys.executable).with_name("snakemake"))
+    command = [snakemake, "-n", "--forceall", "--cores", str(cores), *extra]
+    start = time.perf_counter()
+    done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"{' '.join(command)} failed (exit {done.returncode}):\n{done.stderr[-2000:]}")
+    return done.stdout + done.stderr, time.perf_counter() - start
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0],
+        epilog="more Snakemake arguments after --, e.g. -- --config robustness=True",
+    )
+    parser.add_argument("directory", nargs="?", default="data/benchmarks", type=Path)
+    parser.add_argument("--cores", type=int, default=2)
+    parser.add_argument("--overhead", type=float, default=0.0, help="seconds added to each job")
+    parser.add_argument("--strict", action="store_true", help="refuse jobs with no record")
+    argv = sys.argv[1:]
+    ours, extra = (
+        (argv[: argv.index("--")], argv[argv.index("--") + 1 :]) if "--" in argv else (argv, [])
+    )
+    args = parser.parse_args(ours)
+    text, dry_s = dry_run(args.cores, extra)
+    jobs = parse_dry_run(text)
+    seconds, missing = {}, []
+    for job in jobs.values():
+        seconds[job.jobid] = args.overhead
+        if job.benchmark is None:
+            continue
+        path = record_path(job.benchmark, args.directory)
+        if not path.exists():
+            missing.append(job.benchmark)
+            continue
+        try:
+            seconds[job.jobid] += job_seconds(path)
+        except ValueError as error:
+            sys.exit(str(error))
+    if missing:
+        message = (f"{len(missing)} of {len(jobs)} jobs have no record under {args.directory} "
+                   f"(counted 0 s), e.g. {', '.join(sorted(missing)[:3])}")  # fmt: skip
+        if args.strict or len(missing) == sum(job.benchmark is not None for job in jobs.values()):
+            sys.exit(message + ": run the build first, or name the folder")
+        print("warning: " + message, file=sys.stderr)
+    depends = dependencies(jobs)
+    chain = critical_path(depends, seconds)
+    threads = {j: job.threads for j, job in jobs.items()}
+    predicted = simulate(depends, seconds, args.cores, {j: jobs[j].priority for j in jobs}, threads)
+    path_s = sum(seconds[j] for j in chain)
+    work = sum(seconds.values())
+    core_s = sum(seconds[j] * min(threads[j], args.cores) for j in jobs)
+    bound = max(path_s, core_s / args.cores)
+    total = 0.0
+    print(f"{'s':>8} {'total':>8}  rule: benchmark file")
+    for j in chain:
+        total += seconds[j]
+        name = jobs[j].benchmark or "(no benchmark)"
+        print(f"{seconds[j]:8.1f} {total:8.1f}  {jobs[j].rule}: {name}")
+    kept = sum(job.benchmark is not None for job in jobs.values())
+    label = f" ({kept - len(missing)} on record, {len(missing)} counted 0 s)" if missing else ""
+    print(
+        f"\n{len(jobs)} jobs{label}; critical path {path_s:.1f} s over {len(chain)} jobs; "
+        f"summed job time {work:.1f} s; on {args.cores} cores at least {bound:.1f} s, "
+        f"greedy schedule {predicted:.1f} s; Snakemake's start (the dry run) {dry_s:.1f} s, "
+        "not included"
+    )
+    print(
+        json.dumps(
+            {
+                "jobs": len(jobs),
+                "missing": len(missing),
+                "critical_path_s": round(path_s, 1),
+                "critical_path_jobs": len(chain),
+                "sum_of_job_seconds": round(work, 1),
+                "cores": args.cores,
+                "lower_bound_s": round(bound, 1),
+                "predicted_s": round(predicted, 1),
+                "dry_run_s": round(dry_s, 1),
+            }
+        )
+    )
+
+
+if __name__ == "__main__":
+    main()
