@@ -208,7 +208,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     from icub_affordance.train import load_materials
     from icub_workflow.parts import load_weights
     from icub_workflow.runs import plan_runs
-    from icub_workflow.steps import train_networks
+    from icub_workflow.steps import train_part
 
     config = load_test_config()
     confirmation = config["robot"]["confirmation"]
@@ -231,15 +231,16 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     data = built / "data"
     materials = load_materials(*(data / f for f in (
         "vision/visual_maps.npz", "soms/soms.npz", "demos/demos.npz")))  # fmt: skip
-    weights = [tmp_path / f"explored{k:02d}.npz" for k in range(count)]
     network = plan_runs(config | {"robustness": False}).config(explored)["network"]
-    curves = [tmp_path / f"curve{k:02d}.csv" for k in range(count)]
-    train_networks(materials, network, config["seed"], list(range(count)), curves, weights)
+    (tmp_path / "all").mkdir()
+    explored_files = [str(tmp_path / "all" / name) for name in ("curve.csv", "weights.npz")]
+    train_part(materials, network, config["seed"], "all", *explored_files)
+    old = load_weights(explored_files[1:])
     fresh = dict(load_weights([str(data / f"runs/{run}/train/all/weights.npz")]))
-    assert sorted(fresh) == [int(net) for net in nets]
-    for net, path in zip(nets, weights, strict=True):
-        new, old = fresh[int(net)].W1, np.load(path)["W1"]
-        assert new.shape == old.shape and not np.allclose(new, old)
+    assert sorted(fresh) == [int(net) for net in nets] and len(old) == count
+    for net, (_, weights) in zip(nets, old, strict=True):
+        assert fresh[int(net)].W1.shape == weights.W1.shape
+        assert not np.allclose(fresh[int(net)].W1, weights.W1)
     trials = pd.read_csv(built / "data/embodied/confirmation_trials.csv")
     assert sorted(trials["network"].unique()) == list(range(first, first + count))
     mapping = trials.drop_duplicates("network").set_index("network")["mapping"]

@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 
 from icub_affordance.jordan import Weights
-from icub_workflow.parts import load_weights, part_names, part_networks, write_part
+from icub_workflow.parts import load_curves, load_weights, part_names, part_networks, write_part
 
 
 def made_up(net: int) -> tuple[Weights, dict[str, list]]:
@@ -38,6 +38,11 @@ def test_a_part_all_holds_each_networks_own_bits(tmp_path):
             assert getattr(a, name).tobytes() == getattr(b, name).tobytes()
     curves = pd.read_csv(tmp_path / "all/curve.csv")
     assert list(curves.columns) == ["network", "iteration", "phase", "rmse"]
+    loaded = load_curves([str(tmp_path / "all/curve.csv")])
+    alone_curves = load_curves([str(tmp_path / f"net{net}/curve.csv") for net in nets])
+    assert [net for net, _ in loaded] == [net for net, _ in alone_curves] == nets
+    for (_, a), (_, b) in zip(loaded, alone_curves, strict=True):
+        assert a.equals(b)
     for net in nets:
         own = pd.read_csv(tmp_path / f"net{net}/curve.csv")
         assert own.equals(curves[curves["network"] == net].drop(columns="network").reset_index(

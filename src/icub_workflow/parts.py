@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
 from icub_affordance.io import load_npz, save_npz, write_columns
 from icub_affordance.jordan import Weights
@@ -81,3 +82,19 @@ def load_weights(paths: Sequence[str]) -> list[tuple[int, Weights]]:
             stored = load_npz(path, required=WEIGHT_ARRAYS)
             networks.append((net, Weights(**{a: stored[a] for a in WEIGHT_ARRAYS})))
     return networks
+
+
+def load_curves(paths: Sequence[str]) -> list[tuple[int, pd.DataFrame]]:
+    """Every network's learning curve the parts ``paths`` hold, with its index, in the parts'
+    order: a one-network part's as its file reads, a part ``all``'s rows of that network."""
+    curves = []
+    for path in paths:
+        folder = Path(path).parent.name
+        table = pd.read_csv(path)
+        if folder == ALL:
+            for net, rows in table.groupby("network", sort=False):
+                curves.append((int(net), rows.drop(columns="network").reset_index(drop=True)))
+        else:
+            (net,) = part_networks(folder)
+            curves.append((net, table))
+    return curves

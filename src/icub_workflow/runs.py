@@ -130,10 +130,9 @@ class RunPlan:
 
     def parts(self, run: str) -> list[str]:
         """A run's trained networks as files (icub_workflow.parts): one part per network for
-        the config's own run (a job each) and for a measured run (its seed's job writes each
-        network's files), else the one part ``all`` (rule train, one job)."""
-        measured = self.runs[run].origin in ("reading", "size_dose")
-        return part_names(self.networks(run), self.jobs_per_network(run) or measured)
+        the config's own run (a job each), else the one part ``all`` (one job: rule train, or
+        a measured run's seed's job)."""
+        return part_names(self.networks(run), self.jobs_per_network(run))
 
     def jobs_per_network(self, run: str) -> bool:
         """Is each network a job of its own (trained, and tested on the robot)? For the config's

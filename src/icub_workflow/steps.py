@@ -120,28 +120,6 @@ def _trained(
     return [net for net, _ in nets], done
 
 
-def train_networks(
-    materials: Materials,
-    network: Mapping,
-    seed: int,
-    nets: Sequence[int] | None,
-    curves: Sequence[str],
-    weights_files: Sequence[str],
-    phase1_files: Sequence[str] = (),
-) -> None:
-    """Train a run's networks ``nets`` (all of them when None) with its ``network`` settings
-    (config key ``network``), each from its own seed, or continued from the phase 1 in
-    ``phase1_files`` (one per network, in order; :func:`train_phase1s`); write each one's curve
-    and weights to its own files (a measured run's layout)."""
-    nets, trained = _trained(materials, network, seed, nets, phase1_files)
-    _check_files(nets, curves)
-    _check_files(nets, weights_files)
-    for net, curve_path, weights_path, result in zip(
-        nets, curves, weights_files, trained, strict=True
-    ):
-        write_part([net], [result], curve_path, weights_path)
-
-
 def train_part(
     materials: Materials,
     network: Mapping,

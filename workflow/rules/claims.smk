@@ -11,11 +11,7 @@ rule claims:
     the replications' training RMSE."""
     input:
         measures=[PLAN.path(row["run"], "eval/measures.json") for row in CLAIM_ROWS],
-        curves=[
-            PLAN.path(row["run"], f"train/net{net}/curve.csv")
-            for row in OWN_READING_ROWS
-            for net in PLAN.networks(row["run"])
-        ],
+        curves=[path for row in OWN_READING_ROWS for path in curve_files(row["run"])],
         pilot=config["confirmation"]["pilot"],
         code=script_code("claims"),
     output:

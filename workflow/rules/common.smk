@@ -131,6 +131,12 @@ def weights_files(run, nets=None):
     return [PLAN.path(run, f"train/{part}/weights.npz") for part in parts]
 
 
+def curve_files(run):
+    """A run's learning curves, part by part (as weights_files; read with
+    icub_workflow.parts.load_curves)."""
+    return [PLAN.path(run, f"train/{part}/curve.csv") for part in PLAN.parts(run)]
+
+
 def run_weights(wildcards):
     """An input: this run's trained weights, every part."""
     return weights_files(run_of(wildcards))

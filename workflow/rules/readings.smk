@@ -47,10 +47,8 @@ for _group, _runs in MEASURED_GROUPS.items():
             **model_inputs({"folder": PLAN.folder(run)}),
             "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
             "som_settings": settings(PLAN.config(run)["soms"]),
-            "curves": [PLAN.path(run, f"train/net{net}/curve.csv") for net in PLAN.networks(run)],
-            "weights": [
-                PLAN.path(run, f"train/net{net}/weights.npz") for net in PLAN.networks(run)
-            ],
+            "curves": curve_files(run),  # its part `all`: one file each
+            "weights": weights_files(run),
             "trials": PLAN.path(run, "eval/measures.csv"),
             "json": PLAN.path(run, "eval/measures.json"),
         }

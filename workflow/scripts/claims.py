@@ -6,8 +6,6 @@ the config's reading's replications (learning.csv)."""
 import json
 from pathlib import Path
 
-import pandas as pd
-
 from icub_affordance.claims import (
     confirm,
     learning,
@@ -17,6 +15,7 @@ from icub_affordance.claims import (
 )
 from icub_affordance.io import redirect_log, write_tables
 from icub_workflow.book.words import direction_codes
+from icub_workflow.parts import load_curves
 
 with redirect_log(snakemake.log[0]):
     declaration = dict(snakemake.params.declaration)
@@ -26,7 +25,7 @@ with redirect_log(snakemake.log[0]):
     summary = confirm(estimates, declaration)
     summary["direction"] = direction_codes(summary["direction"])
     power = pilot_power(read_pilot(snakemake.input.pilot), declaration, len(snakemake.params.seeds))
-    curves = [pd.read_csv(path) for path in snakemake.input.curves]
+    curves = [curve for _, curve in load_curves(list(snakemake.input.curves))]
     trained = learning(curves, snakemake.params.seeds, snakemake.params.networks,
                        snakemake.params.phase1_iterations)  # fmt: skip
     write_tables(

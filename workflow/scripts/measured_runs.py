@@ -4,7 +4,7 @@ trained where the run makes its own, its networks trained, then scored on the de
 
 from icub_affordance.io import redirect_log
 from icub_affordance.train import load_materials
-from icub_workflow.steps import make_soms, measure_networks, train_networks
+from icub_workflow.steps import make_soms, measure_networks, train_part
 
 with redirect_log(snakemake.log[0]):
     for run in snakemake.params.runs:
@@ -14,7 +14,8 @@ with redirect_log(snakemake.log[0]):
                 run["maps"], snakemake.params.objects, run["som_settings"], run["seed"], run["soms"]
             )
         materials = load_materials(run["maps"], run["soms"], run["demos"], run["grip_distance"])
-        train_networks(materials, run["network"], run["seed"], None, run["curves"], run["weights"])
+        (curve,), (weights,) = run["curves"], run["weights"]  # its part `all`
+        train_part(materials, run["network"], run["seed"], "all", curve, weights)
         measure_networks(
             materials,
             run["network"],
