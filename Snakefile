@@ -67,9 +67,9 @@ include: "workflow/rules/sweep.smk"
 
 
 # Every file the default target makes, the intermediate ones too (DEFAULT_TARGET below names
-# those that are missing). Derived, never listed: every file of each run the build makes (common.smk: built_runs, run_outputs) and every output of a
-# rule without wildcards, but the sweep's summary, which only `robustness=True` (or the target
-# `sweep`) asks for.
+# those that are missing). Derived, never listed: every file of each run the build makes
+# (common.smk: built_runs, run_outputs) and every output of a rule without wildcards, but the
+# sweep's summary, which only `robustness=True` (or the target `sweep`) asks for.
 ON_REQUEST = () if config["robustness"] else ("sweep_summary", "sweep_figure")
 DEFAULT_OUTPUTS = list(
     dict.fromkeys(
@@ -94,8 +94,8 @@ include: "workflow/rules/manifest.smk"
 # job's record, so the two reach every job of the build; the target names them, the build's files
 # that neither reads, and any file of the build that is missing: Snakemake remakes a missing file
 # only if a job still to run needs it, so a file deleted after a run (as the project's errors
-# advise for a corrupt one) must be named to be remade. Naming all ~3,900 files every time would
-# make every start match each of them to its rule (issue 56).
+# advise for a corrupt one) must be named to be remade. Naming every file every time would make
+# every start match each of them to its rule (issue 56).
 _READ = {*RESULT_FILES, *BOOK_DATA.values(), *BOOK_FINDINGS.values(), *rules.book.output}
 DEFAULT_TARGET = list(
     dict.fromkeys(

@@ -111,19 +111,20 @@ def test_filming_a_trial_does_not_change_it(robot):
 def test_the_films_want_two_networks_one_of_each_mapping():
     settings = {"networks": 4, "categorisation_cue": "first_step", "target": "commands"}
     with pytest.raises(ValueError, match="two networks"):
-        filmed_networks(None, settings, [0], [None], ["t0.csv"])
+        filmed_networks(None, settings, [0], [None], [[]])
     with pytest.raises(ValueError, match="one of each is needed"):  # 0 and 1 both learn A
-        filmed_networks(None, settings, [0, 1], [None, None], ["t0.csv", "t1.csv"])
+        filmed_networks(None, settings, [0, 1], [None, None], [[], []])
 
 
-def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run(tmp_path):
+def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run():
     """A confirmation's networks 12..23: 12-17 learned mapping A, 18-23 B (the first half A,
-    as in training). So 12 and 18 are one of each and pass to their files (missing here);
-    12 and 13 are both A; the exploration's 0 and 6 are not networks of this run."""
+    as in training). So 12 and 18 are one of each and pass to their test (which needs the
+    materials, none here); 12 and 13 are both A; the exploration's 0 and 6 are not networks of
+    this run."""
     settings = {"networks": 12, "first_network": 12}
     settings |= {"categorisation_cue": "all_steps", "target": "commands"}
-    files = [None, None], [str(tmp_path / f"t{n}.csv") for n in (12, 18)]
-    with pytest.raises(FileNotFoundError, match="t12.csv"):
+    files = [None, None], [[], []]
+    with pytest.raises(AttributeError, match="demos"):  # past the checks, to the test's trials
         filmed_networks(None, settings, [12, 18], *files)
     with pytest.raises(ValueError, match="one of each is needed"):
         filmed_networks(None, settings, [12, 13], *files)

@@ -85,7 +85,8 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
 
 @pytest.mark.dryrun
 def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, tmp_path):
-    """A variant added to robot.default trains its networks and drives the robot (a job each),
+    """A variant added to robot.default trains its networks and drives the robot (a job each,
+    its part `all`),
     then only the summaries and pages that show the variants rerun: nothing of the main run."""
     config = load_test_config()
     config["robot"]["hidden"] = [10, 20]
@@ -94,7 +95,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("train") == jobs.pop("run_robot_test") == 1
+    assert jobs.pop("train") == jobs.pop("robot_test") == 1  # each its part `all`
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
     shown.add("robot_statistics")  # the robot statistics beyond the variants' table
@@ -103,7 +104,7 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
     assert set(jobs) <= shown, jobs
-    assert "data/runs/robot_sensed_h20_it1200/embodied/net00/trials.csv" in result.stdout
+    assert "data/runs/robot_sensed_h20_it1200/embodied/all/trials.csv" in result.stdout
 
 
 @pytest.mark.dryrun
@@ -129,8 +130,8 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     # runs.RunPlan.phase1_run) and continue from it; the animated variant, listed now, is
     # filmed on its networks 0.. instead of the confirmation's fresh ones, so the film runs too
     assert jobs.pop("run_phase1") == 1
-    assert jobs.pop("train") == 2 and jobs.pop("run_robot_test") == 3
-    assert "data/runs/cue_all_steps/embodied/net00/trials.csv" in result.stdout
+    assert jobs.pop("train") == 2 and jobs.pop("robot_test") == 3
+    assert "data/runs/cue_all_steps/embodied/all/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/all/weights.npz" in result.stdout
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
     shown.add("manifest")  # the results' digests, which the book shows
@@ -155,7 +156,7 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     path.write_text(yaml.safe_dump(config))
     result = run_snakemake(built, "-n", config=path)
     jobs = planned(result)
-    assert jobs.pop("train") == 1 and jobs.pop("run_robot_test") == 1
+    assert jobs.pop("train") == 1 and jobs.pop("robot_test") == 1
     run = f"robot_{own['target']}_h{own['hidden']}_it{own['iterations']}_anneal"
     assert f"data/runs/{run}/train/all/weights.npz" in result.stdout
     shown = {"robot_summary", "robot_variants_figure", "findings", "rulegraph", "book", "all"}
@@ -225,7 +226,8 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
         assert "data/demos/demos.npz" in inputs and "data/soms/soms.npz" in inputs, job
     assert f"data/runs/{run}/demos" not in plan and f"data/runs/{run}/soms" not in plan
     assert f"data/runs/{run}/train/all/weights.npz" in plan
-    assert sum("rule confirmation_robot_test:" in job for job in jobs) == 1
+    assert sum("rule robot_test:" in job for job in jobs) == 1  # its part `all`
+    assert f"data/runs/{run}/embodied/all/trials.csv" in plan
     assert f"data/runs/{explored}/" not in plan  # the exploration is not part of this build
     # the built run: fresh networks, unlike the exploration's at 0.., their trials, the table
     data = built / "data"

@@ -1,14 +1,27 @@
 """A run's networks in parts (icub_workflow.parts): a part `all` holds each network's arrays and
-curve, bit for bit, as that network's own part would; the loader reads either."""
+curve (trained) or rows and postures (robot test), bit for bit, as that network's own part
+would; the loaders read either."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
 
 from icub_affordance.jordan import Weights
-from icub_workflow.parts import load_curves, load_weights, part_names, part_networks, write_part
+from icub_workflow.parts import (
+    load_curves,
+    load_robot_states,
+    load_robot_trials,
+    load_weights,
+    network_trials,
+    part_names,
+    part_networks,
+    write_part,
+    write_robot_part,
+)
 
 
 def made_up(net: int) -> tuple[Weights, dict[str, list]]:
@@ -55,3 +68,43 @@ def test_parts_are_the_networks_or_all():
     assert part_networks("net07") == [7] and part_networks("all") is None
     with pytest.raises(ValueError, match="not a part"):
         part_networks("net7")
+
+
+def robot_tested(net: int) -> tuple[list[dict], np.ndarray]:
+    rng = np.random.default_rng(net)
+    rows = [
+        {"network": net, "task": task, "success": bool(rng.random() < 0.5), "contact_time":
+         float("nan") if k == 0 else rng.random(), "congruent": "" if k == 0 else True}
+        for k, task in enumerate(["grasping", "categorisation", "categorisation"])
+    ]  # fmt: skip
+    return rows, rng.normal(size=(3, 4, 5))
+
+
+def test_a_robot_part_all_holds_each_networks_rows_and_postures(tmp_path):
+    nets = [12, 13, 14]
+    tested = [robot_tested(net) for net in nets]
+    (tmp_path / "all").mkdir()
+    packed = [str(tmp_path / "all/trials.csv"), str(tmp_path / "all/states.npz")]
+    write_robot_part(nets, tested, *packed)
+    own = []
+    for net, result in zip(nets, tested, strict=True):
+        (tmp_path / f"net{net}").mkdir()
+        own.append([str(tmp_path / f"net{net}/{f}") for f in ("trials.csv", "states.npz")])
+        write_robot_part([net], [result], *own[-1])
+    # the table is each network's file, one after another, under one header
+    lines = [Path(t).read_text().splitlines() for t, _ in own]
+    assert Path(packed[0]).read_text().splitlines() == lines[0] + [
+        line for more in lines[1:] for line in more[1:]
+    ]
+    trials = load_robot_trials([packed[0]])
+    alone = load_robot_trials([t for t, _ in own])
+    assert trials.equals(alone) and list(trials["network"]) == [n for n in nets for _ in range(3)]
+    for net in nets:
+        mine = network_trials(trials, net)
+        assert list(mine.index) == [0, 1, 2] and (mine["network"] == net).all()
+    states, apart = load_robot_states([packed[1]]), load_robot_states([s for _, s in own])
+    assert list(states) == list(apart) == nets
+    for net, (_, qpos) in zip(nets, tested, strict=True):
+        assert states[net].tobytes() == apart[net].tobytes() == qpos.tobytes()
+    with pytest.raises(ValueError, match="rows of another network"):
+        write_robot_part([12, 14], tested[:2], *packed)

@@ -185,15 +185,15 @@ def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
     """The plan routes every run's maps, networks, measures and robot test to one rule, and the
     runs a rule serves are exactly those routed to it: one rule trains every run but the
     measured ones (a job per part: each of the config's own networks, another run's `all`);
-    on the robot a job per network for the config's own networks, one job for another run's
-    (the config's indices or the confirmations' fresh ones); the measured runs with their
+    one rule tests every tested run on the robot, likewise in parts (the config's own networks
+    a job each, another run's, at any indices, in one job `all`); the measured runs with their
     seed's others; every rule a step names exists."""
     plan = plan_runs(config | {"robustness": robustness})
     rules = {
         "soms": {"soms", "measured"},
         "measures": {"measures", "measured"},
         "train": {"train", "measured"},
-        "robot_test": {"robot_test", "run_robot_test", "confirmation_robot_test"},
+        "robot_test": {"robot_test"},
     }
     for step, names in rules.items():
         runs = plan.robot_tested_runs if step == "robot_test" else list(plan.runs)
@@ -204,33 +204,39 @@ def test_each_runs_step_is_made_by_exactly_one_rule(config, robustness):
     measured = {run for group in plan.measured_groups.values() for run in group}
     assert {r for r in plan.runs if plan.rule_for(r, "train") == "measured"} == measured
     assert plan.served_by("train", "train") == [r for r in plan.runs if r not in measured]
-    assert plan.served_by("robot_test", "robot_test") == [MAIN]
+    assert plan.served_by("robot_test", "robot_test") == plan.robot_tested_runs
     assert plan.parts(MAIN) == [f"net{net}" for net in plan.networks(MAIN)]
     assert all(plan.parts(r) == ["all"] for r in plan.runs if r not in measured | {MAIN})
-    fresh = plan.served_by("confirmation_robot_test", "robot_test")
-    assert fresh == plan.confirmation_runs
-    assert plan.fresh_networks == plan.networks(fresh[0]) != plan.networks(MAIN)
+    own = plan.parts(MAIN, "robot_test")
+    assert own == plan.parts(MAIN) and MAIN in plan.robot_tested_runs
+    fresh = plan.confirmation_runs
+    assert all(plan.parts(r, "robot_test") == ["all"] for r in plan.robot_tested_runs[1:])
+    assert fresh and all(plan.networks(r) != plan.networks(MAIN) for r in fresh)
     with pytest.raises(ValueError, match="no rule"):
         plan.rule_for(MAIN, "evaluate")
 
 
-def test_a_run_with_other_network_indices_trains_in_one_job_but_has_no_robot_rule(config):
+def test_a_run_with_other_network_indices_is_trained_and_tested_in_one_job(config):
     """A run of `runs:` with 6 networks is trained like any other (one job, its part `all`); a
-    robot run with such networks has no rule to test it, and the plan says so."""
+    robot run with such networks is tested on the robot by the same rule, its part `all`: a
+    part holds whichever indices its run has, so no set of indices lacks a rule."""
     plan = plan_runs(config | {"runs": {"six": {"network": {"networks": 6}}}})
     assert plan.rule_for("six", "train") == "train" and plan.parts("six") == ["all"]
     assert {MAIN, "six"} <= set(plan.served_by("train", "train"))
     robot = dataclasses.replace(plan.runs["six"], origin="robot")
     odd = dataclasses.replace(plan, runs=plan.runs | {"six": robot})
-    with pytest.raises(ValueError, match="tests networks 00..05 on the robot"):
-        odd.rule_for("six", "robot_test")
-    # a confirmation at the config's own indices is trained like any other run
+    assert odd.rule_for("six", "robot_test") == "robot_test"
+    assert odd.parts("six", "robot_test") == ["all"]
+    # a confirmation at the config's own indices is trained and tested like any other run
     same = plan_runs(config | {"robot": config["robot"] | {
         "confirmation": config["robot"]["confirmation"] | {"first_network": 0}}})  # fmt: skip
-    assert same.fresh_networks == []
     assert all(
-        same.rule_for(run, "robot_test") == "run_robot_test" for run in same.confirmation_runs
+        same.rule_for(run, "robot_test") == "robot_test"
+        and same.parts(run, "robot_test") == ["all"]
+        for run in same.confirmation_runs
     )
+    with pytest.raises(ValueError, match="no parts"):
+        plan.parts(MAIN, "evaluate")
 
 
 #: The variants earlier default builds tested beside the config's own networks: 40 hidden,
@@ -258,7 +264,7 @@ def test_the_default_build_tests_the_own_networks_and_the_confirmations_alone(pl
     assert plan.robot_tested_runs == [MAIN, *plan.confirmation_runs]
     assert plan.confirmation_runs == ["robot_commands_h40_it768000_all_steps_anneal_confirm"]
     assert [row["run"] for row in plan.robot_tested] == [MAIN]
-    assert plan.served_by("run_robot_test", "robot_test") == []
+    assert plan.served_by("robot_test", "robot_test") == [MAIN, *plan.confirmation_runs]
     assert plan.phase1_owners == []  # no variant trains on networks 0.., so no shared phase 1
     full = plan_runs(config | {"robustness": True})
     grid = {NetworkVariant.of(v.row(), config["network"]) for v in NetworkVariant.grid(

@@ -114,6 +114,8 @@ def test_a_training_job_per_own_network_and_per_other_run_in_the_default_dag(dry
     # confirmation's fresh ones too (their part `all`); the measured runs' in measured_seed<n>
     confirmation = load_config()["robot"]["confirmation"]
     assert counts["train"] == 12 + 1 + len(confirmation["variants"])
+    # on the robot likewise: the config's own 12 a job each, each confirmation's in one (`all`)
+    assert counts["robot_test"] == 12 + len(confirmation["variants"])
     # a job per run that makes its own demonstrations (its four objects in it)
     plan = plan_runs(load_config())
     made = [r for r in plan.runs if plan.makes(r, "demos") and plan.runs[r].origin != "sweep"]

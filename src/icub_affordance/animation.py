@@ -12,7 +12,6 @@ No new science here: the robot test's own trials, the camera and the file.
 
 from __future__ import annotations
 
-import csv
 import os
 import textwrap
 from collections.abc import Callable, Mapping, Sequence
@@ -68,7 +67,7 @@ SEQUENCE = 0
 @dataclass(frozen=True)
 class FilmedNetwork:
     """A network to film: its weights, its test, and the trials the robot test recorded of it
-    (the rows of its trials.csv, in the test's order)."""
+    (the rows of its trials.csv as written, in the test's order)."""
 
     network: int
     mapping: str
@@ -82,17 +81,18 @@ def filmed_networks(
     settings: Mapping[str, object],
     nets: list[int],
     weights: list[Weights],
-    trials_files: list[str],
+    recorded: list[list[dict[str, str]]],
 ) -> list[FilmedNetwork]:
-    """The two networks to film, one of each mapping, from their weights and the robot test's
-    trials files; ``settings`` is the run's ``network`` section. A network's mapping is by its
-    place in the run, as in training: a confirmation's fresh networks start at its
-    ``first_network``. Raises where they are not two networks of the run of different mappings,
-    or a trials file is not as long as the test (stale)."""
-    if not len(nets) == len(weights) == len(trials_files) == 2:
+    """The two networks to film, one of each mapping, from their weights and the trials the
+    robot test recorded of each (its rows as written, every value text, in the test's order);
+    ``settings`` is the run's ``network`` section. A network's mapping is by its place in the
+    run, as in training: a confirmation's fresh networks start at its ``first_network``. Raises
+    where they are not two networks of the run of different mappings, or a network's recorded
+    trials are not as many as the test's (stale)."""
+    if not len(nets) == len(weights) == len(recorded) == 2:
         raise ValueError(
             f"two networks (one of each mapping) with their weights and trials, not {nets}, "
-            f"{len(weights)} weights and {len(trials_files)} trials files"
+            f"{len(weights)} weights and {len(recorded)} networks' trials"
         )
     first, count = int(settings.get("first_network", 0)), int(settings["networks"])
     if not all(first <= net < first + count for net in nets):
@@ -101,19 +101,14 @@ def filmed_networks(
     if sorted(mappings) != ["A", "B"]:
         raise ValueError(f"networks {nets} learned mappings {mappings}: one of each is needed")
     films = []
-    for net, mapping, net_weights, trials_path in zip(
-        nets, mappings, weights, trials_files, strict=True
-    ):
-        with open(trials_path, newline="") as f:
-            recorded = list(csv.DictReader(f))
+    for net, mapping, net_weights, rows in zip(nets, mappings, weights, recorded, strict=True):
         setup = TrialSet.of(m, mapping, settings["categorisation_cue"], settings["target"])
-        if len(recorded) != len(setup.trials):
+        if len(rows) != len(setup.trials):
             raise ValueError(
-                f"{trials_path} has {len(recorded)} trials, the test {len(setup.trials)}: "
-                "stale; rerun the robot test (rule robot_test, run_robot_test or "
-                "confirmation_robot_test)"
+                f"network {net}'s robot test recorded {len(rows)} trials, the test has "
+                f"{len(setup.trials)}: stale; rerun the robot test (rule robot_test)"
             )
-        films.append(FilmedNetwork(net, mapping, net_weights, setup, recorded))
+        films.append(FilmedNetwork(net, mapping, net_weights, setup, list(rows)))
     return films
 
 
@@ -146,8 +141,7 @@ def film_trial(
         raise RuntimeError(
             f"network {net}, {trial['task']} {trial['object']} sequence {trial['sequence']}: "
             f"the re-run trial gives {seen}, the robot test recorded {was}. The film would not "
-            "show the recorded trial: rerun the robot test (rule robot_test, run_robot_test or "
-            "confirmation_robot_test) with this code."
+            "show the recorded trial: rerun the robot test (rule robot_test) with this code."
         )
     held = "held" if outcome["success"] else "not held"
     return (

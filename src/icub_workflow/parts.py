@@ -1,10 +1,13 @@
-"""A run's trained networks as files, in parts: the writer and the one loader.
+"""A run's trained and robot-tested networks as files, in parts: the writers and the loaders.
 
-The config's own run trains each network in a job of its own, in parallel at the start, so its
-parts are its networks (``train/net03/weights.npz``, ``curve.csv``). Every other run trains its
-networks in one job, whose part is ``all``: one ``weights.npz`` stacking the networks' arrays
-beside their indices (``networks``), one ``curve.csv`` with a ``network`` column. The arrays are
-the ones a network's own file holds, bit for bit; only the files' layout differs.
+The config's own run trains and tests each network in a job of its own, in parallel at the
+start, so its parts are its networks (``train/net03/weights.npz``, ``curve.csv``;
+``embodied/net03/trials.csv``, ``states.npz``). Every other run trains its networks in one job,
+and tests them on the robot in one job, whose part is ``all``: one ``weights.npz`` stacking the
+networks' arrays beside their indices (``networks``), one ``curve.csv`` with a ``network``
+column; one ``trials.csv`` holding every network's rows in network order (each row names its
+``network``), one ``states.npz`` stacking each network's ``qpos`` beside the indices. The arrays
+and rows are the ones a network's own file holds, bit for bit; only the files' layout differs.
 """
 
 from __future__ import annotations
@@ -12,12 +15,15 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
-from icub_affordance.io import load_npz, save_npz, write_columns
+from icub_affordance.io import load_npz, save_npz, write_columns, write_csv
 from icub_affordance.jordan import Weights
+
+if TYPE_CHECKING:  # pandas is imported where a table is read: a training job is short
+    import pandas as pd
 
 #: The part that holds every network of a run.
 ALL = "all"
@@ -87,6 +93,8 @@ def load_weights(paths: Sequence[str]) -> list[tuple[int, Weights]]:
 def load_curves(paths: Sequence[str]) -> list[tuple[int, pd.DataFrame]]:
     """Every network's learning curve the parts ``paths`` hold, with its index, in the parts'
     order: a one-network part's as its file reads, a part ``all``'s rows of that network."""
+    import pandas as pd
+
     curves = []
     for path in paths:
         folder = Path(path).parent.name
@@ -98,3 +106,64 @@ def load_curves(paths: Sequence[str]) -> list[tuple[int, pd.DataFrame]]:
             (net,) = part_networks(folder)
             curves.append((net, table))
     return curves
+
+
+def write_robot_part(
+    nets: Sequence[int],
+    tested: Sequence[tuple[Sequence[Mapping[str, object]], np.ndarray]],
+    trials_path: str,
+    states_path: str,
+) -> None:
+    """Write one part of a robot test: a network's trial rows and sensed postures (``qpos``,
+    one per trial) as they are, or (several networks) every network's rows in one table in
+    network order and their postures stacked beside their indices. Each row names its network
+    (column ``network``), so the table needs no column more."""
+    if len(nets) != len(tested):
+        raise ValueError(f"{len(nets)} networks, but {len(tested)} robot tests")
+    for net, (rows, _) in zip(nets, tested, strict=True):
+        if any(int(row["network"]) != net for row in rows):
+            raise ValueError(f"network {net}'s robot test has rows of another network")
+    write_csv(trials_path, [row for rows, _ in tested for row in rows])
+    if len(nets) == 1:
+        save_npz(states_path, qpos=tested[0][1])
+        return
+    qpos = np.stack([states for _, states in tested])
+    save_npz(states_path, networks=np.asarray(nets, dtype=np.int64), qpos=qpos)
+
+
+def load_robot_trials(paths: Sequence[str], **read_csv) -> pd.DataFrame:
+    """Every robot trial the parts ``paths`` hold (trials.csv), one table in the parts' order:
+    each network's rows as its robot test wrote them, column ``network`` naming it.
+    ``read_csv``: pandas.read_csv's options (``dtype=str, keep_default_na=False``: as written)."""
+    import pandas as pd
+
+    if not paths:
+        raise ValueError("no robot-test files to read")
+    tables = [pd.read_csv(path, **read_csv) for path in paths]
+    return pd.concat(tables, ignore_index=True) if len(tables) > 1 else tables[0]
+
+
+def network_trials(trials: pd.DataFrame, net: int) -> pd.DataFrame:
+    """One network's rows of a robot-test table (``load_robot_trials``), in the test's order,
+    numbered from 0 as its postures are (``load_robot_states``)."""
+    mine = trials[trials["network"].astype(int) == int(net)]
+    if mine.empty:
+        raise ValueError(f"no robot trial of network {net}")
+    return mine.reset_index(drop=True)
+
+
+def load_robot_states(paths: Sequence[str]) -> dict[int, np.ndarray]:
+    """Every network's sensed postures in a robot test (``qpos``: trial x step x joint) that the
+    parts ``paths`` hold (states.npz), by network index: a one-network part's index from its
+    folder (``net03``), a part ``all``'s from its file."""
+    states = {}
+    for path in paths:
+        folder = Path(path).parent.name
+        if folder == ALL:
+            stored = load_npz(path, required=("networks", "qpos"))
+            for k, net in enumerate(stored["networks"].tolist()):
+                states[net] = stored["qpos"][k]
+        else:
+            (net,) = part_networks(folder)
+            states[net] = load_npz(path, required=("qpos",))["qpos"]
+    return states

@@ -128,10 +128,12 @@ class RunPlan:
         """Does this run make its own ``stage`` (rather than read an earlier run's)?"""
         return self.stage_run(run, stage) == run
 
-    def parts(self, run: str) -> list[str]:
-        """A run's trained networks as files (icub_workflow.parts): one part per network for
-        the config's own run (a job each), else the one part ``all`` (one job: rule train, or
-        a measured run's seed's job)."""
+    def parts(self, run: str, step: str = "train") -> list[str]:
+        """A run's networks as files of a step (``train`` or ``robot_test``;
+        icub_workflow.parts): one part per network for the config's own run (a job each), else
+        the one part ``all`` (one job: rule train or robot_test, or a measured run's seed's)."""
+        if step not in ("train", "robot_test"):
+            raise ValueError(f"no parts for the step {step!r}")
         return part_names(self.networks(run), self.jobs_per_network(run))
 
     def jobs_per_network(self, run: str) -> bool:
@@ -141,44 +143,24 @@ class RunPlan:
         return self.runs[run].origin == "main"
 
     # ---- which rule makes a run's step (the rules ask; none decides) ---------------------------
-    # A rule's outputs are fixed when the rules are read, so a job that makes several networks'
-    # files names them in its rule: one rule per set of network indices a job makes. The plan says
-    # which rule serves each run's step; the rules take the runs it names (``served_by``).
-
-    @property
-    def fresh_networks(self) -> list[str]:
-        """The confirmations' network indices, where they are not the config's own (the same for
-        every confirmation: config robot.confirmation.first_network), else none."""
-        own, runs = self.networks(MAIN), self.confirmation_runs
-        return next((self.networks(r) for r in runs if self.networks(r) != own), [])
+    # One rule per step serves every run, through the wildcards `folder` (the run) and, for the
+    # networks, `part` (``parts``); only a measured run's steps go to its seed's one job. The
+    # plan says which rule serves each run's step; the rules take the runs it names
+    # (``served_by``).
 
     def rule_for(self, run: str, step: str) -> str:
         """The rule that makes ``step`` (soms, train, measures, robot_test) for ``run``.
 
         - A reading's or the size study's run (``measured_groups``) is trained and scored on the
           measures with its seed's others in one job, its own maps too: ``measured``.
-        - ``train``: rule ``train`` for every other run, one job per part (``parts``).
-        - ``robot_test``: a job per network for the config's own run and for a run whose
-          network indices no run-wide rule names; ``run_robot_test``, one job, for the config's
-          indices; ``confirmation_robot_test`` for the confirmations' fresh ones; a robot run
-          with yet another set of indices is refused.
+        - Every other run's step: the step's own rule, one job per part (``parts``): for
+          ``train`` and ``robot_test``, a job per network of the config's own run, one job
+          (part ``all``) for any other run's networks, whatever their indices.
         """
-        measured = self.runs[run].origin in ("reading", "size_dose")
-        if step in ("soms", "train", "measures"):
-            return "measured" if measured else step
-        if step != "robot_test":
+        if step not in ("soms", "train", "measures", "robot_test"):
             raise ValueError(f"no rule is named for the step {step!r}")
-        nets = self.networks(run)
-        if self.jobs_per_network(run) or not nets:
-            return step
-        if nets == self.networks(MAIN):
-            return f"run_{step}"
-        if nets == self.fresh_networks:
-            return f"confirmation_{step}"
-        raise ValueError(
-            f"run {run!r} tests networks {nets[0]}..{nets[-1]} on the robot: only the config's "
-            f"own indices and the confirmations' ({self.fresh_networks}) have a rule"
-        )
+        measured = self.runs[run].origin in ("reading", "size_dose")
+        return "measured" if measured and step != "robot_test" else step
 
     def served_by(self, rule: str, step: str) -> list[str]:
         """The runs whose ``step`` the rule ``rule`` makes (see ``rule_for``); for the robot

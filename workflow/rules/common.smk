@@ -7,6 +7,7 @@ from pathlib import Path
 from icub_affordance.variants import NetworkVariant
 from icub_workflow.code_deps import CodeGraph, page_code
 from icub_workflow.config_checks import check_runs
+from icub_workflow.parts import part_networks
 from icub_workflow.runs import MAIN, plan_runs
 from icub_workflow.scene_files import scene_files
 
@@ -55,8 +56,6 @@ PLAN = plan_runs(config)
 # each run of `runs:`, laid over the config: the schema and the rules between keys
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
 NETWORKS = PLAN.networks(MAIN)
-# the confirmations' fresh network indices (config robot.confirmation), the same for each
-FRESH_NETWORKS = PLAN.fresh_networks
 # Which rule makes each run's maps, networks, measures and robot test is the plan's to say
 # (icub_workflow.runs: RunPlan.rule_for, tested in tests/test_run_plan.py); a rule serves the
 # runs the plan names for it (RunPlan.served_by).
@@ -121,20 +120,27 @@ def run_file(path):
     return lambda wildcards: PLAN.path(run_of(wildcards), path)
 
 
-def weights_files(run, nets=None):
-    """A run's trained weights, part by part (icub_workflow.parts: one file per network of the
-    config's own run or a measured run, one file `all` for any other run): those holding the
-    networks `nets` (all, if None). Read with icub_workflow.parts.load_weights."""
-    parts = PLAN.parts(run)
+def part_files(run, step, name, nets=None):
+    """A run's files `name` of a step (`train` or `robot_test`), part by part
+    (icub_workflow.parts: one file per network of the config's own run; one file `all` for any
+    other run): those holding the networks `nets` (all, if None). Read with
+    icub_workflow.parts' loaders."""
+    parts = PLAN.parts(run, step)
     if nets is not None and parts != ["all"]:
         parts = [f"net{net}" for net in nets]
-    return [PLAN.path(run, f"train/{part}/weights.npz") for part in parts]
+    folder = {"train": "train", "robot_test": "embodied"}[step]
+    return [PLAN.path(run, f"{folder}/{part}/{name}") for part in parts]
+
+
+def weights_files(run, nets=None):
+    """A run's trained weights, those holding the networks `nets` (all, if None). Read with
+    icub_workflow.parts.load_weights."""
+    return part_files(run, "train", "weights.npz", nets)
 
 
 def curve_files(run):
-    """A run's learning curves, part by part (as weights_files; read with
-    icub_workflow.parts.load_curves)."""
-    return [PLAN.path(run, f"train/{part}/curve.csv") for part in PLAN.parts(run)]
+    """A run's learning curves, part by part (read with icub_workflow.parts.load_curves)."""
+    return part_files(run, "train", "curve.csv")
 
 
 def run_weights(wildcards):
@@ -143,10 +149,10 @@ def run_weights(wildcards):
 
 
 def robot_test_weights(wildcards):
-    """The weights the robot test of a run drives with: the wildcard `net`'s (one network a job),
-    or every network's of the run (one job)."""
-    nets = [wildcards.net] if "net" in wildcards.keys() else None
-    return weights_files(run_of(wildcards), nets)
+    """The weights a robot test's part drives with: its network's (`net03`), or every network's
+    of the run (`all`)."""
+    nets = part_networks(wildcards.part)
+    return weights_files(run_of(wildcards), None if nets is None else [f"{n:02d}" for n in nets])
 
 
 def outputs(rule, run, **wildcards):
@@ -154,9 +160,11 @@ def outputs(rule, run, **wildcards):
     return expand(list(getattr(rules, rule).output), folder=PLAN.folder(run), **wildcards)
 
 
-def robot_test_files(run, name):
-    """A tested variant's per-network robot-test files (`name`: trials.csv or states.npz)."""
-    return [PLAN.path(run, f"embodied/net{net}/{name}") for net in PLAN.networks(run)]
+def robot_test_files(run, name, nets=None):
+    """A tested variant's robot-test files (`name`: trials.csv or states.npz), those holding the
+    networks `nets` (all, if None). Read with icub_workflow.parts.load_robot_trials and
+    load_robot_states."""
+    return part_files(run, "robot_test", name, nets)
 
 
 def robot_files(run):

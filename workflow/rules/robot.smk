@@ -1,9 +1,11 @@
-# Beyond the paper: the trained networks drive the simulated arm (one job per network), the
+# Beyond the paper: the trained networks drive the simulated arm (a job per part), the
 # demonstrations are replayed through the same controller, and the robot's success is summarised.
 
 
 rule robot_test:
-    """One network drives the MuJoCo arm through every test trial, closed loop on its senses."""
+    """A run's networks drive the MuJoCo arm through every test trial, closed loop on its senses.
+    A job per part (icub_workflow.parts): one network of the config's own run (`net03`: its
+    twelve in parallel), or every network of another run, one after another (`all`)."""
     input:
         unpack(model_inputs),
         weights=robot_test_weights,
@@ -11,55 +13,25 @@ rule robot_test:
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_test"),
     output:
-        trials="data/{folder}embodied/net{net}/trials.csv",
-        states="data/{folder}embodied/net{net}/states.npz",
+        trials="data/{folder}embodied/{part}/trials.csv",
+        states="data/{folder}embodied/{part}/states.npz",
     params:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
         demos=settings(config["demos"]),
         object_sizes=settings(config["object_sizes_m"]),
     wildcard_constraints:
-        net=r"\d\d",
         folder=served_by("robot_test", "robot_test"),
+        part=r"net\d\d|all",
     priority: 1  # the longest jobs: started early, the short plot jobs fill the end of the run
     resources:
         runtime=10,
     log:
-        "data/logs/{folder}robot_test/net{net}.log",
+        "data/logs/{folder}robot_test/{part}.log",
     benchmark:
-        "data/benchmarks/{folder}robot_test/net{net}.tsv"
+        "data/benchmarks/{folder}robot_test/{part}.tsv"
     script:
         "../scripts/robot_test.py"
-
-
-# A robot variant's networks drive the robot in one job, one network after another (the config's
-# own run keeps a job per network, in parallel): rule run_robot_test for the runs with the
-# config's network indices, rule confirmation_robot_test for the confirmations' fresh ones
-# (RunPlan.rule_for).
-use rule robot_test as run_robot_test with:
-    output:
-        trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in NETWORKS],
-        states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in NETWORKS],
-    wildcard_constraints:
-        folder=served_by("run_robot_test", "robot_test"),
-    log:
-        "data/logs/{folder}robot_test.log",
-    benchmark:
-        "data/benchmarks/{folder}robot_test.tsv"
-
-
-if FRESH_NETWORKS:
-
-    use rule robot_test as confirmation_robot_test with:
-        output:
-            trials=[f"data/{{folder}}embodied/net{net}/trials.csv" for net in FRESH_NETWORKS],
-            states=[f"data/{{folder}}embodied/net{net}/states.npz" for net in FRESH_NETWORKS],
-        wildcard_constraints:
-            folder=served_by("confirmation_robot_test", "robot_test"),
-        log:
-            "data/logs/{folder}robot_test.log",
-        benchmark:
-            "data/benchmarks/{folder}robot_test.tsv"
 
 
 rule robot_replay:
@@ -130,7 +102,8 @@ rule robot_summary:
         effects="data/embodied/effects.json",
     params:
         variants=PLAN.robot_tested,
-        networks=len(NETWORKS),
+        # each variant's files, in the variants' order (the inputs' `trials`, by variant)
+        files=[robot_test_files(run, "trials.csv") for run in PLAN.robot_runs],
         own=MAIN,
     log:
         "data/logs/robot/summary.log",
@@ -157,6 +130,8 @@ rule robot_confirmation:
         trials="data/embodied/confirmation_trials.csv",
     params:
         confirmation=PLAN.confirmation_tested,  # exploration None: not tested in this build
+        # each confirmation's files, in its order (the inputs' `confirmation`, by run)
+        files=[robot_test_files(run, "trials.csv") for run in PLAN.confirmation_runs],
         variant_keys=list(NetworkVariant.keys()),
     log:
         "data/logs/robot/confirmation.log",
@@ -192,14 +167,10 @@ rule robot_filmstrip:
     """A congruent and an incongruent categorisation trial of the same object, on the robot
     (render only)."""
     input:
-        states=lambda w: [
-            PLAN.path(MAIN, f"embodied/net{net}/states.npz") for net in FILM_NETWORKS
-        ],
+        states=robot_test_files(MAIN, "states.npz", FILM_NETWORKS),
         # each film network's own trials, not the joined table: the picture need not wait
         # for the other networks
-        trials=lambda w: [
-            PLAN.path(MAIN, f"embodied/net{net}/trials.csv") for net in FILM_NETWORKS
-        ],
+        trials=robot_test_files(MAIN, "trials.csv", FILM_NETWORKS),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_filmstrip"),
@@ -250,9 +221,7 @@ rule robot_animation:
     input:
         unpack(lambda w: model_inputs({"folder": PLAN.folder(ANIMATED_RUN)})),
         weights=weights_files(ANIMATED_RUN, ANIMATED_NETWORKS),
-        trials=[
-            PLAN.path(ANIMATED_RUN, f"embodied/net{net}/trials.csv") for net in ANIMATED_NETWORKS
-        ],
+        trials=robot_test_files(ANIMATED_RUN, "trials.csv", ANIMATED_NETWORKS),
         scene=config["scene"],
         scene_files=SCENE_FILES,  # the scene and the files it includes (the robot)
         code=script_code("robot_animation"),

@@ -2,7 +2,7 @@
 and incongruent categorisation side by side (a network of each mapping).
 
 Each trial is run again in physics and filmed as it runs; its outcome must be the one the robot
-test recorded (the network's trials.csv), or the film would show another trial than the tables
+test recorded (the run's trials.csv), or the film would show another trial than the tables
 (``animation.film_trial``).
 """
 
@@ -16,7 +16,7 @@ from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
 from icub_affordance.io import redirect_log
 from icub_affordance.train import load_materials
-from icub_workflow.parts import load_weights
+from icub_workflow.parts import load_robot_trials, load_weights, network_trials
 
 
 def as_list(paths):
@@ -32,12 +32,14 @@ with redirect_log(snakemake.log[0]):
     )
     nets = [int(n) for n in snakemake.params.networks]
     trained = dict(load_weights(as_list(snakemake.input.weights)))
+    # the recorded trials as written (every value text), each network's in the test's order
+    recorded = load_robot_trials(as_list(snakemake.input.trials), dtype=str, keep_default_na=False)
     films = filmed_networks(
         m,
         snakemake.params.network,
         nets,
         [trained[net] for net in nets],
-        as_list(snakemake.input.trials),
+        [network_trials(recorded, net).to_dict("records") for net in nets],
     )
     config = DemoConfig(**snakemake.params.demos)
     robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)

@@ -10,18 +10,16 @@ import pandas as pd
 
 from icub_affordance.confirmation import confirmation_table
 from icub_affordance.io import atomic_path, redirect_log
+from icub_workflow.parts import load_robot_trials
 
 with redirect_log(snakemake.log[0]):
-    variants = snakemake.params.confirmation
-    files = list(snakemake.input.confirmation)
-    per_run = len(files) // max(1, len(variants))
-    if len(files) != per_run * len(variants):
-        raise ValueError(f"{len(files)} trial files for {len(variants)} confirmation runs")
+    variants, by_run = snakemake.params.confirmation, snakemake.params.files
+    if [f for files in by_run for f in files] != list(snakemake.input.confirmation):
+        raise ValueError(f"{len(snakemake.input.confirmation)} trial files, not the runs' parts")
     tables, first = [], ["run", *snakemake.params.variant_keys]
-    for k, variant in enumerate(variants):
+    for variant, files in zip(variants, by_run, strict=True):
         labels = {"run": variant["confirmation"]} | {c: variant[c] for c in first[1:]}
-        for path in files[k * per_run : (k + 1) * per_run]:
-            tables.append(pd.read_csv(path).assign(**labels))
+        tables.append(load_robot_trials(files).assign(**labels))  # in network order
     fresh = pd.concat(tables, ignore_index=True) if tables else pd.DataFrame(columns=first)
     fresh = fresh[[*first, *(c for c in fresh.columns if c not in first)]]
     with atomic_path(snakemake.output.trials) as tmp:

@@ -1,19 +1,18 @@
 """A congruent and an incongruent categorisation trial of one object, as the robot moved."""
 
-import pandas as pd
-
 from icub_affordance.body import Robot
 from icub_affordance.figures import filmstrip
-from icub_affordance.io import load_npz, redirect_log
+from icub_affordance.io import redirect_log
+from icub_workflow.parts import load_robot_states, load_robot_trials, network_trials
 
 with redirect_log(snakemake.log[0]):
     obj, seq = snakemake.params.pick["object"], int(snakemake.params.pick["sequence"])
     robot = Robot(snakemake.input.scene, snakemake.params.object_sizes)
     strips = {}
-    for net, path, trials in zip(
-        snakemake.params.networks, snakemake.input.states, snakemake.input.trials, strict=True
-    ):
-        mine = pd.read_csv(trials, keep_default_na=False)  # this network's, in states' order
+    trials = load_robot_trials(snakemake.input.trials, keep_default_na=False)
+    postures = load_robot_states(snakemake.input.states)
+    for net in snakemake.params.networks:
+        mine = network_trials(trials, int(net))  # this network's, in its postures' order
         hit = mine[
             (mine["task"] == "categorisation") & (mine["object"] == obj) & (mine["sequence"] == seq)
         ]
@@ -28,7 +27,7 @@ with redirect_log(snakemake.log[0]):
             f"{kind}, network {int(net)}: categorise {obj.replace('_', ' ')} with a "
             f"{row['target_grip']} grip; touch reads {row['grip_used']}, {outcome}"
         )
-        states = load_npz(path, required=("qpos",))["qpos"][hit.index[0]]
+        states = postures[int(net)][hit.index[0]]
         # every other step, the last step, and the state after the lift test
         frames = [*range(0, len(states) - 2, 2), len(states) - 2, len(states) - 1]
         strips[title] = [robot.render_state(states[k], "closeup", 320, 240) for k in frames]

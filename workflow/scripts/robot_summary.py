@@ -17,19 +17,18 @@ from icub_affordance.robot_stats import (
     variant_effects,
     variant_table,
 )
+from icub_workflow.parts import load_robot_trials
 
 with redirect_log(snakemake.log[0]):
-    files, n_networks = list(snakemake.input.trials), snakemake.params.networks
-    variants = snakemake.params.variants
-    if len(files) != n_networks * len(variants):
-        raise ValueError(f"{len(files)} trial files for {len(variants)} variants")
+    variants, by_variant = snakemake.params.variants, snakemake.params.files
+    if [f for files in by_variant for f in files] != list(snakemake.input.trials):
+        raise ValueError(f"{len(snakemake.input.trials)} trial files, not the variants' parts")
     tables = []
-    for k, variant in enumerate(variants):
-        for path in files[k * n_networks : (k + 1) * n_networks]:
-            table = pd.read_csv(path)
-            for column in reversed(VARIANT_COLUMNS):
-                table.insert(0, column, variant[column])
-            tables.append(table)
+    for variant, files in zip(variants, by_variant, strict=True):
+        table = load_robot_trials(files)  # every network's rows, in network order
+        for column in reversed(VARIANT_COLUMNS):
+            table.insert(0, column, variant[column])
+        tables.append(table)
     trials = pd.concat(tables, ignore_index=True)
     with atomic_path(snakemake.output.trials) as tmp:
         trials.to_csv(tmp, index=False, float_format="%.6f")
