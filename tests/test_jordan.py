@@ -261,6 +261,7 @@ def test_the_annealed_rate_is_full_in_phase_1_then_falls_linearly_over_phase_2()
     np.testing.assert_allclose(np.diff(rates[600:]), -0.075 / 400)  # one step down per iteration
 
 
+@pytest.mark.heavy
 def test_a_rate_per_iteration_is_what_the_torch_loop_does_with_that_rate():
     """The kernel's per-iteration rates: the same bits as one rate when they are all equal, and
     the torch reference's updates, its optimiser's rate set before each sequence, when not."""

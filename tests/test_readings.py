@@ -447,6 +447,7 @@ def test_the_summary_names_its_holm_family():
     assert len(excess) == len(summ[raw]) and excess["p_holm"].notna().all()
 
 
+@pytest.mark.heavy
 def test_the_differences_name_their_holm_families():
     _, diffs = family_tables()
     families = holm_within_families(diffs)
@@ -577,6 +578,7 @@ def matrix_page(tmp_path, summ):
     return pages["readings"], verdicts(tables["readings_summary"])
 
 
+@pytest.mark.heavy
 def test_the_matrix_verdicts_and_phrases_follow_holm_p(tmp_path):
     summ, _ = built_tables()
     key = (
