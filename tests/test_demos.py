@@ -15,7 +15,7 @@ from icub_affordance.body import (
     to_normalised,
 )
 from icub_affordance.demos import is_grasp, make_demo, object_demos
-from icub_affordance.io import load_npz
+from icub_affordance.files import load_npz
 from icub_affordance.spec import GRIPS
 
 INITIAL = initial_posture_deg()  # config/config.yaml

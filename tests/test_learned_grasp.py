@@ -26,8 +26,8 @@ from icub_affordance.body import (
 )
 from icub_affordance.demos import merge_demos, object_demos
 from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
+from icub_affordance.files import save_npz
 from icub_affordance.grasp import DEMO_S, move
-from icub_affordance.io import save_npz
 from icub_affordance.jordan import Weights, run_closed_loop, train_online
 from icub_affordance.robot_test import (
     body_tolerance,

@@ -768,7 +768,7 @@ def test_closed_loop_trials_do_not_depend_on_the_sequence(built):
     one movement whatever the sequence (same start, same inputs); teacher forced, they differ."""
     import numpy as np
 
-    from icub_affordance.io import load_npz
+    from icub_affordance.files import load_npz
 
     hidden = load_npz(built / "data" / "eval" / "hidden.npz")
     sequences = load_config()["demos"]["sequences"]

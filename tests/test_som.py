@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from conftest import som_config
 
-from icub_affordance.io import load_npz
+from icub_affordance.files import load_npz
 from icub_affordance.som import (
     active_units,
     object_activation,

@@ -23,7 +23,7 @@ import numpy as np
 from .body import Robot
 from .demos import DemoConfig
 from .evaluate import TrialSet, describe_trial
-from .io import atomic_path
+from .files import atomic_path
 from .jordan import Weights
 from .robot_test import Outcome, network_policy, outcome_columns, run_trial
 from .spec import TASKS

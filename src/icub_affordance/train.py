@@ -176,14 +176,14 @@ class Phase1:
     rmse: np.ndarray
 
     def save(self, path) -> None:
-        from .io import save_npz
+        from .files import save_npz
 
         save_npz(path, key=np.array(self.key), done=np.array(self.state.done), rmse=self.rmse,
                  **self.state.arrays)  # fmt: skip
 
     @classmethod
     def load(cls, path) -> Phase1:
-        from .io import load_npz
+        from .files import load_npz
 
         arrays = load_npz(path, required=("key", "done", "rmse", *TrainingState.KEYS))
         key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
@@ -450,7 +450,7 @@ def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natur
     factors) with each object's grips at its partner's distance (``swapped_grips``)."""
     if grip_distance not in GRIP_DISTANCES:
         raise ValueError(f"grip_distance must be one of {GRIP_DISTANCES}, not {grip_distance!r}")
-    from .io import load_npz
+    from .files import load_npz
 
     demos = load_npz(demos_path, required=("angles", "commands_deg", "objects", "grips"))
     objects = tuple(demos["objects"].tolist())

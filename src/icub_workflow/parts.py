@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from icub_affordance.io import load_npz, save_npz, write_columns, write_csv
+from icub_affordance.files import load_npz, save_npz, write_columns, write_csv
 from icub_affordance.jordan import Weights
 
 if TYPE_CHECKING:  # pandas is imported where a table is read: a training job is short

@@ -14,7 +14,7 @@ from collections.abc import Callable, Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from icub_affordance.io import atomic_path, load_npz, save_npz, write_text
+from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.jordan import Weights
 from icub_affordance.spec import TASKS
 from icub_affordance.train import Materials, Phase1, TrainConfig, mapping_of, network_seed

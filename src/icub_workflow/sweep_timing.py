@@ -27,7 +27,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path
+from icub_affordance.files import atomic_path
 
 LINKED = ("Snakefile", "workflow", "assets", "src", "benchmarks")
 SWEEP_INPUTS = ("data/vision",)  # a replication makes its own demonstrations and SOMs

@@ -4,7 +4,7 @@ import csv
 import io
 
 from icub_affordance.body import Robot, check_posture_deg
-from icub_affordance.io import redirect_log, write_png, write_text
+from icub_affordance.files import redirect_log, write_png, write_text
 
 with redirect_log(snakemake.log[0]):
     posture = check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")

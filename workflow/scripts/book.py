@@ -7,7 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_affordance.files import atomic_path, redirect_log, write_text
 from icub_workflow.benchmark_tables import (
     benchmark_table,
     executor,

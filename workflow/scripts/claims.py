@@ -13,7 +13,7 @@ from icub_affordance.claims import (
     read_pilot,
     replication_estimates,
 )
-from icub_affordance.io import redirect_log, write_tables
+from icub_affordance.files import redirect_log, write_tables
 from icub_workflow.book.words import direction_codes
 from icub_workflow.parts import load_curves
 

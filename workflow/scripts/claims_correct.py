@@ -6,7 +6,7 @@ exploration beside the confirmatory family."""
 import pandas as pd
 
 from icub_affordance.correct_sensitivity import cells, sensitivity
-from icub_affordance.io import redirect_log, write_tables
+from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):
     trials = pd.concat(

@@ -5,7 +5,7 @@ cells they come from (error_cells.csv)."""
 import pandas as pd
 
 from icub_affordance.error_split import cells, split
-from icub_affordance.io import redirect_log, write_tables
+from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):
     trials = pd.concat(

@@ -3,7 +3,7 @@
 import pandas as pd
 
 from icub_affordance.figures import claims_forest
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_workflow.book.words import CLAIM_OUTCOME_WORDS, DIRECTION_OUTCOMES
 
 with redirect_log(snakemake.log[0]):

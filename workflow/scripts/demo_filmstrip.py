@@ -2,7 +2,7 @@
 
 from icub_affordance.body import Robot
 from icub_affordance.figures import filmstrip
-from icub_affordance.io import load_npz, redirect_log
+from icub_affordance.files import load_npz, redirect_log
 
 with redirect_log(snakemake.log[0]):
     demos = load_npz(snakemake.input.demos, required=("qpos", "objects", "grips"))

@@ -3,7 +3,7 @@ another, each on a freshly loaded robot, then joined with their summary."""
 
 from icub_affordance.body import Robot, check_posture_deg
 from icub_affordance.demos import DemoConfig, merge_demos, object_demos, summary_csv
-from icub_affordance.io import redirect_log, save_npz, write_text
+from icub_affordance.files import redirect_log, save_npz, write_text
 
 with redirect_log(snakemake.log[0]):
     initial = check_posture_deg(snakemake.params.posture, "config key initial_posture_deg")

@@ -4,7 +4,7 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.evaluate import evaluate_network
-from icub_affordance.io import atomic_path, redirect_log, save_npz
+from icub_affordance.files import atomic_path, redirect_log, save_npz
 from icub_affordance.train import load_materials, mapping_of
 from icub_workflow.parts import load_weights
 

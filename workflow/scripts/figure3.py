@@ -1,7 +1,7 @@
 """Figure 3 from the saved vision stages (plot only)."""
 
 from icub_affordance.figures import figure3
-from icub_affordance.io import load_npz, redirect_log
+from icub_affordance.files import load_npz, redirect_log
 
 with redirect_log(snakemake.log[0]):
     arrays = load_npz(snakemake.input.stages)

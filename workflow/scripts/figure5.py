@@ -3,7 +3,7 @@
 import pandas as pd
 
 from icub_affordance.figures import conflict_timecourse, figure5
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_affordance.spec import MODES
 from icub_affordance.stats import categorisation_trials
 

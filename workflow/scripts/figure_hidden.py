@@ -3,7 +3,7 @@
 import pandas as pd
 
 from icub_affordance.figures import hidden_representations
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 
 with redirect_log(snakemake.log[0]):
     hidden_representations(

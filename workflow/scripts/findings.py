@@ -4,7 +4,7 @@ data/book/findings.json (one entry per page) and data/book/tables/*.csv."""
 import json
 from pathlib import Path
 
-from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_affordance.files import atomic_path, redirect_log, write_text
 from icub_workflow.book.pages import page_findings
 
 with redirect_log(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """data/results.sha256: the SHA-256 of each of the build's result files (sha256sum format)."""
 
-from icub_affordance.io import redirect_log, write_text
+from icub_affordance.files import redirect_log, write_text
 from icub_workflow.manifest import digests, format_manifest
 
 with redirect_log(snakemake.log[0]):

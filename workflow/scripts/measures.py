@@ -1,7 +1,7 @@
 """Every test trial's measures (data/eval/measures.csv), and their per-network contrasts and
 per-object means (data/eval/measures.json)."""
 
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_affordance.train import load_materials
 from icub_workflow.steps import measure_networks
 

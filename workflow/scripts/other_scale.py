@@ -3,7 +3,7 @@ train and test (RunPlan.scale), for the book's reproduce page; planned here, not
 
 import json
 
-from icub_affordance.io import redirect_log, write_text
+from icub_affordance.files import redirect_log, write_text
 from icub_workflow.runs import plan_runs
 
 with redirect_log(snakemake.log[0]):

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.io import redirect_log, write_tables
+from icub_affordance.files import redirect_log, write_tables
 from icub_affordance.readings import (
     difference_replications,
     differences,

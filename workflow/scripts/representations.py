@@ -4,7 +4,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path, load_npz, redirect_log, write_text
+from icub_affordance.files import atomic_path, load_npz, redirect_log, write_text
 from icub_affordance.representations import divergence, first_divergent_step, trajectory_table
 
 with redirect_log(snakemake.log[0]):

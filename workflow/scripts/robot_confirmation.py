@@ -9,7 +9,7 @@ per mapping and object.
 import pandas as pd
 
 from icub_affordance.confirmation import confirmation_table
-from icub_affordance.io import atomic_path, redirect_log
+from icub_affordance.files import atomic_path, redirect_log
 from icub_workflow.parts import load_robot_trials
 
 with redirect_log(snakemake.log[0]):

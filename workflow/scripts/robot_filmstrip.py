@@ -2,7 +2,7 @@
 
 from icub_affordance.body import Robot
 from icub_affordance.figures import filmstrip
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_workflow.parts import load_robot_states, load_robot_trials, network_trials
 
 with redirect_log(snakemake.log[0]):

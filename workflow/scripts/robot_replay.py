@@ -3,7 +3,7 @@ postures (the controller's ceiling, and what a perfect network would send)."""
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.io import load_npz, redirect_log, write_csv
+from icub_affordance.files import load_npz, redirect_log, write_csv
 from icub_affordance.robot_test import replay_demos
 
 with redirect_log(snakemake.log[0]):

@@ -5,7 +5,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.io import redirect_log, write_text
+from icub_affordance.files import redirect_log, write_text
 from icub_affordance.robot_stats import robot_statistics
 
 with redirect_log(snakemake.log[0]):

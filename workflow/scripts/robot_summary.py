@@ -9,7 +9,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path, redirect_log, write_text
+from icub_affordance.files import atomic_path, redirect_log, write_text
 from icub_affordance.robot_stats import (
     VARIANT_COLUMNS,
     success_analysis,

@@ -5,7 +5,7 @@ import pandas as pd
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.io import load_npz, redirect_log, write_csv
+from icub_affordance.files import load_npz, redirect_log, write_csv
 from icub_affordance.robot_stats import tolerance_table
 from icub_affordance.robot_test import body_tolerance
 

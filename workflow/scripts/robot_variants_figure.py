@@ -4,7 +4,7 @@ body's tolerance (plot only)."""
 import pandas as pd
 
 from icub_affordance.figures import robot_tolerance, robot_variants
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 
 with redirect_log(snakemake.log[0]):
     variants = pd.read_csv(snakemake.input.variants)

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import yaml
 
-from icub_affordance.io import redirect_log, write_text
+from icub_affordance.files import redirect_log, write_text
 from icub_workflow.dot import canonical_dot
 
 #: What the graph is drawn from: the workflow's code, config and assets, not its data.

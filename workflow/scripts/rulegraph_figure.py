@@ -2,7 +2,7 @@
 
 from pathlib import Path
 
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_workflow.rulegraph_figure import draw_rulegraph
 
 with redirect_log(snakemake.log[0]):

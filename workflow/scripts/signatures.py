@@ -1,6 +1,6 @@
 """The human signatures' conditions on the replications' networks: trials, tests and errors."""
 
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_workflow.book.words import signature_words
 from icub_workflow.steps import signature_tables
 

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.io import load_npz, redirect_log, write_tables
+from icub_affordance.files import load_npz, redirect_log, write_tables
 from icub_affordance.size_dose import (
     SWAPPED,
     crossed_runs,

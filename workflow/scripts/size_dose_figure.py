@@ -4,7 +4,7 @@ dose and grip arrangement, and the manipulation check (plot only)."""
 import pandas as pd
 
 from icub_affordance.figures import dose_response
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_affordance.size_dose import dose_value
 
 

@@ -1,6 +1,6 @@
 """A run's visual maps without size: each object's map its shape's mean (the removal control)."""
 
-from icub_affordance.io import load_npz, redirect_log, save_npz
+from icub_affordance.files import load_npz, redirect_log, save_npz
 from icub_affordance.size_dose import size_free_maps
 
 with redirect_log(snakemake.log[0]):

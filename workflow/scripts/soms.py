@@ -1,6 +1,6 @@
 """Train the three SOMs on the visual maps and save their activations (and weights)."""
 
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_workflow.steps import make_soms
 
 with redirect_log(snakemake.log[0]):

@@ -4,7 +4,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.io import redirect_log, write_text
+from icub_affordance.files import redirect_log, write_text
 from icub_affordance.stats import analyse, anova_table_markdown
 
 with redirect_log(snakemake.log[0]):

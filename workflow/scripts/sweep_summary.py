@@ -4,7 +4,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.io import atomic_path, redirect_log
+from icub_affordance.files import atomic_path, redirect_log
 from icub_affordance.stats import sweep_tables
 
 with redirect_log(snakemake.log[0]):

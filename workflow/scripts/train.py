@@ -2,7 +2,7 @@
 config's own run, a job per network) or every network of the run (`all`), continued from a
 shared phase 1 where the run has one (input `phase1`); save its learning curve and weights."""
 
-from icub_affordance.io import redirect_log
+from icub_affordance.files import redirect_log
 from icub_affordance.train import load_materials
 from icub_workflow.steps import train_part
 

@@ -2,7 +2,7 @@
 
 import sys
 
-from icub_affordance.io import write_text
+from icub_affordance.files import write_text
 from icub_workflow.manifest import compare, read_manifest
 
 manifest = snakemake.input[0]

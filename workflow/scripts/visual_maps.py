@@ -1,7 +1,7 @@
 """The four 10x10 visual maps, and every stage of Figure 3, from the eye camera."""
 
 from icub_affordance.body import Robot, check_posture_deg
-from icub_affordance.io import redirect_log, save_npz
+from icub_affordance.files import redirect_log, save_npz
 from icub_affordance.vision import VisionConfig, check_seen, visual_maps
 
 with redirect_log(snakemake.log[0]):

@@ -14,7 +14,7 @@ import pandas as pd
 from icub_affordance import confirmation as confirmation_science
 from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
-from icub_affordance.io import load_npz
+from icub_affordance.files import load_npz
 from icub_affordance.measures import margin_measure
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.size_dose import (

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from icub_affordance.io import atomic_path, write_csv, write_text
+from icub_affordance.files import atomic_path, write_csv, write_text
 
 
 def test_failed_write_keeps_the_previous_file(tmp_path):
@@ -46,7 +46,7 @@ def test_columns_are_written_as_rows_would_be(tmp_path):
 
     import numpy as np
 
-    from icub_affordance.io import write_columns
+    from icub_affordance.files import write_columns
 
     rng = np.random.default_rng(0)
     columns = {
@@ -73,7 +73,7 @@ def test_columns_are_written_as_rows_would_be(tmp_path):
 def test_tables_are_written_whole_without_their_index(tmp_path):
     import pandas as pd
 
-    from icub_affordance.io import write_tables
+    from icub_affordance.files import write_tables
 
     frame = pd.DataFrame({"a": [1, 2], "b": [0.5, float("nan")]})
     write_tables([(tmp_path / "t.csv", frame)])
