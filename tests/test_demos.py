@@ -16,7 +16,7 @@ from icub_affordance.body import (
 )
 from icub_affordance.demos import is_grasp, make_demo, object_demos
 from icub_affordance.files import load_npz
-from icub_affordance.spec import GRIPS
+from icub_affordance.vocabulary import GRIPS
 
 INITIAL = initial_posture_deg()  # config/config.yaml
 T = {name: i for i, name in enumerate(TOUCH_NAMES)}

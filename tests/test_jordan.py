@@ -13,7 +13,6 @@ from conftest import REPO, train_config
 
 from icub_affordance.jordan import N_INPUT, Weights, run_closed_loop, train_online
 from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
-from icub_affordance.spec import CATEGORISATION, GRASPING
 from icub_affordance.train import (
     context,
     learning_rates,
@@ -23,6 +22,7 @@ from icub_affordance.train import (
     target_grip,
     train_network,
 )
+from icub_affordance.vocabulary import CATEGORISATION, GRASPING
 
 
 def test_network_shapes_and_outputs():

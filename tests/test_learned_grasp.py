@@ -39,7 +39,6 @@ from icub_affordance.robot_test import (
     replay_policy,
     run_trial,
 )
-from icub_affordance.spec import GRASPING, TASKS
 from icub_affordance.train import (
     Materials,
     context,
@@ -48,6 +47,7 @@ from icub_affordance.train import (
     target_grip,
     train_network,
 )
+from icub_affordance.vocabulary import GRASPING, TASKS
 
 CUE = "first_step"
 

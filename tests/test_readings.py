@@ -813,8 +813,8 @@ def test_readings_summary_has_every_cell(built):
 def test_anova_json_has_the_contrasts_per_mode(built):
     import json
 
-    from icub_affordance.spec import MODES
     from icub_affordance.stats import TERMS
+    from icub_affordance.vocabulary import MODES
 
     anova = json.loads((built / "data" / "eval" / "anova.json").read_text())
     assert set(anova["contrasts"]) == set(MODES)

@@ -26,8 +26,8 @@ from .evaluate import TrialSet, describe_trial
 from .files import atomic_path
 from .jordan import Weights
 from .robot_test import Outcome, network_policy, outcome_columns, run_trial
-from .spec import TASKS
 from .train import Materials, mapping_of
+from .vocabulary import TASKS
 
 
 def trial_frames(

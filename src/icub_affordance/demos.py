@@ -15,7 +15,7 @@ import numpy as np
 
 from .body import DOF_MAX_DEG, DOF_MIN_DEG, Robot
 from .grasp import GraspPlan, cage_point, execute_grasp, grip_in_contact, pinch_point
-from .spec import GRIPS
+from .vocabulary import GRIPS
 
 
 @dataclass(frozen=True)

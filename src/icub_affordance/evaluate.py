@@ -18,8 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import Weights, run_closed_loop
-from .spec import GRASPING, MODES, OBJECTS, TASKS
 from .train import Materials, context, target_grip
+from .vocabulary import GRASPING, MODES, OBJECTS, TASKS
 
 
 def evaluate_network(

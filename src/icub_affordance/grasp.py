@@ -16,7 +16,7 @@ import numpy as np
 
 from .body import DOF_MAX_DEG, DOF_MIN_DEG, N_ARM_DOF, N_DOF, Robot
 from .ik import solve_palm_pose
-from .spec import GRIPS
+from .vocabulary import GRIPS
 
 #: Palm frame axes (columns, in world coordinates) for a palm-down hand with the fingers forward.
 PALM_DOWN = np.array([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]])

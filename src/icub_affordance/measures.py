@@ -50,8 +50,8 @@ import numpy as np
 
 from .evaluate import TrialSet, describe_trial
 from .jordan import Weights, run_closed_loop
-from .spec import MODES
 from .train import Materials
+from .vocabulary import MODES
 
 #: The measures that can be declared, in the order of the tables (config ``readings.measures``).
 MEASURES: tuple[str, ...] = (

@@ -44,7 +44,6 @@ from .measures import (
     with_excess,
 )
 from .outcome import Outcome
-from .spec import MODES
 from .stats import (
     categorisation_trials,
     cell_means,
@@ -59,6 +58,7 @@ from .stats import (
     t_term,
     with_outcomes,
 )
+from .vocabulary import MODES
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")

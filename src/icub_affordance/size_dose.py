@@ -30,8 +30,8 @@ from .claims import power, sd_interval
 from .measures import analysed
 from .readings import family_names, flat_term, holm_hypotheses, over_replications
 from .som import active_units
-from .spec import OBJECTS, TASKS
 from .stats import holm, t_term
+from .vocabulary import OBJECTS, TASKS
 
 #: The effect the study is about (the per-network contrast of the same name).
 EFFECT = "size"

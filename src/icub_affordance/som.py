@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from minisom import MiniSom
 
-from .spec import GOAL_RESPONSES, TASKS
+from .vocabulary import GOAL_RESPONSES, TASKS
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights, distinct_contexts, train_together
-from .spec import (
+from .vocabulary import (
     AFTER_PHASE1,
     CATEGORISATION,
     CUES,
@@ -151,7 +151,8 @@ def schedule(config: TrainConfig, n_objects: int, n_sequences: int, rng: np.rand
 
 
 def learning_rates(config: TrainConfig) -> np.ndarray:
-    """Each iteration's learning rate (config ``network.learning_rate_schedule``, spec.SCHEDULES).
+    """Each iteration's learning rate (config ``network.learning_rate_schedule``,
+    vocabulary.SCHEDULES).
 
     ``anneal``: the full rate through phase 1; over phase 2's n iterations the k-th (from 0)
     learns at rate * (n - k) / n, the full rate falling linearly to rate / n at the last.
@@ -166,7 +167,7 @@ def learning_rates(config: TrainConfig) -> np.ndarray:
 @dataclass(frozen=True)
 class Phase1:
     """A network at the end of phase 1: its training state and phase 1's RMSE per iteration.
-    Phase 1 is the same for settings that differ only after it (spec.AFTER_PHASE1: the cue
+    Phase 1 is the same for settings that differ only after it (vocabulary.AFTER_PHASE1: the cue
     timing, the learning-rate schedule), so one training of it serves them all
     (:func:`train_phase1`, the rule ``run_phase1``). ``key`` names what phase 1 depends on
     (:func:`phase1_key`)."""
@@ -192,7 +193,7 @@ class Phase1:
 
 def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> str:
     """What phase 1 of a network depends on: its settings but those that act only after it
-    (spec.AFTER_PHASE1), its mapping, its seed and a digest of what it learns from."""
+    (vocabulary.AFTER_PHASE1), its mapping, its seed and a digest of what it learns from."""
     settings = dataclasses.asdict(config)
     for after in AFTER_PHASE1:
         settings.pop(after)

@@ -16,8 +16,8 @@ from typing import Any
 
 import yaml
 
-from icub_affordance.spec import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
 from icub_affordance.variants import NetworkVariant
+from icub_affordance.vocabulary import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
 from icub_workflow.configs import merged
 
 #: Where a user changes a value (named in every fix).

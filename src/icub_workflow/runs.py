@@ -18,8 +18,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from icub_affordance.claims import seeds as claim_seeds
-from icub_affordance.spec import AFTER_PHASE1
 from icub_affordance.variants import NetworkVariant
+from icub_affordance.vocabulary import AFTER_PHASE1
 from icub_workflow.config_checks import ConfigError
 from icub_workflow.configs import merged
 from icub_workflow.parts import part_names
@@ -238,7 +238,7 @@ class RunPlan:
         """The run whose phase 1 this run's networks continue from (rule run_phase1), or None
         (it trains whole). Robot variants of this build, trained in one job, whose settings
         differ only in what acts after phase 1 (the cue timing, the learning-rate schedule:
-        spec.AFTER_PHASE1) share it: the first of them (in the plan's order) trains it once,
+        vocabulary.AFTER_PHASE1) share it: the first of them (in the plan's order) trains it once,
         and each continues from it to the same bits as when trained whole. Only for these long
         trainings: a short one costs less than its file."""
         if not self._may_share_phase1(run):
@@ -298,8 +298,8 @@ class RunPlan:
 
 
 def _phase1_settings(config: Mapping[str, Any]) -> dict[str, Any]:
-    """A run's config without what acts only after phase 1 (or on no result: spec.AFTER_PHASE1,
-    the cue timing, the rate's schedule, the learning curve's rows)."""
+    """A run's config without what acts only after phase 1 (or on no result:
+    vocabulary.AFTER_PHASE1, the cue timing, the rate's schedule, the learning curve's rows)."""
     network = {k: v for k, v in config["network"].items() if k not in AFTER_PHASE1}
     return dict(config) | {"network": network}
 

@@ -16,10 +16,10 @@ import pandas as pd
 
 from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.jordan import Weights
-from icub_affordance.spec import TASKS
 from icub_affordance.train import Materials, Phase1, TrainConfig, mapping_of, network_seed
 from icub_affordance.train import train_networks as train_side_by_side
 from icub_affordance.train import train_phase1s as train_phase1s_side_by_side
+from icub_affordance.vocabulary import TASKS
 from icub_workflow.parts import load_weights, part_networks, write_part
 
 

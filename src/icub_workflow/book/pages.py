@@ -23,9 +23,9 @@ from icub_affordance.size_dose import (
     ranked_like_size,
 )
 from icub_affordance.som import active_units
-from icub_affordance.spec import MODES
 from icub_affordance.stats import WITHIN
 from icub_affordance.variants import NetworkVariant
+from icub_affordance.vocabulary import MODES
 from icub_workflow.runs import MAIN
 
 from . import text, words
