@@ -13,7 +13,7 @@ from icub_affordance.animation import compose, filmed_networks, trial_frames, wr
 from icub_affordance.body import to_normalised
 from icub_affordance.demos import make_demo
 from icub_affordance.grasp import DEMO_S
-from icub_affordance.robot_test import replay_policy, run_trial
+from icub_affordance.robot_trials import replay_policy, run_trial
 
 
 def film(n: int, colour: tuple[int, int, int], height: int = 30, width: int = 40) -> list:

@@ -29,7 +29,7 @@ from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
 from icub_affordance.files import save_npz
 from icub_affordance.grasp import DEMO_S, move
 from icub_affordance.jordan import Weights, run_closed_loop, train_online
-from icub_affordance.robot_test import (
+from icub_affordance.robot_trials import (
     body_tolerance,
     demo_palms,
     embodied_network,

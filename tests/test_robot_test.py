@@ -18,7 +18,7 @@ from icub_affordance.representations import (
     pca,
 )
 from icub_affordance.robot_stats import ROBOT_FAMILY, success_table, variant_effects
-from icub_affordance.robot_test import (
+from icub_affordance.robot_trials import (
     Outcome,
     network_policy,
     outcome_columns,

@@ -8,7 +8,7 @@ A network that learned the servo targets (config ``network.target: commands``) i
 the servo targets it learned. Its in-silico closed loop feeds each command back as if the arm had
 reached it: true in free space, not where the fingers meet the object and a command lies beyond
 the posture reached. That loop is therefore the plan the network would send unopposed; its own
-closed loop runs through the body, in the robot test (``robot_test``).
+closed loop runs through the body, in the robot test (``robot_trials``).
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Grasp primitives in physics: where the hand goes, how it moves and closes, what touch reads.
 
-The building blocks that both the demonstrator (``demos``) and the robot test (``robot_test``) run
+The building blocks that both the demonstrator (``demos``) and the robot test (``robot_trials``) run
 on the body: inverse kinematics places the palm, the position servos ramp the arm (``move``), a
 grip synergy closes the hand until the fingers stop on the object (``execute_grasp``), the arm
 lifts (``lift_arm``), and the touch sensors tell which grip holds (``grip_in_contact``,

@@ -1,11 +1,11 @@
 """The statistics of the robot test: its trials counted, tabled and tested, for every variant,
 the body's tolerance and the replays.
 
-Kept apart from the trials' physics (``robot_test``) so that the robot jobs start without pandas
+Kept apart from the trials' physics (``robot_trials``) so that the robot jobs start without pandas
 and the statistics, and the summary and the book read the tables without the simulator's code.
 
 In closed loop a network's test sequences of one object and task are one and the same movement
-(``robot_test.embodied_network``): every count, rate and test here is over distinct trials, one
+(``robot_trials.embodied_network``): every count, rate and test here is over distinct trials, one
 per network x object x task (``distinct_trials``), never over the duplicated sequences. The
 variants' congruency and size effects are tested per network (``stats.contrast_tests``), with
 Fisher's exact test where the contrast has no variance; their congruency x size interaction by
