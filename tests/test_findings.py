@@ -17,8 +17,8 @@ import yaml
 from conftest import REPO, load_test_config
 from scipy import stats as sps
 
-from icub_affordance import findings
-from icub_affordance.findings import Verdict, verdict
+from icub_affordance import verdicts
+from icub_affordance.verdicts import Verdict, verdict
 
 
 def analysis(congruent, incongruent, large, small, p_congruency, p_size):
@@ -77,7 +77,7 @@ def test_without_an_anova_nothing_is_significant():
     ],
 )
 def test_an_effect_over_replications_by_its_interval(n, mean, low, high, direction):
-    assert findings.interval_direction(n, mean, low, high) == direction
+    assert verdicts.interval_direction(n, mean, low, high) == direction
 
 
 def test_the_robot_verdicts():
@@ -86,9 +86,9 @@ def test_the_robot_verdicts():
         "categorisation_success": 0.05,
         "replay_success": {"commands": 1.0, "sensed_postures": 0.5},
     }
-    assert findings.robot_verdicts(emb) == {"below_ceiling": True, "at_floor": True}
+    assert verdicts.robot_verdicts(emb) == {"below_ceiling": True, "at_floor": True}
     emb |= {"success_rate": 0.5, "categorisation_success": 0.1}
-    assert findings.robot_verdicts(emb) == {"below_ceiling": False, "at_floor": False}
+    assert verdicts.robot_verdicts(emb) == {"below_ceiling": False, "at_floor": False}
 
 
 # -- the statistics ------------------------------------------------------------------------------
@@ -103,7 +103,7 @@ def test_the_grip_distance_of_a_made_up_demonstration_set():
     angles[:, 1, :, 0] = 0.9  # step 0: excluded
     angles[[0, 2], 1, :, 1:] = 0.3  # large objects: precision 0.3 from power on every DoF
     angles[[1, 3], 1, :, 1:] = 0.1
-    gap = findings.grip_distance(angles, OBJECTS)
+    gap = verdicts.grip_distance(angles, OBJECTS)
     assert gap["large"] == pytest.approx(0.3) and gap["small"] == pytest.approx(0.1)
 
 
@@ -124,7 +124,7 @@ def grip_distance_by_hand(angles, objects, size):
 def test_the_grip_distance_of_random_demonstrations_equals_a_hand_count():
     angles = np.random.default_rng(3).random((4, 2, 3, 6, 5))
     objects = ["small_cube", "big_ball", "big_cube", "small_ball"]  # any order
-    gap = findings.grip_distance(angles, objects)
+    gap = verdicts.grip_distance(angles, objects)
     for size in ("large", "small"):
         assert gap[size] == pytest.approx(grip_distance_by_hand(angles, objects, size), rel=1e-12)
 
@@ -132,14 +132,14 @@ def test_the_grip_distance_of_random_demonstrations_equals_a_hand_count():
 def test_the_learning_curve_summary():
     iterations = np.arange(3000, dtype=float)
     curves = np.stack([iterations, iterations + 2])  # two networks, mean = iteration + 1
-    s = findings.curve_summary(curves, phase1_iterations=1500)
+    s = verdicts.curve_summary(curves, phase1_iterations=1500)
     assert s["n_networks"] == 2 and s["at"] == 2000
     assert s["start"] == pytest.approx(np.mean(np.arange(10)) + 1)
     assert s["around_at"] == pytest.approx(np.mean(np.arange(1900, 2100)) + 1)
     assert s["phase1_end"] == pytest.approx(np.mean(np.arange(1000, 1500)) + 1)
     assert s["end"] == pytest.approx(np.mean(np.arange(2500, 3000)) + 1)
     # a short run: the moment "around 2000" moves to 100 before the end
-    assert findings.curve_summary(curves[:, :1200], 600)["at"] == 1100
+    assert verdicts.curve_summary(curves[:, :1200], 600)["at"] == 1100
 
 
 def test_a_thinned_learning_curve_is_summarised_over_the_iterations_it_kept():
@@ -147,7 +147,7 @@ def test_a_thinned_learning_curve_is_summarised_over_the_iterations_it_kept():
     the kept rows whose iteration falls in it, not the first rows."""
     kept = np.arange(4, 3001, 4)  # iterations 4, 8, ..., 3000
     curves = np.stack([kept, kept + 2.0])
-    s = findings.curve_summary(curves, 1500, iterations=kept)
+    s = verdicts.curve_summary(curves, 1500, iterations=kept)
     assert s["at"] == 2000 and s["start"] == pytest.approx(np.mean([4, 8]) + 1)
     assert s["around_at"] == pytest.approx(np.mean(np.arange(1904, 2101, 4)) + 1)
     assert s["phase1_end"] == pytest.approx(np.mean(np.arange(1004, 1501, 4)) + 1)
@@ -156,7 +156,7 @@ def test_a_thinned_learning_curve_is_summarised_over_the_iterations_it_kept():
 
 def test_the_demonstration_counts():
     summary = pd.DataFrame({"attempts": [1, 3, 1, 2], "lift_m": [0.05, 0.049, 0.051, 0.05]})
-    assert findings.demo_counts(summary) == {
+    assert verdicts.demo_counts(summary) == {
         "n_demos": 4,
         "n_attempts": 7,
         "n_retried": 2,
@@ -166,7 +166,7 @@ def test_the_demonstration_counts():
 
 def test_the_joint_counts():
     joints = pd.DataFrame({"driven_joints": ["a"] * 7 + ["b c", "d", "e f g"]})
-    assert findings.joint_counts(joints) == {"n_dof": 10, "n_driven": 13, "n_hand_driven": 6}
+    assert verdicts.joint_counts(joints) == {"n_dof": 10, "n_driven": 13, "n_hand_driven": 6}
 
 
 # -- the words ---------------------------------------------------------------------------------

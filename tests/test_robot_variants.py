@@ -11,13 +11,6 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
-from icub_affordance.findings import (
-    best_robot_variant,
-    held_interval,
-    robot_effect_verdict,
-    smallest_that_grasps,
-    tolerated_noise,
-)
 from icub_affordance.robot_stats import (
     VARIANT_COLUMNS,
     distinct_trials,
@@ -27,6 +20,13 @@ from icub_affordance.robot_stats import (
     tolerance_table,
     variant_effects,
     variant_table,
+)
+from icub_affordance.verdicts import (
+    best_robot_variant,
+    held_interval,
+    robot_effect_verdict,
+    smallest_that_grasps,
+    tolerated_noise,
 )
 
 OBJECTS = {  # object: (size, congruent under mapping A)

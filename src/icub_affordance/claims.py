@@ -267,9 +267,9 @@ def read_pilot(path: str) -> pd.DataFrame:
 def learning(curves: Sequence[pd.DataFrame], seeds: Sequence[int], networks: int,
              phase1_iterations: int) -> pd.DataFrame:  # fmt: skip
     """Per replication (its ``networks`` curves, in the order of ``seeds``), the training RMSE
-    at the start and at the end (``findings.curve_summary``: the first 10 iterations, the last
+    at the start and at the end (``verdicts.curve_summary``: the first 10 iterations, the last
     500), averaged over its networks."""
-    from .findings import curve_summary
+    from .verdicts import curve_summary
 
     rows = []
     for i, seed in enumerate(seeds):

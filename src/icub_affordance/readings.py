@@ -17,7 +17,7 @@ adjustment is every row of a table that is a hypothesis: every reading x measure
 summary, every comparison x measure x effect of the differences; a null control's rows
 (``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
 out of the family (their ``p_holm`` is empty). A verdict (``direction``) needs the adjusted p
-below ``findings.ALPHA``; otherwise it is ``NONE``, which is not "no difference": only an
+below ``verdicts.ALPHA``; otherwise it is ``NONE``, which is not "no difference": only an
 equivalence test (TOST, with a margin declared in config) can say that. Each table names, per
 row, the family its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
 
@@ -33,7 +33,6 @@ import functools
 import numpy as np
 import pandas as pd
 
-from .findings import ALPHA
 from .measures import (
     analysed,
     can_lack_cells,
@@ -58,6 +57,7 @@ from .stats import (
     t_term,
     with_outcomes,
 )
+from .verdicts import ALPHA
 from .vocabulary import MODES
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.

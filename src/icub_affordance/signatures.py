@@ -23,12 +23,12 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .findings import ALPHA
 from .jordan import Weights, run_closed_loop
 from .outcome import Outcome
 from .replicated import assessable, over_replications
 from .stats import correct_trial_effects, equivalence, holm
 from .train import N_VISUAL, Materials, context, target_grip
+from .verdicts import ALPHA
 from .vocabulary import CATEGORISATION, OBJECTS
 
 #: Where the object is in view at every step: a trial's 9 steps.

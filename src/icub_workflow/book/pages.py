@@ -12,8 +12,8 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance import confirmation as confirmation_science
-from icub_affordance import findings as science
 from icub_affordance import readings as readings_science
+from icub_affordance import verdicts as science
 from icub_affordance.files import load_npz
 from icub_affordance.measures import margin_measure
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
@@ -295,7 +295,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
 
 def _effect_rows(effects: dict, label: str = "") -> tuple[list[dict], list[dict]]:
     """A variant's robot effects (``effects.json``): per measure and term the test, the difference
-    and the p its verdict reads (``findings.robot_effect_statistics``); its counts per cell."""
+    and the p its verdict reads (``verdicts.robot_effect_statistics``); its counts per cell."""
     rows, cells = [], []
     for measure, counted, shown in ROBOT_MEASURES:
         named = {k.replace("ongruent_", "ong. "): c for k, c in effects[measure]["cells"].items()}

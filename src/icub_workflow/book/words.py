@@ -9,14 +9,14 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-from icub_affordance.findings import ALPHA
 from icub_affordance.outcome import Outcome
+from icub_affordance.verdicts import ALPHA
 
 #: The verdict words themselves, each spelled once: the rest of the book layer names them here.
 REPRODUCED, CONFIRMED, REVERSED = "reproduced", "confirmed", "reversed"
 SHOWN, NOT_SHOWN, OPPOSITE = "shown", "not shown", "opposite"
 NOT_ASSESSABLE, NOT_TESTABLE = "not assessable", "not testable"
-#: The robot rows of the scorecard: the bar (``findings.GRASPS``) against the 95% interval of
+#: The robot rows of the scorecard: the bar (``verdicts.GRASPS``) against the 95% interval of
 #: the share held.
 BAR_WORDS = {"above": SHOWN, "includes": "not known", "below": "falls short"}
 
@@ -53,7 +53,7 @@ def claim_verdict(term: Mapping, outcome: str, effect: str) -> str:
 
 
 def robot_word(paper_direction: bool | None, significant: bool) -> str:
-    """A robot effect's verdict (``findings.robot_effect_verdict``'s flags; None: no test)."""
+    """A robot effect's verdict (``verdicts.robot_effect_verdict``'s flags; None: no test)."""
     if paper_direction is None:
         return "not estimable"
     if not significant:
@@ -127,6 +127,6 @@ SIZE_PART_WORDS = {
 }  # fmt: skip
 #: A shown part's direction, from its verdict word.
 PART_DIRECTIONS = {"reproduced": "the paper's way", "reversed": "against the paper"}
-#: An effect over the sweep's replications by its 95% interval (findings.interval_direction).
+#: An effect over the sweep's replications by its 95% interval (verdicts.interval_direction).
 SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "includes 0",
                     "single": "one replication"}  # fmt: skip
