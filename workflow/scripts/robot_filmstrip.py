@@ -21,8 +21,9 @@ with redirect_log(snakemake.log[0]):
                 f"no single categorisation trial of {obj}, sequence {seq}, network {net}"
             )
         row = hit.iloc[0]
-        kind = "congruent" if row["congruent"] == "True" else "incongruent"
-        outcome = "held" if row["success"] == "True" else "not held"
+        # pandas reads a column of True and False as booleans, one with blanks as text
+        kind = "congruent" if str(row["congruent"]) == "True" else "incongruent"
+        outcome = "held" if str(row["success"]) == "True" else "not held"
         title = (
             f"{kind}, network {int(net)}: categorise {obj.replace('_', ' ')} with a "
             f"{row['target_grip']} grip; touch reads {row['grip_used']}, {outcome}"
