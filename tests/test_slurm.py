@@ -102,7 +102,7 @@ def test_the_test_config_on_slurm_is_the_local_build_and_survives_a_failed_job(
 
     # 1. One training job asks for 10 MB (its first attempt): the cluster kills it, and Snakemake
     # reports it failed, naming its Slurm log. (--retries 0: the profile would retry it.)
-    starved = "train:mem_mb=10 if wildcards.net == '02' else 500"
+    starved = "train:mem_mb=10 if wildcards.part == 'net02' else 500"
     failed = _snakemake_on_slurm(work, "--retries", "0", "--set-resources", starved)
     log = failed.stdout + failed.stderr
     assert failed.returncode != 0, log[-3000:]
