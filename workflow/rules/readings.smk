@@ -34,7 +34,7 @@ rule measures:
 
 
 # The measured runs of a seed (RunPlan.measured_groups) trained and measured in one job: the
-# steps of rules soms (for a run that makes its own maps), run_train and measures, the same
+# steps of rules soms (for a run that makes its own maps), train and measures, the same
 # files. A rule's outputs are fixed when the rules are read, so each group has its rule.
 for _group, _runs in MEASURED_GROUPS.items():
     # each run as the job's script reads it: its settings and its files
