@@ -125,7 +125,10 @@ def load_schema(path: str | Path) -> dict[str, Any]:
     from icub_affordance.measures import MEASURES
     from icub_affordance.signatures import TESTS
 
-    schema = yaml.safe_load(Path(path).read_text())
+    # LibYAML's loader where PyYAML has it (it reads the schema ten times faster; every
+    # Snakemake start reads it)
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    schema = yaml.load(Path(path).read_text(), Loader=loader)
     schema["$defs"]["measure"]["enum"] = list(MEASURES)
     entry = schema["properties"]["signatures"]["properties"]["list"]["items"]["properties"]
     entry["signature"]["enum"] = list(TESTS)

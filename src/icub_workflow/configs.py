@@ -3,17 +3,27 @@ run's config. Key by key, as Snakemake lays `--configfile` files over the Snakef
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Mapping
 from typing import Any
 
 
 def merged(base: Mapping[str, Any], overrides: Mapping[str, Any]) -> dict[str, Any]:
     """`base` with `overrides` laid over it, dictionaries merged key by key (neither is changed)."""
-    out = copy.deepcopy(dict(base))
+    out = _copied(dict(base))
     for key, value in overrides.items():
         if isinstance(value, Mapping) and isinstance(out.get(key), Mapping):
             out[key] = merged(out[key], value)
         else:
-            out[key] = copy.deepcopy(value)
+            out[key] = _copied(value)
     return out
+
+
+def _copied(value: Any) -> Any:
+    """A deep copy of a config's tree of mappings and lists (its leaves are numbers, strings and
+    booleans, which need none): what ``copy.deepcopy`` gives, several times faster, since the run
+    plan lays hundreds of runs over the config at every Snakemake start."""
+    if isinstance(value, Mapping):
+        return {key: _copied(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return type(value)(_copied(item) for item in value)
+    return value

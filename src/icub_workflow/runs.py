@@ -344,9 +344,16 @@ class _Planner:
         self.config = config
         self.runs: dict[str, Run] = {}
 
-    def add(self, name: str, overrides: Mapping[str, Any], origin: str) -> str:
-        """A new run; a name the plan already gave (a run of config ``runs`` named like a run the
-        plan makes itself) is refused: its settings would silently replace the plan's run."""
+    def add(
+        self,
+        name: str,
+        overrides: Mapping[str, Any],
+        origin: str,
+        run_config: Mapping[str, Any] | None = None,
+    ) -> str:
+        """A new run (``run_config``: its config, if already laid); a name the plan already gave
+        (a run of config ``runs`` named like a run the plan makes itself) is refused: its
+        settings would silently replace the plan's run."""
         if name in self.runs:
             made = next(o for o in (self.runs[name].origin, origin) if o != "configured")
             raise ConfigError(
@@ -354,7 +361,9 @@ class _Planner:
                 f"{ORIGIN_WORDS.get(made, made)}, and the run of config `runs` would silently "
                 "replace its settings. Allowed: a name the plan does not use. Fix: rename the run."
             )
-        self.runs[name] = Run(name, overrides, merged(self.config, overrides), origin)
+        if run_config is None:
+            run_config = merged(self.config, overrides)
+        self.runs[name] = Run(name, overrides, run_config, origin)
         return name
 
     def find_or_add(self, name: str, overrides: Mapping[str, Any], origin: str) -> str:
@@ -362,7 +371,7 @@ class _Planner:
         (whatever its name), else a new run called ``name``."""
         run_config = merged(self.config, overrides)
         same = next((r.name for r in self.runs.values() if r.config == run_config), None)
-        return same or self.add(name, overrides, origin)
+        return same or self.add(name, overrides, origin, run_config)
 
 
 def _ablation(config: Mapping[str, Any]) -> tuple[str, dict[str, Any]]:
