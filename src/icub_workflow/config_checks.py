@@ -10,6 +10,7 @@ once, with MuJoCo). Every refusal names the config key, the value, what is allow
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
@@ -113,8 +114,16 @@ def _allowed(schema: Mapping[str, Any]) -> str:
         parts.append("the keys " + ", ".join(schema["properties"]))
     text = ", ".join(parts) or "see the schema"
     if schema.get("description"):
-        text += f" ({' '.join(str(schema['description']).split())})"
+        text += f" ({_first_sentence(str(schema['description']))})"
     return text
+
+
+def _first_sentence(description: str) -> str:
+    """The first sentence of a schema description: what the key is, for a refusal; the schema
+    holds the rest (some descriptions run to a paragraph)."""
+    words = " ".join(description.split())
+    end = re.search(r"[.;](?=\s+[A-Z(`])", words)
+    return words[: end.start()] if end else words.rstrip(".")
 
 
 def load_schema(path: str | Path) -> dict[str, Any]:
