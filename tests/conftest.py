@@ -35,9 +35,13 @@ CONFIG = REPO / "config" / "config.yaml"
 TEST_CONFIG = REPO / ".test" / "config" / "config.yaml"
 
 
+#: LibYAML's loader where PyYAML has it: the tests read the config hundreds of times.
+LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
 def load_config() -> dict:
-    """The default config, as the pipeline reads it."""
-    return yaml.safe_load(CONFIG.read_text())
+    """The default config, as the pipeline reads it (a fresh copy at every call)."""
+    return yaml.load(CONFIG.read_text(), Loader=LOADER)
 
 
 def demo_config(**changes) -> DemoConfig:
@@ -58,7 +62,7 @@ def som_config(**changes) -> SOMConfig:
 
 def load_test_config() -> dict:
     """The test config as Snakemake sees it: its keys laid over the default config."""
-    return merged(load_config(), yaml.safe_load(TEST_CONFIG.read_text()))
+    return merged(load_config(), yaml.load(TEST_CONFIG.read_text(), Loader=LOADER))
 
 
 def scratch_workflow(path: Path) -> Path:

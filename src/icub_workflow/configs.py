@@ -22,8 +22,13 @@ def _copied(value: Any) -> Any:
     """A deep copy of a config's tree of mappings and lists (its leaves are numbers, strings and
     booleans, which need none): what ``copy.deepcopy`` gives, several times faster, since the run
     plan lays hundreds of runs over the config at every Snakemake start."""
-    if isinstance(value, Mapping):
+    kind = type(value)
+    if kind is dict or (kind not in _LEAVES and isinstance(value, Mapping)):
         return {key: _copied(item) for key, item in value.items()}
-    if isinstance(value, list | tuple):
-        return type(value)(_copied(item) for item in value)
+    if kind is list or kind is tuple:
+        return kind(_copied(item) for item in value)
     return value
+
+
+#: The leaves a config holds: no test against the Mapping ABC for them (a slow isinstance).
+_LEAVES = frozenset({str, int, float, bool, type(None)})
