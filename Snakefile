@@ -68,13 +68,13 @@ include: "workflow/rules/sweep.smk"
 
 # Every file the default target makes, the intermediate ones too (DEFAULT_TARGET below names
 # those that are missing). Derived, never listed: every file of each run the build makes
-# (common.smk: built_runs, run_outputs) and every output of a rule without wildcards, but the
+# (RunPlan.built, common.smk: run_outputs) and every output of a rule without wildcards, but the
 # sweep's summary, which only `robustness=True` (or the target `sweep`) asks for.
 ON_REQUEST = () if config["robustness"] else ("sweep_summary", "sweep_figure")
 DEFAULT_OUTPUTS = list(
     dict.fromkeys(
         [
-            *(f for run in built_runs() for f in run_outputs(run)),
+            *(f for run in PLAN.built() for f in run_outputs(run)),
             *(
                 f
                 for rule in workflow.rules

@@ -450,3 +450,76 @@ def test_a_user_run_named_like_a_run_the_plan_makes_is_refused(config, name, wor
     for word in (f"runs.{name}", words, "Fix: rename"):
         assert word in message, (word, message)
     assert "half_lr" in plan_runs(config | {"runs": {"half_lr": {"seed": 3}}}).runs
+
+
+# ---- the jobs of the default target, from the plan alone (no Snakemake) ----------------------
+# tests/test_stats.py holds a dry run's job stats to RunPlan.job_counts for each configuration.
+
+
+def test_the_default_build_trains_the_own_networks_a_job_each_and_each_other_run_in_one(
+    plan, config
+):
+    counts = plan.job_counts()
+    n = config["network"]["networks"]
+    confirmed = len(config["robot"]["confirmation"]["variants"])
+    # the config's own networks a job each; the cue ablation's in one job, each confirmation's
+    # fresh ones in one job (their part `all`)
+    assert counts["train"] == n + 1 + confirmed
+    # on the robot likewise: the config's own a job each, each confirmation's in one
+    assert counts["robot_test"] == n + confirmed
+    # tested in silico: the config's own run and the cue ablation
+    assert counts["evaluate"] == counts["stats"] == counts["figure5"] == 2
+    # a replication of the whole model per seed: the confirmation's (every reading) and the
+    # size study's, each trained and measured in one job; demonstrations per seed, the config's
+    # own seed's too; the SOMs of the config's own run alone by rule soms
+    crossed = config["size_dose"]["crossed"]
+    seeds = [*config["confirmation"]["seeds"], *crossed["seeds"][: crossed["replications"]]]
+    assert {r for r in counts if r.startswith("measured_")} == {f"measured_seed{s}" for s in seeds}
+    assert all(counts[f"measured_seed{s}"] == 1 for s in seeds)
+    assert counts["demos"] == len({config["seed"], *seeds})
+    assert counts["soms"] == 1 and counts["measures"] == 1  # the config's own: the book reads it
+    assert counts["size_free_maps"] == int(config["size_dose"]["removal"])
+    assert "run_phase1" not in counts  # no two long trainings share a phase 1 in this build
+
+
+def test_without_robustness_the_test_build_tests_its_own_networks_and_the_confirmation():
+    config = load_test_config() | {"robustness": False}
+    counts = plan_runs(config).job_counts()
+    n = config["network"]["networks"]
+    assert counts["robot_test"] == n + 1  # the confirmation's networks: its part `all`
+    assert "run_phase1" not in counts
+    assert not [rule for rule in counts if rule.startswith("sweep")]
+
+
+def test_with_robustness_the_plan_adds_the_sweep_and_the_robot_grid_in_one_job_each():
+    import itertools
+
+    from icub_affordance.claims import seeds as claim_seeds
+
+    config = load_test_config() | {"robustness": True}
+    counts = plan_runs(config).job_counts()
+    n, net, readings = config["network"]["networks"], config["network"], config["readings"]
+    sweep = config["sweep"]
+    keys = ("seeds", "learning_rate", "hidden", "categorisation_cue")
+    points = list(itertools.product(*(sweep[key] for key in keys)))
+    # a sweep point at a reading's settings and seed is that reading's replication: trained once
+    shared = sum(
+        1
+        for seed, lr, hidden, cue in points
+        if seed in [*claim_seeds(config["confirmation"], True), config["seed"]]
+        and cue in readings["categorisation_cue"]
+        and config["soms"]["goal_response"] in readings["goal_response"]
+        and (lr, hidden) == (net["learning_rate"], net["hidden"])
+    )
+    robot = config["robot"]
+    variants = len(robot["target"]) * len(robot["hidden"]) * len(robot["iterations"])
+    own = (net["target"], net["hidden"], net["iterations"]) in itertools.product(
+        robot["target"], robot["hidden"], robot["iterations"]
+    )
+    # the config's own networks a job each, every other variant's in one, the confirmation's
+    assert counts["robot_test"] == n + variants - own + 1
+    # and trained: the cue ablation, the sweep points (but those that are a reading's
+    # replication, trained with its seed's measured runs) and the robot variants
+    assert counts["train"] == n + 1 + len(points) - shared + variants - own + 1
+    # the main run, the cue ablation and the sweep points are tested in silico
+    assert counts["evaluate"] - 2 == counts["stats"] - 2 == len(points)

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import itertools
 import json
 import re
 
@@ -10,7 +9,6 @@ import pytest
 import yaml
 from conftest import REPO, load_config, load_test_config, run_snakemake, scratch_workflow
 
-from icub_affordance.claims import seeds as claim_seeds
 from icub_workflow.sweep_timing import planned_jobs
 
 COMPARED = [
@@ -166,39 +164,7 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(dry_run):
     counts, book_inputs = counts_and_inputs(plan)
     n = config["network"]["networks"]
     assert networks == points * n
-    # a run's networks in one job: every run trains, the cue ablation, the sweep points, and the
-    # readings' replications that are neither (a reading at a sweep point's settings is that
-    # point); every reading is scored by rule measures (icub_workflow.runs: plan_runs)
-    net, readings = config["network"], config["readings"]
-    shared = sum(
-        1
-        for seed, lr, hidden, cue in itertools.product(
-            *(
-                config["sweep"][key]
-                for key in ("seeds", "learning_rate", "hidden", "categorisation_cue")
-            )
-        )
-        if seed in [*claim_seeds(config["confirmation"], True), config["seed"]]
-        and cue in readings["categorisation_cue"]
-        and config["soms"]["goal_response"] in readings["goal_response"]
-        and (lr, hidden) == (net["learning_rate"], net["hidden"])
-    )
-    # and every robot variant but the config's own: trained, then tested on the robot only
-    robot = config["robot"]
-    variants = len(robot["target"]) * len(robot["hidden"]) * len(robot["iterations"])
-    own = (net["target"], net["hidden"], net["iterations"]) in itertools.product(
-        robot["target"], robot["hidden"], robot["iterations"]
-    )
-    # rule robot_test: the config's own networks a job each, every other variant's in one (its
-    # part `all`), and the confirmation's, as in the default build
-    assert counts["robot_test"] == n + variants - own + 1
-    # the cue ablation, the sweep points (a point that is also a reading's replication is trained
-    # with its seed's measured runs) and the robot variants; the readings are measured runs
-    # (rule train: the config's own networks a job each, every other run's in one, the
-    # confirmation's too)
-    assert counts["train"] == n + 1 + points - shared + variants - own + 1
-    # the main run, the cue ablation and the sweep points are tested in silico
-    assert counts["evaluate"] - 2 == counts["stats"] - 2 == points
+    # the jobs that serve runs are the plan's (tests/test_stats.py, tests/test_run_plan.py)
     assert counts["sweep_summary"] == counts["sweep_figure"] == 1
     assert "sweep_cost" not in counts  # no job starts Snakemake
     assert counts["book"] == 1
@@ -232,11 +198,7 @@ def planned(dry_run_output: str) -> list[dict[str, str]]:
 @pytest.mark.dryrun
 def test_without_robustness_the_book_does_not_wait_for_the_sweep(dry_run):
     counts, book_inputs = counts_and_inputs(dry_run())
-    assert counts["book"] == 1
-    # nor for the robot grid (issue 47): the own networks (a job each) and the confirmation
-    networks = load_test_config()["network"]["networks"]
-    assert counts["robot_test"] == networks + 1  # the confirmation's networks: its part `all`
-    assert "run_phase1" not in counts, counts
+    assert counts["book"] == 1  # nor for the robot grid: tests/test_run_plan.py
     assert not [rule for rule in counts if rule.startswith("sweep")], counts
     assert not [n for n in book_inputs if n.startswith("data/") and "sweep" in n], book_inputs
 

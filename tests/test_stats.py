@@ -7,10 +7,11 @@ import json
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import REPO, load_config
+from conftest import REPO, load_config, load_test_config
 from scipy import stats as sps
 
 from icub_workflow.runs import plan_runs
+from icub_workflow.sweep_timing import planned_jobs
 
 
 @pytest.fixture(scope="module")
@@ -101,24 +102,30 @@ def test_mapping_a_is_the_first_half_of_the_networks(outputs):
     assert (mapping[: n // 2] == "A").all() and (mapping[n // 2 :] == "B").all()
 
 
-@pytest.mark.dryrun
-def test_a_training_job_per_own_network_and_per_other_run_in_the_default_dag(dry_run):
-    result = dry_run("--quiet", "rules", config=REPO / "config" / "config.yaml")
-    assert result.returncode == 0, result.stderr
-    counts = {}
-    for line in result.stdout.splitlines():
-        parts = line.split()
-        if len(parts) == 2 and parts[1].isdigit():
-            counts[parts[0]] = int(parts[1])
-    # a job per network: the config's own 12; the cue ablation's networks in one job, each
-    # confirmation's fresh ones too (their part `all`); the measured runs' in measured_seed<n>
-    confirmation = load_config()["robot"]["confirmation"]
-    assert counts["train"] == 12 + 1 + len(confirmation["variants"])
-    # on the robot likewise: the config's own 12 a job each, each confirmation's in one (`all`)
-    assert counts["robot_test"] == 12 + len(confirmation["variants"])
-    # a job per run that makes its own demonstrations (its four objects in it)
-    plan = plan_runs(load_config())
-    made = [r for r in plan.runs if plan.makes(r, "demos") and plan.runs[r].origin != "sweep"]
-    assert counts["demos"] == len(made)
-    # tested in silico: the config's own run and the cue ablation
-    assert counts["evaluate"] == 2 and counts["stats"] == 2
+@pytest.mark.parametrize(
+    "config, args",
+    [
+        (None, ("--quiet", "rules")),  # the default config
+        ({"robustness": False}, ()),  # the test config
+        ({"robustness": True}, ("--config", "robustness=True")),
+    ],
+    ids=["default", "test", "test-robustness"],
+)
+def test_the_dag_makes_the_jobs_the_run_plan_predicts(dry_run, config, args):
+    """Snakemake's DAG of the default target has, for each rule that serves runs, the jobs the
+    run plan counts (RunPlan.job_counts, whose numbers tests/test_run_plan.py checks without
+    Snakemake), and one job of every other rule: the plan is what the rules build."""
+    if config is None:
+        result = dry_run(*args, config=REPO / "config" / "config.yaml")
+        settings = load_config()
+    else:
+        result = dry_run(*args)
+        settings = load_test_config() | config
+    assert result.returncode == 0, result.stderr[-3000:]
+    dag = planned_jobs(result.stdout)
+    predicted = plan_runs(settings).job_counts()
+    assert set(predicted) <= set(dag), set(predicted) - set(dag)
+    assert {rule: dag[rule] for rule in predicted} == predicted
+    assert {rule: n for rule, n in dag.items() if rule not in predicted} == {
+        rule: 1 for rule in dag if rule not in predicted
+    }

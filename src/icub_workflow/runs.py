@@ -269,6 +269,78 @@ class RunPlan:
                 groups.setdefault(f"seed{run.config['seed']}", []).append(name)
         return groups
 
+    # ---- what the default target makes (the rules and the tests read it here) ------------------
+
+    def built(self, users: bool = True) -> list[str]:
+        """The runs the default target makes: the config's own, config ``runs`` (unless not
+        ``users``) and the cue ablation (whole), the robot variants and confirmations tested in
+        this build, the readings' and the size study's runs, and with robustness the sweep's
+        points; each once."""
+        user_runs = set(self.configured) - {self.ablation}
+        runs = [
+            *(run for run in self.whole if users or run not in user_runs),
+            *self.robot_tested_runs,
+            *(row["run"] for row in self.readings),
+            *(row["run"] for row in self.size_dose),
+            *(self.sweep if self.robustness else []),
+        ]
+        return list(dict.fromkeys(runs))
+
+    def measured(self, run: str) -> bool:
+        """A run of the readings or the size study: its trials scored on the declared measures."""
+        return run in {row["run"] for row in [*self.readings, *self.size_dose]}
+
+    def steps(self, run: str, tests: bool = True) -> list[str]:
+        """The steps whose files a run makes (each names its rule's outputs): its maps made
+        size-free, demonstrations and SOMs (unless it reads an earlier run's, ``stage_run``),
+        its networks, and (``tests``) the in-silico tests, ANOVAs and Figure 5. A robot variant
+        is tested on the robot only: its in-silico closed loop would feed a servo target back
+        as the posture reached (icub_affordance.evaluate)."""
+        steps = []
+        if self.makes(run, "maps") and self.config(run)["size_free_input"]:
+            steps.append("size_free_maps")
+        steps += [stage for stage in ("demos", "soms") if self.makes(run, stage)]
+        steps.append("train")
+        if tests and not self.trained_for_robot(run):
+            steps += ["evaluate", "stats", "figure5"]
+        return steps
+
+    def built_steps(self, run: str) -> list[str]:
+        """The steps the default target makes of a run, for each part it plays: its model and
+        tests (a measured run that is neither whole nor a sweep point is scored on the measures
+        only, not tested in silico), its measures (the config's own too: the book reads them),
+        and its robot test."""
+        sweep_point = self.robustness and run in self.sweep
+        tested = run in self.whole or sweep_point or not self.measured(run)
+        steps = self.steps(run, tests=tested)
+        if self.measured(run) or run == MAIN:
+            steps.append("measures")
+        if run in self.robot_tested_runs:
+            steps.append("robot_test")
+        return steps
+
+    def job_counts(self) -> dict[str, int]:
+        """How many jobs each rule that serves runs has in the default target, from the plan
+        alone: a job per step of each built run, per part for the networks and the robot test
+        (``parts``), and one per seed for the measured runs (``measured_groups``: their rule
+        ``measured_seed<n>``). The tests hold a dry run's job stats to these numbers."""
+        counts: dict[str, int] = {}
+        groups = {run: group for group, runs in self.measured_groups.items() for run in runs}
+        for run in self.built():
+            for step in self.built_steps(run):
+                rule = step
+                if step in ("soms", "train", "measures", "robot_test"):
+                    rule = self.rule_for(run, step)
+                if rule == "measured":
+                    counts[f"measured_{groups[run]}"] = 1
+                    continue
+                jobs = len(self.parts(run, step)) if step in ("train", "robot_test") else 1
+                counts[rule] = counts.get(rule, 0) + jobs
+        owners = {self.phase1_run(run) for run in self.built()} - {None}
+        if owners:
+            counts["run_phase1"] = len(owners)
+        return counts
+
     def scale(self) -> dict[str, int]:
         """How much this plan's build trains and tests (the book's reproduce page says it)."""
         return {

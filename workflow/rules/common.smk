@@ -172,59 +172,31 @@ def robot_files(run):
     return robot_test_files(run, "trials.csv") + robot_test_files(run, "states.npz")
 
 
+def step_files(run, step):
+    """The files a step of a run makes (RunPlan.steps): its rule's outputs in the run's folder,
+    part by part for the networks and the robot test."""
+    if step == "train":
+        return outputs("train", run, part=PLAN.parts(run))
+    if step == "robot_test":
+        return robot_files(run)
+    return outputs(step, run)
+
+
 def run_files(run, tests=True):
-    """Every file a run makes: its demonstrations and SOMs (unless it reads an earlier run's,
-    PLAN.stage_run), each network's curve and weights, and (`tests`) the in-silico tests,
-    ANOVAs and Figure 5. A robot variant is tested on the robot only: its in-silico closed loop
-    would feed a servo target back as the posture reached (icub_affordance.evaluate).
+    """Every file a run makes (RunPlan.steps: its demonstrations and SOMs unless it reads an
+    earlier run's, its networks, and with `tests` its in-silico tests).
 
     All of them are inputs of the run's target, not only its last files: Snakemake does not
     remake a missing file that no job still to run needs, so a deleted (or corrupt, and deleted
     as the error says) intermediate file would otherwise stay missing after a green run.
     """
-    files = []
-    if PLAN.makes(run, "maps") and PLAN.config(run)["size_free_input"]:
-        files += outputs("size_free_maps", run)
-    if PLAN.makes(run, "demos"):
-        files += outputs("demos", run)
-    if PLAN.makes(run, "soms"):
-        files += outputs("soms", run)
-    files += outputs("train", run, part=PLAN.parts(run))
-    if tests and not PLAN.trained_for_robot(run):
-        files += [f for rule in ("evaluate", "stats", "figure5") for f in outputs(rule, run)]
-    return files
-
-
-def measured(run):
-    """A run of the readings or the size study: its trials scored on the declared measures."""
-    return run in {row["run"] for row in [*PLAN.readings, *PLAN.size_dose]}
-
-
-def built_runs(users=True):
-    """The runs the default target makes: the config's own, config `runs` (unless not `users`)
-    and the cue ablation (whole), the robot variants and confirmations tested in this build, the
-    readings' and the size study's runs, and with robustness the sweep's points; each once."""
-    runs = [
-        *(run for run in PLAN.whole if users or run not in config["runs"]),
-        *PLAN.robot_tested_runs,
-        *(row["run"] for row in PLAN.readings),
-        *(row["run"] for row in PLAN.size_dose),
-        *(PLAN.sweep if config["robustness"] else []),
-    ]
-    return list(dict.fromkeys(runs))
+    return [f for step in PLAN.steps(run, tests) for f in step_files(run, step)]
 
 
 def run_outputs(run):
-    """Every file the default target makes of a run, for each part it plays: its model and tests
-    (run_files; a measured run that is neither whole nor a sweep point is scored on the measures
-    only, not tested in silico), its measures, and its robot test."""
-    sweep_point = config["robustness"] and run in PLAN.sweep
-    files = run_files(run, tests=run in PLAN.whole or sweep_point or not measured(run))
-    if measured(run) or run == MAIN:  # the book reads the config's own run's measures too
-        files += outputs("measures", run)
-    if run in PLAN.robot_tested_runs:
-        files += robot_files(run)
-    return files
+    """Every file the default target makes of a run, for each part it plays
+    (RunPlan.built_steps)."""
+    return [f for step in PLAN.built_steps(run) for f in step_files(run, step)]
 
 
 def job_records(files):

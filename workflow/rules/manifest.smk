@@ -6,7 +6,7 @@ from icub_workflow.manifest import result_files
 # but those of a run of config `runs` that plays no other part (the user's own experiments, which
 # the book does not show: adding one reruns nothing of the main run's, the manifest and the book
 # included). A user's run that is also, say, a reading (the same settings) keeps its files here.
-_USER_ONLY = set(built_runs()) - set(built_runs(users=False))
+_USER_ONLY = set(PLAN.built()) - set(PLAN.built(users=False))
 _USER_RUN_FILES = {f for run in _USER_ONLY for f in run_outputs(run)}
 RESULT_FILES = result_files(f for f in DEFAULT_OUTPUTS if f not in _USER_RUN_FILES)
 
