@@ -18,7 +18,6 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-from scipy.special import expit
 
 N_VISUAL = 100
 N_PROPRIO = 16
@@ -66,6 +65,10 @@ class Weights:
 
 
 def sigmoid(z: np.ndarray) -> np.ndarray:
+    # SciPy's special functions are imported where used: every Snakemake start reads this
+    # module (the config's measures are named in the package), and they take a quarter second
+    from scipy.special import expit
+
     return expit(z)
 
 
