@@ -135,3 +135,7 @@ rule paper:
     """Target: the paper's own model, its figures and its ANOVA (snakemake -c2 paper)."""
     input:
         PAPER_OUTPUTS,
+
+
+# what the rules' code imports, parsed this time, kept for the next start (common.smk: _CODE)
+_CODE.save()

@@ -67,6 +67,31 @@ def test_closure_follows_relative_absolute_and_nested_imports(tmp_path):
     assert names("import os\nimport numpy") == []
 
 
+def test_the_import_cache_follows_edits_new_modules_and_survives_a_broken_file(tmp_path):
+    """What a graph parsed is kept in its cache file; a later graph reading that file gives the
+    closure a fresh parse gives, after a module's edit and after a module is added (the cache
+    keeps what a source names, not which names are project modules), and a broken cache file
+    is parsed afresh."""
+    src = write_package(tmp_path / "src", {"a": "from . import b\n", "b": ""})
+    cache = tmp_path / "cache" / "code_deps.json"
+
+    def closure(graph: CodeGraph) -> list[str]:
+        return [p.name for p in graph.closure(["from icub_affordance import a"])]
+
+    first = CodeGraph([src], cache=cache)
+    assert closure(first) == ["__init__.py", "a.py", "b.py"]
+    first.save()
+    assert json.loads(cache.read_text())  # kept
+    (src / "icub_affordance" / "a.py").write_text("from . import b\nfrom . import c\n")
+    assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py", "b.py"]  # no c yet
+    (src / "icub_affordance" / "c.py").write_text("")
+    assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py", "b.py", "c.py"]
+    (src / "icub_affordance" / "a.py").write_text("")
+    assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py"]
+    cache.write_text("{not json")
+    assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py"]
+
+
 def test_page_code_reads_code_cells_without_their_options(tmp_path):
     page = tmp_path / "p.md"
     page.write_text(

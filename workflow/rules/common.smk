@@ -12,8 +12,12 @@ from icub_workflow.runs import MAIN, plan_runs
 from icub_workflow.scene_files import scene_files
 
 
-# the project's own code: the science package and the workflow's (src/)
-_CODE = CodeGraph([Path(workflow.basedir) / "src"])
+# the project's own code: the science package and the workflow's (src/); what each source
+# imports is kept beside the compiled modules (Snakefile: _CODE.save), by the source's digest
+_CODE = CodeGraph(
+    [Path(workflow.basedir) / "src"],
+    cache=Path(workflow.basedir) / "src" / "icub_workflow" / "__pycache__" / "code_deps.json",
+)
 
 
 def script_code(*scripts, pages=()):
