@@ -20,14 +20,14 @@ from functools import partial
 
 import numpy as np
 
-from .body import Robot
-from .demos import DemoConfig
-from .evaluate import TrialSet, describe_trial
-from .files import atomic_path
-from .jordan import Weights
-from .robot_trials import Outcome, network_policy, outcome_columns, run_trial
-from .train import Materials, mapping_of
-from .vocabulary import TASKS
+from icub_affordance.body import Robot
+from icub_affordance.demos import DemoConfig
+from icub_affordance.evaluate import TrialSet, describe_trial
+from icub_affordance.files import atomic_path
+from icub_affordance.jordan import Weights
+from icub_affordance.robot_trials import Outcome, network_policy, outcome_columns, run_trial
+from icub_affordance.train import Materials, mapping_of
+from icub_affordance.vocabulary import TASKS
 
 
 def trial_frames(

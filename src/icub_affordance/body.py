@@ -17,7 +17,7 @@ os.environ.setdefault("MUJOCO_GL", "egl")
 
 import mujoco  # noqa: E402
 
-from .vocabulary import (  # noqa: E402, F401  (re-exported: the body's interface)
+from icub_affordance.vocabulary import (  # noqa: E402, F401  (re-exported: the body's interface)
     DOF_MAX_DEG,
     DOF_MIN_DEG,
     DOF_NAMES,

@@ -37,7 +37,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from .vocabulary import OBJECT_NAMES
+from icub_affordance.vocabulary import OBJECT_NAMES
 
 #: The seed sets of a confirmation, in the order of data/embodied/confirmation.csv.
 SEED_SETS = ("exploration", "confirmation")

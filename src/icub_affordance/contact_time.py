@@ -21,9 +21,9 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .claims import direction
-from .robot_stats import distinct_trials
-from .stats import contrast_tests, holm, per_network_contrasts
+from icub_affordance.claims import direction
+from icub_affordance.robot_stats import distinct_trials
+from icub_affordance.stats import contrast_tests, holm, per_network_contrasts
 
 #: The family the declared tests are Holm-adjusted in, over themselves alone.
 FAMILY = "declared: contact-time congruency on fresh networks"

@@ -27,7 +27,7 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from .stats import CODING, categorisation_trials, coded, holm, with_outcomes
+from icub_affordance.stats import CODING, categorisation_trials, coded, holm, with_outcomes
 
 #: The family of these tests: an exploration, apart from the confirmatory family.
 FAMILY = "exploration: correct-trial sensitivity"

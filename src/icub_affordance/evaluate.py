@@ -17,9 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import Weights, run_closed_loop
-from .train import Materials, context, target_grip
-from .vocabulary import GRASPING, MODES, OBJECTS, TASKS
+from icub_affordance.jordan import Weights, run_closed_loop
+from icub_affordance.train import Materials, context, target_grip
+from icub_affordance.vocabulary import GRASPING, MODES, OBJECTS, TASKS
 
 
 def evaluate_network(

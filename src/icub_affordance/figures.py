@@ -14,9 +14,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from .files import atomic_path  # noqa: E402
-from .outcome import Outcome  # noqa: E402
-from .variants import NetworkVariant  # noqa: E402
+from icub_affordance.files import atomic_path  # noqa: E402
+from icub_affordance.outcome import Outcome  # noqa: E402
+from icub_affordance.variants import NetworkVariant  # noqa: E402
 
 LABELS = {
     "big_ball": "big ball",
@@ -299,8 +299,8 @@ def readings_effects(summary, replications, path) -> None:
     on Holm's p (``readings.direction``), and each replication's estimate as a small dot. A
     measure with a null control (``measures.NULL_CONTROLS``) shows it in the same panel, just
     below each reading, as an open grey square: the effect the denominator alone makes."""
-    from .measures import NULL_CONTROLS, is_null_control
-    from .readings import direction
+    from icub_affordance.measures import NULL_CONTROLS, is_null_control
+    from icub_affordance.readings import direction
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     readings = list(dict.fromkeys(summary["reading"]))
@@ -494,7 +494,7 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
     (positive: the paper's direction, large lower) and each replication's estimate, the removal
     control (no size in the input) at the left, apart. Last row: the manipulation check, the
     large/small ratio of the clusters' units per shape and map."""
-    from .measures import is_null_control
+    from icub_affordance.measures import is_null_control
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     cues = list(dict.fromkeys(summary["cue"]))
@@ -595,7 +595,7 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     errors over replications."""
     import pandas as pd
 
-    from .signatures import IN_VIEW, bin_effects, network_errors, replication_effects
+    from icub_affordance.signatures import IN_VIEW, bin_effects, network_errors, replication_effects
 
     def unit_means(table, by, column):
         table = table[table["dropped"] == -1] if "dropped" in table else table

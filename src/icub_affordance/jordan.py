@@ -101,7 +101,7 @@ class TrainingState:
         """The state before the first iteration, for these initial weights and the contexts
         (objects, tasks, steps-1, 200) the training will show; ``unique``: their distinct
         contexts, when known already (networks of one run share them)."""
-        from .jordan_kernel import project_contexts
+        from icub_affordance.jordan_kernel import project_contexts
 
         if unique is None:
             unique = _distinct_contexts(contexts)[0]
@@ -139,7 +139,7 @@ class TrainingState:
     ) -> np.ndarray:
         """Train on, in place, over ``schedule`` (see :func:`train_online` for the arguments);
         return each of its iterations' RMSE, measured before that sequence's updates."""
-        from .jordan_kernel import train_schedule
+        from icub_affordance.jordan_kernel import train_schedule
 
         tasks, objects, sequences = (np.ascontiguousarray(a, dtype=np.int64) for a in schedule)
         contexts = np.ascontiguousarray(contexts, dtype=np.float64)
@@ -170,7 +170,7 @@ class TrainingState:
 
     def weights(self) -> Weights:
         """The weights the training has reached (the state itself can train on)."""
-        from .jordan_kernel import finish
+        from icub_affordance.jordan_kernel import finish
 
         a = {k: v.copy() for k, v in self.arrays.items()}
         finish(
@@ -249,7 +249,7 @@ def train_together(
     (``jordan_kernel.train_lanes8``, ``train_lanes4``). A short group is filled with copies of
     its first network, trained and dropped; a last network alone is trained alone.
     """
-    from . import jordan_kernel
+    from icub_affordance import jordan_kernel
 
     n = len(states)
     if not (len(learning_rates) == len(grips) == len(schedules) == n):

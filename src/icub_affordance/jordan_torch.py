@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from .jordan import N_INPUT, N_OUTPUT, N_VISUAL, Weights
+from icub_affordance.jordan import N_INPUT, N_OUTPUT, N_VISUAL, Weights
 
 
 class JordanNet(torch.nn.Module):

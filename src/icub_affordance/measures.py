@@ -48,10 +48,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .evaluate import TrialSet, describe_trial
-from .jordan import Weights, run_closed_loop
-from .train import Materials
-from .vocabulary import MODES
+from icub_affordance.evaluate import TrialSet, describe_trial
+from icub_affordance.jordan import Weights, run_closed_loop
+from icub_affordance.train import Materials
+from icub_affordance.vocabulary import MODES
 
 #: The measures that can be declared, in the order of the tables (config ``readings.measures``).
 MEASURES: tuple[str, ...] = (

@@ -33,7 +33,7 @@ import functools
 import numpy as np
 import pandas as pd
 
-from .measures import (
+from icub_affordance.measures import (
     analysed,
     can_lack_cells,
     is_derived,
@@ -42,8 +42,8 @@ from .measures import (
     margin_measure,
     with_excess,
 )
-from .outcome import Outcome
-from .stats import (
+from icub_affordance.outcome import Outcome
+from icub_affordance.stats import (
     categorisation_trials,
     cell_means,
     correct_trial_effects,
@@ -57,8 +57,8 @@ from .stats import (
     t_term,
     with_outcomes,
 )
-from .verdicts import ALPHA
-from .vocabulary import MODES
+from icub_affordance.verdicts import ALPHA
+from icub_affordance.vocabulary import MODES
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
 EFFECTS: tuple[str, ...] = ("congruency", "size")

@@ -27,8 +27,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .body import TOUCH_NAMES
-from .stats import (
+from icub_affordance.body import TOUCH_NAMES
+from icub_affordance.stats import (
     adjust_families,
     categorisation_trials,
     cell_means,
@@ -42,7 +42,7 @@ from .stats import (
     simple_effects,
     trial_conditions,
 )
-from .variants import NetworkVariant
+from icub_affordance.variants import NetworkVariant
 
 #: The family of the config's own networks' robot tests in ``success_analysis``.
 OWN_ROBOT_FAMILY = "exploration: the config's own networks on the robot"

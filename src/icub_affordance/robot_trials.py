@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .body import (
+from icub_affordance.body import (
     DOF_MAX_DEG,
     DOF_MIN_DEG,
     N_ARM_DOF,
@@ -41,11 +41,11 @@ from .body import (
     to_degrees,
     to_normalised,
 )
-from .demos import DemoConfig
-from .evaluate import TrialSet, trial_row
-from .grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
-from .jordan import Weights, network_step
-from .train import Materials
+from icub_affordance.demos import DemoConfig
+from icub_affordance.evaluate import TrialSet, trial_row
+from icub_affordance.grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
+from icub_affordance.jordan import Weights, network_step
+from icub_affordance.train import Materials
 
 #: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.
 Policy = Callable[[int, np.ndarray], np.ndarray]

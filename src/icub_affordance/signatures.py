@@ -23,13 +23,13 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .jordan import Weights, run_closed_loop
-from .outcome import Outcome
-from .replicated import assessable, over_replications
-from .stats import correct_trial_effects, equivalence, holm
-from .train import N_VISUAL, Materials, context, target_grip
-from .verdicts import ALPHA
-from .vocabulary import CATEGORISATION, OBJECTS
+from icub_affordance.jordan import Weights, run_closed_loop
+from icub_affordance.outcome import Outcome
+from icub_affordance.replicated import assessable, over_replications
+from icub_affordance.stats import correct_trial_effects, equivalence, holm
+from icub_affordance.train import N_VISUAL, Materials, context, target_grip
+from icub_affordance.verdicts import ALPHA
+from icub_affordance.vocabulary import CATEGORISATION, OBJECTS
 
 #: Where the object is in view at every step: a trial's 9 steps.
 IN_VIEW = 9

@@ -26,12 +26,12 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .claims import power, sd_interval
-from .measures import analysed
-from .readings import family_names, flat_term, holm_hypotheses, over_replications
-from .som import active_units
-from .stats import holm, t_term
-from .vocabulary import OBJECTS, TASKS
+from icub_affordance.claims import power, sd_interval
+from icub_affordance.measures import analysed
+from icub_affordance.readings import family_names, flat_term, holm_hypotheses, over_replications
+from icub_affordance.som import active_units
+from icub_affordance.stats import holm, t_term
+from icub_affordance.vocabulary import OBJECTS, TASKS
 
 #: The effect the study is about (the per-network contrast of the same name).
 EFFECT = "size"

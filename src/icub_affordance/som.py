@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from minisom import MiniSom
 
-from .vocabulary import GOAL_RESPONSES, TASKS
+from icub_affordance.vocabulary import GOAL_RESPONSES, TASKS
 
 
 @dataclass(frozen=True)

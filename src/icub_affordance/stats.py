@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .vocabulary import MODES
+from icub_affordance.vocabulary import MODES
 
 EFFECTS = {"congruency": "congruency", "size": "size", "interaction": "congruency:size"}
 

@@ -16,8 +16,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .jordan import N_GOAL, N_VISUAL, TrainingState, Weights, distinct_contexts, train_together
-from .vocabulary import (
+from icub_affordance.jordan import (
+    N_GOAL,
+    N_VISUAL,
+    TrainingState,
+    Weights,
+    distinct_contexts,
+    train_together,
+)
+from icub_affordance.vocabulary import (
     AFTER_PHASE1,
     CATEGORISATION,
     CUES,
@@ -177,14 +184,14 @@ class Phase1:
     rmse: np.ndarray
 
     def save(self, path) -> None:
-        from .files import save_npz
+        from icub_affordance.files import save_npz
 
         save_npz(path, key=np.array(self.key), done=np.array(self.state.done), rmse=self.rmse,
                  **self.state.arrays)  # fmt: skip
 
     @classmethod
     def load(cls, path) -> Phase1:
-        from .files import load_npz
+        from icub_affordance.files import load_npz
 
         arrays = load_npz(path, required=("key", "done", "rmse", *TrainingState.KEYS))
         key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
@@ -451,7 +458,7 @@ def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natur
     factors) with each object's grips at its partner's distance (``swapped_grips``)."""
     if grip_distance not in GRIP_DISTANCES:
         raise ValueError(f"grip_distance must be one of {GRIP_DISTANCES}, not {grip_distance!r}")
-    from .files import load_npz
+    from icub_affordance.files import load_npz
 
     demos = load_npz(demos_path, required=("angles", "commands_deg", "objects", "grips"))
     objects = tuple(demos["objects"].tolist())
