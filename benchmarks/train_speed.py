@@ -3,7 +3,7 @@ networks trained one by one vs together.
 
 Both run the same arithmetic on the same schedule (online back-propagation, one update per time
 step). The plain loop is timed on a sample of iterations and scaled to the full run. The
-project's trainer is a compiled loop (icub_affordance.jordan_kernel): its first call in a process
+project's trainer is a compiled loop (icub_affordance.learning.kernel): its first call in a process
 compiles it or loads it from numba's cache, shown on its own line; `single_s` is the best of
 three networks after that (each a full 12,000-iteration training, `train_network`), what every
 further network of a job costs. `batch12_s` is the best of three trainings of a run's 12
@@ -30,9 +30,9 @@ import numpy as np
 import torch
 import yaml
 
-from icub_affordance.jordan import Weights
-from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
-from icub_affordance.train import (
+from icub_affordance.learning.network import Weights
+from icub_affordance.learning.torch_reference import JordanNet, train_sequence_torch
+from icub_affordance.learning.training import (
     TrainConfig,
     context,
     mapping_of,

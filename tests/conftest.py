@@ -11,8 +11,8 @@ import yaml
 
 from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
-from icub_affordance.som import SOMConfig
-from icub_affordance.train import TrainConfig
+from icub_affordance.learning.maps import SOMConfig
+from icub_affordance.learning.training import TrainConfig
 from icub_workflow.configs import merged
 
 REPO = Path(__file__).resolve().parents[1]

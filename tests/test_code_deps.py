@@ -98,11 +98,11 @@ def test_page_code_reads_code_cells_without_their_options(tmp_path):
         "# Title\n\n```{code-cell} ipython3\n---\ntags: [remove-input]\n---\n"
         "from icub_affordance.stats import x\n%matplotlib inline\n```\n\n"
         "```python\nfrom icub_affordance.body import y\n```\n"
-        "```{code-cell} ipython3\n:tags: [hide-input]\nimport icub_affordance.som\n```\n"
+        "```{code-cell} ipython3\n:tags: [hide-input]\nimport icub_affordance.learning.maps\n```\n"
     )
     code = page_code(page)
     ast.parse(code)
-    assert "stats" in code and "som" in code and "body" not in code  # a plain block is no cell
+    assert "stats" in code and "maps" in code and "body" not in code  # a plain block is no cell
 
 
 #: Run in one fresh interpreter: for each source, the project's modules are dropped from
@@ -209,11 +209,14 @@ def test_editing_a_module_reruns_every_rule_that_imports_it(built, tmp_path):
     inputs = job_inputs(work)
     in_target = set(inputs)
     modules = sorted({m for files in imports.values() for m in files})
-    assert "src/icub_affordance/train.py" in modules and "src/icub_workflow/book/text.py" in modules
+    assert (
+        "src/icub_affordance/learning/training.py" in modules
+        and "src/icub_workflow/book/text.py" in modules
+    )
     for rule, script in rule_scripts().items():
         if rule in in_target:
             assert imports[script] <= inputs[rule], f"{rule}: {imports[script] - inputs[rule]}"
-    for module in ("src/icub_affordance/train.py", "src/icub_workflow/book/text.py"):
+    for module in ("src/icub_affordance/learning/training.py", "src/icub_workflow/book/text.py"):
         path = work / module
         before = path.stat()
         later = time.time() + 3600  # after every output of the run

@@ -16,7 +16,7 @@ from icub_affordance.confirmation import (
     clustered_interval,
     confirmation_table,
 )
-from icub_affordance.variants import NetworkVariant
+from icub_affordance.learning.variants import NetworkVariant
 
 OBJECTS = ("big_ball", "small_ball", "big_cube", "small_cube")
 

@@ -538,7 +538,7 @@ def test_the_package_is_the_science():
 
     machinery = {"snakemake", "myst_nb", "jupyter_cache", "nbclient", "nbformat", "sphinx"}
     machinery |= {"IPython", "icub_book", "sweep_cost", "collect", "subprocess"}
-    for path in (REPO / "src" / "icub_affordance").glob("*.py"):
+    for path in (REPO / "src" / "icub_affordance").rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text())):
             if isinstance(node, ast.Import):
                 names = [alias.name for alias in node.names]

@@ -11,9 +11,9 @@ import pytest
 import torch
 from conftest import REPO, train_config
 
-from icub_affordance.jordan import N_INPUT, Weights, run_closed_loop, train_online
-from icub_affordance.jordan_torch import JordanNet, train_sequence_torch
-from icub_affordance.train import (
+from icub_affordance.learning.network import N_INPUT, Weights, run_closed_loop, train_online
+from icub_affordance.learning.torch_reference import JordanNet, train_sequence_torch
+from icub_affordance.learning.training import (
     context,
     learning_rates,
     mapping_of,
@@ -79,10 +79,10 @@ def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
 KERNEL_RUN = """
 import hashlib, sys
 import numba
-from icub_affordance.train import synthetic_materials
+from icub_affordance.learning.training import synthetic_materials
 from conftest import train_config
-import icub_affordance.jordan_kernel as kernel
-from icub_affordance.train import train_network, train_networks
+import icub_affordance.learning.kernel as kernel
+from icub_affordance.learning.training import train_network, train_networks
 if sys.argv[1] == "uncached":  # the same options, less the cache (the kernel the wrappers
     # call first: they find it among the module's globals when they compile)
     for name in ("train_schedule", "_train_lanes", "train_lanes4", "train_lanes8"):
@@ -129,7 +129,7 @@ def test_the_kernel_cache_cannot_change_the_bits(tmp_path):
 def test_the_kernels_exponential_is_within_one_ulp_of_the_c_librarys():
     """The trainer's own exp (vectorisable, the same on every CPU) over the range a sigmoid of
     a trained network meets, and its ends: 0 and a huge value, never NaN."""
-    from icub_affordance.jordan_kernel import neg_exp
+    from icub_affordance.learning.kernel import neg_exp
 
     z = np.concatenate([np.linspace(-60, 60, 400_001), [-1e-300, 0.0, 1e-300, 0.5 * np.log(2)]])
     reference = np.exp(-z)
@@ -160,8 +160,8 @@ def test_a_network_continued_from_a_shared_phase_1_is_the_network_trained_whole(
     then continued with the annealed rate and the cue at every step: the same bits as that
     network trained in one go (so robot variants that differ only in what acts after phase 1
     share it). A phase 1 of other settings is refused."""
-    from icub_affordance.jordan import TrainingState
-    from icub_affordance.train import Phase1, train_phase1
+    from icub_affordance.learning.network import TrainingState
+    from icub_affordance.learning.training import Phase1, train_phase1
 
     m = synthetic_materials()
     common = {"iterations": 600, "phase1_iterations": 300, "hidden": 12}
@@ -304,7 +304,7 @@ def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
     timings, the paper's 10 hidden units and the robot variants' 40 (and 9: the kernels' path
     for a last single hidden unit), a constant and a falling rate; six networks (eight lanes,
     two of them copies) and eleven (eight lanes, then four with one copy)."""
-    from icub_affordance.train import train_networks
+    from icub_affordance.learning.training import train_networks
 
     m = synthetic_materials()
     for cue, n in [(cue, n) for cue in ("first_step", "all_steps") for n in (6, 11)]:
@@ -325,7 +325,7 @@ def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
 
 
 def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_alone():
-    from icub_affordance.jordan import lane_groups
+    from icub_affordance.learning.network import lane_groups
 
     def widths(n):
         return [(len(group), lanes) for group, lanes in lane_groups(n)]
@@ -342,7 +342,7 @@ def test_a_shared_phase_1_trained_together_continues_to_the_networks_trained_alo
     """Phase 1 of several networks trained together (train_phase1s), each the bytes of
     train_phase1, continued together with other settings after phase 1 (the annealed rate, the
     cue at every step, the servo targets) to the bytes of each network trained whole, alone."""
-    from icub_affordance.train import train_networks, train_phase1, train_phase1s
+    from icub_affordance.learning.training import train_networks, train_phase1, train_phase1s
 
     m = synthetic_materials()
     common = {"iterations": 200, "phase1_iterations": 100, "hidden": 12, "target": "commands"}

@@ -28,7 +28,15 @@ from icub_affordance.demos import merge_demos, object_demos
 from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
 from icub_affordance.files import save_npz
 from icub_affordance.grasp import DEMO_S, move
-from icub_affordance.jordan import Weights, run_closed_loop, train_online
+from icub_affordance.learning.network import Weights, run_closed_loop, train_online
+from icub_affordance.learning.training import (
+    Materials,
+    context,
+    load_materials,
+    synthetic_materials,
+    target_grip,
+    train_network,
+)
 from icub_affordance.robot_trials import (
     body_tolerance,
     demo_palms,
@@ -38,14 +46,6 @@ from icub_affordance.robot_trials import (
     reference_palms,
     replay_policy,
     run_trial,
-)
-from icub_affordance.train import (
-    Materials,
-    context,
-    load_materials,
-    synthetic_materials,
-    target_grip,
-    train_network,
 )
 from icub_affordance.vocabulary import GRASPING, TASKS
 

@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from icub_affordance.jordan import Weights
+from icub_affordance.learning.network import Weights
 from icub_workflow.parts import (
     load_curves,
     load_robot_states,

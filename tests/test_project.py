@@ -90,7 +90,7 @@ def test_the_project_cites_its_own_reasoning_not_an_outside_file():
 
 
 def test_the_science_never_imports_the_workflow_and_benchmarks_import_no_tests():
-    for path in (REPO / "src" / "icub_affordance").glob("*.py"):
+    for path in (REPO / "src" / "icub_affordance").rglob("*.py"):
         assert not re.search(r"^\s*(from|import) icub_workflow", path.read_text(), re.M), path
     for path in (REPO / "benchmarks").glob("*.py"):
         assert not re.search(r"^\s*(from|import) (test_|conftest)", path.read_text(), re.M), path

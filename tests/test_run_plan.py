@@ -9,7 +9,7 @@ import dataclasses
 import pytest
 from conftest import load_config, load_test_config
 
-from icub_affordance.variants import NetworkVariant
+from icub_affordance.learning.variants import NetworkVariant
 from icub_workflow.configs import merged
 from icub_workflow.runs import MAIN, plan_runs
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from icub_affordance.evaluate import evaluate_network
-from icub_affordance.jordan import Weights
+from icub_affordance.learning.network import Weights
 from icub_affordance.vision import check_seen
 
 

@@ -11,7 +11,8 @@ import yaml
 from conftest import REPO
 from scipy import stats as sps
 
-from icub_affordance.jordan import Weights
+from icub_affordance.learning.network import Weights
+from icub_affordance.learning.training import synthetic_materials
 from icub_affordance.outcome import Outcome
 from icub_affordance.signatures import (
     FAMILY,
@@ -27,7 +28,6 @@ from icub_affordance.signatures import (
     verdict,
     visual_inputs,
 )
-from icub_affordance.train import synthetic_materials
 from icub_workflow.book.words import SIGNATURE_WORDS
 
 

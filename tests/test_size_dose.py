@@ -15,6 +15,13 @@ from conftest import REPO, load_config, load_test_config, som_config
 from scipy import stats as sps
 from statsmodels.stats.multitest import multipletests
 
+from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
+from icub_affordance.learning.training import (
+    mean_final_grip_distances,
+    shape_partners,
+    swap_scale,
+    swapped_grips,
+)
 from icub_affordance.readings import BY_EXCESS, NULL_CONTROL
 from icub_affordance.size_dose import (
     CONTROLS,
@@ -42,13 +49,6 @@ from icub_affordance.size_dose import (
     separated,
     size_free_maps,
     summary,
-)
-from icub_affordance.som import active_units, bump, kept_whole, train_soms
-from icub_affordance.train import (
-    mean_final_grip_distances,
-    shape_partners,
-    swap_scale,
-    swapped_grips,
 )
 from icub_workflow.runs import plan_runs
 

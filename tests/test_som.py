@@ -9,7 +9,7 @@ import pytest
 from conftest import som_config
 
 from icub_affordance.files import load_npz
-from icub_affordance.som import (
+from icub_affordance.learning.maps import (
     active_units,
     object_activation,
     train_som,

@@ -23,7 +23,7 @@ VERDICT_WORDS = {
 
 
 def science_modules() -> list:
-    return sorted(SCIENCE.glob("*.py"))
+    return sorted(SCIENCE.rglob("*.py"))
 
 
 def docstrings(tree: ast.AST) -> set[int]:
@@ -67,12 +67,12 @@ def book_imports(source: str) -> list[str]:
     return found
 
 
-@pytest.mark.parametrize("path", science_modules(), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", science_modules(), ids=lambda p: str(p.relative_to(SCIENCE)))
 def test_no_science_module_imports_the_book_layer(path):
     assert book_imports(path.read_text()) == []
 
 
-@pytest.mark.parametrize("path", science_modules(), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", science_modules(), ids=lambda p: str(p.relative_to(SCIENCE)))
 def test_no_science_module_returns_or_holds_a_verdict_word(path):
     assert verdict_strings(path.read_text()) == [], "say it in icub_workflow.book.words"
 

@@ -24,9 +24,9 @@ from icub_affordance.body import Robot
 from icub_affordance.demos import DemoConfig
 from icub_affordance.evaluate import TrialSet, describe_trial
 from icub_affordance.files import atomic_path
-from icub_affordance.jordan import Weights
+from icub_affordance.learning.network import Weights
+from icub_affordance.learning.training import Materials, mapping_of
 from icub_affordance.robot_trials import Outcome, network_policy, outcome_columns, run_trial
-from icub_affordance.train import Materials, mapping_of
 from icub_affordance.vocabulary import TASKS
 
 

@@ -17,8 +17,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from icub_affordance.jordan import Weights, run_closed_loop
-from icub_affordance.train import Materials, context, target_grip
+from icub_affordance.learning.network import Weights, run_closed_loop
+from icub_affordance.learning.training import Materials, context, target_grip
 from icub_affordance.vocabulary import GRASPING, MODES, OBJECTS, TASKS
 
 

@@ -15,8 +15,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from icub_affordance.files import atomic_path  # noqa: E402
+from icub_affordance.learning.variants import NetworkVariant  # noqa: E402
 from icub_affordance.outcome import Outcome  # noqa: E402
-from icub_affordance.variants import NetworkVariant  # noqa: E402
 
 LABELS = {
     "big_ball": "big ball",

@@ -28,6 +28,7 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.body import TOUCH_NAMES
+from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.stats import (
     adjust_families,
     categorisation_trials,
@@ -42,7 +43,6 @@ from icub_affordance.stats import (
     simple_effects,
     trial_conditions,
 )
-from icub_affordance.variants import NetworkVariant
 
 #: The family of the config's own networks' robot tests in ``success_analysis``.
 OWN_ROBOT_FAMILY = "exploration: the config's own networks on the robot"

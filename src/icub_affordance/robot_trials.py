@@ -44,8 +44,8 @@ from icub_affordance.body import (
 from icub_affordance.demos import DemoConfig
 from icub_affordance.evaluate import TrialSet, trial_row
 from icub_affordance.grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
-from icub_affordance.jordan import Weights, network_step
-from icub_affordance.train import Materials
+from icub_affordance.learning.network import Weights, network_step
+from icub_affordance.learning.training import Materials
 
 #: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.
 Policy = Callable[[int, np.ndarray], np.ndarray]

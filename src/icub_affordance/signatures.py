@@ -23,11 +23,11 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from icub_affordance.jordan import Weights, run_closed_loop
+from icub_affordance.learning.network import Weights, run_closed_loop
+from icub_affordance.learning.training import N_VISUAL, Materials, context, target_grip
 from icub_affordance.outcome import Outcome
 from icub_affordance.replicated import assessable, over_replications
 from icub_affordance.stats import correct_trial_effects, equivalence, holm
-from icub_affordance.train import N_VISUAL, Materials, context, target_grip
 from icub_affordance.verdicts import ALPHA
 from icub_affordance.vocabulary import CATEGORISATION, OBJECTS
 

@@ -27,9 +27,9 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.claims import power, sd_interval
+from icub_affordance.learning.maps import active_units
 from icub_affordance.measures import analysed
 from icub_affordance.readings import family_names, flat_term, holm_hypotheses, over_replications
-from icub_affordance.som import active_units
 from icub_affordance.stats import holm, t_term
 from icub_affordance.vocabulary import OBJECTS, TASKS
 
@@ -99,7 +99,7 @@ def size_free_maps(maps: Mapping[str, np.ndarray], objects: Sequence[str]) -> di
 
 def manipulation_rows(soms: Mapping[str, np.ndarray]) -> list[dict[str, Any]]:
     """Per shape and map, the units the large and the small object's cluster lifts above one
-    half (``som.active_units``), and their ratio: the Object map's response to the object, and
+    half (``maps.active_units``), and their ratio: the Object map's response to the object, and
     the Goal map's, averaged over the two tasks."""
     objects = [str(o) for o in soms["objects"]]
     rows = []

@@ -17,7 +17,7 @@ from typing import Any
 
 import yaml
 
-from icub_affordance.variants import NetworkVariant
+from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.vocabulary import DOF_MAX_DEG, DOF_MIN_DEG, FIGURE1, GRIPS
 from icub_workflow.configs import merged
 
@@ -511,7 +511,9 @@ def _crossed_problems(config: Mapping[str, Any], confirmation: list[int], key) -
     crossed = config["size_dose"]["crossed"]
     swapping = "swapped" in crossed["grip_arrangements"] or config["grip_distance"] == "swapped"
     if swapping:
-        from icub_affordance.train import shape_partners  # scipy: only when a swap is asked for
+        from icub_affordance.learning.training import (
+            shape_partners,  # scipy: only when a swap is asked for
+        )
 
         try:
             shape_partners(list(config["objects"]))

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from icub_affordance.files import load_npz, save_npz, write_columns, write_csv
-from icub_affordance.jordan import Weights
+from icub_affordance.learning.network import Weights
 
 if TYPE_CHECKING:  # pandas is imported where a table is read: a training job is short
     import pandas as pd

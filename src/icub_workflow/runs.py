@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from icub_affordance.claims import seeds as claim_seeds
-from icub_affordance.variants import NetworkVariant
+from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.vocabulary import AFTER_PHASE1
 from icub_workflow.config_checks import ConfigError
 from icub_workflow.configs import merged

@@ -15,17 +15,23 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
-from icub_affordance.jordan import Weights
-from icub_affordance.train import Materials, Phase1, TrainConfig, mapping_of, network_seed
-from icub_affordance.train import train_networks as train_side_by_side
-from icub_affordance.train import train_phase1s as train_phase1s_side_by_side
+from icub_affordance.learning.network import Weights
+from icub_affordance.learning.training import (
+    Materials,
+    Phase1,
+    TrainConfig,
+    mapping_of,
+    network_seed,
+)
+from icub_affordance.learning.training import train_networks as train_side_by_side
+from icub_affordance.learning.training import train_phase1s as train_phase1s_side_by_side
 from icub_affordance.vocabulary import TASKS
 from icub_workflow.parts import load_weights, part_networks, write_part
 
 
 def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
     """Train the three SOMs on the objects' visual maps; save their activations and weights."""
-    from icub_affordance.som import SOMConfig, active_units, train_soms
+    from icub_affordance.learning.maps import SOMConfig, active_units, train_soms
 
     maps = load_npz(maps_path, required=tuple(objects))
     visual = np.array([maps[o] for o in objects])
@@ -177,8 +183,8 @@ def signature_tables(
     (``errors``). A replication: its seed, its model inputs (maps, soms, demos), grip_distance,
     network settings and weights files. A test needs
     ``min_replications`` replications with an estimate (config ``confirmation``)."""
+    from icub_affordance.learning.training import load_materials
     from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
-    from icub_affordance.train import load_materials
 
     config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []

@@ -4,7 +4,7 @@ import glob
 import re
 from pathlib import Path
 
-from icub_affordance.variants import NetworkVariant
+from icub_affordance.learning.variants import NetworkVariant
 from icub_workflow.code_deps import CodeGraph, page_code
 from icub_workflow.config_checks import check_runs
 from icub_workflow.parts import part_networks

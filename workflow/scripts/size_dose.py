@@ -10,6 +10,7 @@ from pathlib import Path
 import pandas as pd
 
 from icub_affordance.files import load_npz, redirect_log, write_tables
+from icub_affordance.learning.training import swapped_grips
 from icub_affordance.size_dose import (
     SWAPPED,
     crossed_runs,
@@ -23,7 +24,6 @@ from icub_affordance.size_dose import (
     separated,
     summary,
 )
-from icub_affordance.train import swapped_grips
 
 with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]

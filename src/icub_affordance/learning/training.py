@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from icub_affordance.jordan import (
+from icub_affordance.learning.network import (
     N_GOAL,
     N_VISUAL,
     TrainingState,
@@ -307,7 +307,7 @@ def _curve(config: TrainConfig, training: _Training, rmse: np.ndarray) -> dict[s
 def _train_parts_together(
     m: Materials, states: list[TrainingState], trainings: list[_Training], begin: int, end: int
 ) -> list[np.ndarray]:
-    """:func:`_train_part` for several networks of one run at once (``jordan.train_together``);
+    """:func:`_train_part` for several networks of one run at once (``network.train_together``);
     the same bits, network by network."""
     return train_together(
         states,
@@ -358,7 +358,7 @@ def train_networks(
 ) -> list[tuple[Weights, dict[str, np.ndarray]]]:
     """:func:`train_network` of several networks of one run (network i: ``mappings[i]``,
     ``seeds[i]``, and ``after[i]`` its phase 1 when given), trained side by side, eight or
-    four at a time in a vector's lanes (``jordan.train_together``): each network's weights and
+    four at a time in a vector's lanes (``network.train_together``): each network's weights and
     learning curve are the bits :func:`train_network` gives it alone, in the order given."""
     _check_together(mappings, seeds)
     trainings = [_training(m, config, a, seed) for a, seed in zip(mappings, seeds, strict=True)]

@@ -6,9 +6,9 @@ posture at the next time step. The recurrence is Jordan's: the motor output come
 next proprioceptive input (in closed loop; training feeds the demonstrated posture back).
 
 Learning is online back-propagation of the squared error, one weight update per time step, no
-momentum. Two implementations of the same arithmetic: ``jordan_torch.JordanNet`` (torch, the
+momentum. Two implementations of the same arithmetic: ``torch_reference.JordanNet`` (torch, the
 reference, trained the plain way by autograd) and :func:`train_online` here (hand-derived
-gradients in a compiled loop, ``jordan_kernel``: a network in a fraction of a second). A test
+gradients in a compiled loop, ``kernel``: a network in a fraction of a second). A test
 holds them equal within 1e-10.
 """
 
@@ -75,7 +75,7 @@ def sigmoid(z: np.ndarray) -> np.ndarray:
 @dataclass
 class TrainingState:
     """A network part-way through its online training: what the compiled loop carries from one
-    iteration to the next (``jordan_kernel.train_schedule``). Training a schedule in parts, from
+    iteration to the next (``kernel.train_schedule``). Training a schedule in parts, from
     a saved state, gives the same bits as in one call: so two settings that differ only after
     phase 1 (the learning-rate schedule) can share phase 1's training.
 
@@ -101,7 +101,7 @@ class TrainingState:
         """The state before the first iteration, for these initial weights and the contexts
         (objects, tasks, steps-1, 200) the training will show; ``unique``: their distinct
         contexts, when known already (networks of one run share them)."""
-        from icub_affordance.jordan_kernel import project_contexts
+        from icub_affordance.learning.kernel import project_contexts
 
         if unique is None:
             unique = _distinct_contexts(contexts)[0]
@@ -139,7 +139,7 @@ class TrainingState:
     ) -> np.ndarray:
         """Train on, in place, over ``schedule`` (see :func:`train_online` for the arguments);
         return each of its iterations' RMSE, measured before that sequence's updates."""
-        from icub_affordance.jordan_kernel import train_schedule
+        from icub_affordance.learning.kernel import train_schedule
 
         tasks, objects, sequences = (np.ascontiguousarray(a, dtype=np.int64) for a in schedule)
         contexts = np.ascontiguousarray(contexts, dtype=np.float64)
@@ -170,7 +170,7 @@ class TrainingState:
 
     def weights(self) -> Weights:
         """The weights the training has reached (the state itself can train on)."""
-        from icub_affordance.jordan_kernel import finish
+        from icub_affordance.learning.kernel import finish
 
         a = {k: v.copy() for k, v in self.arrays.items()}
         finish(
@@ -221,7 +221,7 @@ def lane_groups(n: int) -> list[tuple[list[int], int]]:
     return groups
 
 
-# A lane's arrays in the lanes kernels (``jordan_kernel.train_lanes4``...) from a state's:
+# A lane's arrays in the lanes kernels (``kernel.train_lanes4``...) from a state's:
 # (key, transposed)
 _LANE_ARRAYS = (
     ("W1pT", True), ("b1", False), ("W2T", True), ("b2", False), ("U", False), ("moved", False),
@@ -246,10 +246,10 @@ def train_together(
     Every state ends with the bits :meth:`TrainingState.train` gives it alone: the networks are
     trained eight or four at a time (:func:`lane_groups`), network l of a group in lane l of 8-
     or 4-wide vectors, each lane doing its network's operations in its network's order
-    (``jordan_kernel.train_lanes8``, ``train_lanes4``). A short group is filled with copies of
+    (``kernel.train_lanes8``, ``train_lanes4``). A short group is filled with copies of
     its first network, trained and dropped; a last network alone is trained alone.
     """
-    from icub_affordance import jordan_kernel
+    from icub_affordance.learning import kernel
 
     n = len(states)
     if not (len(learning_rates) == len(grips) == len(schedules) == n):
@@ -297,7 +297,7 @@ def train_together(
             for key, transposed in _LANE_ARRAYS
         }
         out = np.empty((length, width))
-        getattr(jordan_kernel, f"train_lanes{width}")(
+        getattr(kernel, f"train_lanes{width}")(
             a["W1pT"], a["b1"], a["W2T"], a["b2"], a["U"], a["moved"], first["gram"],
             a["lr_p"], a["d_hid"], a["lr_h"], a["d_out"], stacked(rates), context_ids, run_ends,
             demos, targets, stacked([np.asarray(g, dtype=np.int64) for g in grips]),
@@ -342,13 +342,13 @@ def train_online(
     itself when None (the paper: the network outputs the next posture); ``grips``
     (objects, tasks): the target grip of each trial kind; ``schedule``: the (tasks, objects,
     sequences) of every iteration; ``learning_rate`` one rate for all of it, or one per
-    iteration (a schedule, :func:`icub_affordance.train.learning_rates`). Returns the trained
-    weights (``weights`` is left as it was) and each iteration's RMSE, measured before that
-    sequence's updates.
+    iteration (a schedule, :func:`icub_affordance.learning.training.learning_rates`). Returns
+    the trained weights (``weights`` is left as it was) and each iteration's RMSE, measured
+    before that sequence's updates.
 
-    The loop runs compiled (:mod:`icub_affordance.jordan_kernel`, imported only here and in
+    The loop runs compiled (:mod:`icub_affordance.learning.kernel`, imported only here and in
     :class:`TrainingState` so that only training pays for numba); the torch loop of
-    :mod:`icub_affordance.jordan_torch` is the reference it is tested against.
+    :mod:`icub_affordance.learning.torch_reference` is the reference it is tested against.
     """
     state = TrainingState.start(weights, contexts)
     rmse = state.train(learning_rate, contexts, demos, grips, schedule, targets)

@@ -1,7 +1,7 @@
 """The Jordan network's training loop, compiled: a network's whole schedule in one call.
 
 Online back-propagation of the squared error with hand-derived gradients, one weight update per
-time step, no momentum: the arithmetic of the torch reference (``jordan_torch``), which
+time step, no momentum: the arithmetic of the torch reference (``torch_reference``), which
 autograd computes step by step. Compiled by numba to machine code, it trains a network of the
 paper's size (216-10-16, 12,000 sequences of 9 steps) in a few hundredths of a second, and a
 robot variant's (40 hidden units, 768,000 sequences) in about 4 s, several hundred times
@@ -40,10 +40,10 @@ module (whose change the cache would not see): every size comes from the arrays.
 
 ``train_lanes4`` and ``train_lanes8`` train four or eight networks of one run at once, network l
 in lane l of 4- or 8-wide vectors, each lane making its network's operations in its network's
-order, so that each ends with the bits it has when trained alone (``jordan.train_together``; the
+order, so that each ends with the bits it has when trained alone (``network.train_together``; the
 section at the end of this file).
 
-Kept apart from ``jordan`` so that only training pays numba's import (about 0.5 s).
+Kept apart from ``network`` so that only training pays numba's import (about 0.5 s).
 """
 
 from __future__ import annotations
@@ -122,7 +122,7 @@ def train_schedule(
 ):  # fmt: skip
     """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
 
-    The training state (``jordan.TrainingState``), carried from one call to the next so that a
+    The training state (``network.TrainingState``), carried from one call to the next so that a
     schedule trained in parts is trained to the same bits as in one call: the weights, transposed
     so that the inner loops run over contiguous rows, ``W1pT`` (16, hidden) from the
     proprioceptive input, ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,); the context

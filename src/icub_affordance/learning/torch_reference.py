@@ -1,9 +1,9 @@
 """The Jordan network in torch: the reference implementation, trained the plain way.
 
-The pipeline trains with :func:`icub_affordance.jordan.train_online`, the same arithmetic in a
-compiled loop without autograd's per-step overhead; the tests hold the two equal within 1e-10
-and ``benchmarks/train_speed.py`` measures the difference. Kept apart so that the training jobs
-need not import torch.
+The pipeline trains with :func:`icub_affordance.learning.network.train_online`, the same
+arithmetic in a compiled loop without autograd's per-step overhead; the tests hold the two equal
+within 1e-10 and ``benchmarks/train_speed.py`` measures the difference. Kept apart so that the
+training jobs need not import torch.
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from icub_affordance.jordan import N_INPUT, N_OUTPUT, N_VISUAL, Weights
+from icub_affordance.learning.network import N_INPUT, N_OUTPUT, N_VISUAL, Weights
 
 
 class JordanNet(torch.nn.Module):
