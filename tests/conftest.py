@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 import yaml
 
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.learning.maps import SOMConfig
 from icub_affordance.learning.training import TrainConfig
 from icub_workflow.configs import merged

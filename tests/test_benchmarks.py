@@ -82,7 +82,7 @@ DRY_RUN = """\
 Building DAG of jobs...
 [Sun Dec  6 18:40:12 2026]
 rule visual_maps:
-    input: assets/icub_scene.xml, assets/icub_scene.xml, src/icub_affordance/vision.py
+    input: assets/icub_scene.xml, assets/icub_scene.xml, src/icub_affordance/body/vision.py
     output: data/vision/visual_maps.npz, data/vision/vision_stages.npz
     log: data/logs/visual_maps.log
     jobid: 5

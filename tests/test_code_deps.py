@@ -97,7 +97,7 @@ def test_page_code_reads_code_cells_without_their_options(tmp_path):
     page.write_text(
         "# Title\n\n```{code-cell} ipython3\n---\ntags: [remove-input]\n---\n"
         "from icub_affordance.stats import x\n%matplotlib inline\n```\n\n"
-        "```python\nfrom icub_affordance.body import y\n```\n"
+        "```python\nfrom icub_affordance.body.robot import y\n```\n"
         "```{code-cell} ipython3\n:tags: [hide-input]\nimport icub_affordance.learning.maps\n```\n"
     )
     code = page_code(page)

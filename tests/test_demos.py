@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from conftest import demo_config, initial_posture_deg
 
-from icub_affordance.body import (
+from icub_affordance.body.demonstrations import is_grasp, make_demo, object_demos
+from icub_affordance.body.robot import (
     DOF_NAMES,
     OBJECT_NAMES,
     OBJECTS,
@@ -14,7 +15,6 @@ from icub_affordance.body import (
     Robot,
     to_normalised,
 )
-from icub_affordance.demos import is_grasp, make_demo, object_demos
 from icub_affordance.files import load_npz
 from icub_affordance.vocabulary import GRIPS
 

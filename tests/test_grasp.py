@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from conftest import initial_posture_deg
 
-from icub_affordance.body import TOUCH_NAMES, Robot
-from icub_affordance.grasp import GraspPlan, execute_grasp, pinch_point
+from icub_affordance.body.grasp import GraspPlan, execute_grasp, pinch_point
+from icub_affordance.body.robot import TOUCH_NAMES, Robot
 
 INITIAL = initial_posture_deg()  # config/config.yaml
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from conftest import initial_posture_deg
 
-from icub_affordance.body import DOF_NAMES, N_ARM_DOF, N_DOF, to_degrees, to_normalised
+from icub_affordance.body.robot import DOF_NAMES, N_ARM_DOF, N_DOF, to_degrees, to_normalised
 
 # The paper's Figure 1, typed from the paper: (actuator, min deg, max deg).
 FIGURE1_TABLE = [

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from icub_affordance.body import N_DOF
+from icub_affordance.body.robot import N_DOF
 
 # iKin right arm, version 1 (the iCub's public iKin tables; docs/pipeline.md, "The simulated
 # iCub"), typed here independently of the MJCF: (a, d, alpha, offset) per link, angles in

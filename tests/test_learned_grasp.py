@@ -16,7 +16,9 @@ import pandas as pd
 import pytest
 from conftest import demo_config, initial_posture_deg, load_config, train_config
 
-from icub_affordance.body import (
+from icub_affordance.body.demonstrations import merge_demos, object_demos
+from icub_affordance.body.grasp import DEMO_S, move
+from icub_affordance.body.robot import (
     OBJECT_NAMES,
     OBJECTS,
     TOUCH_NAMES,
@@ -24,10 +26,8 @@ from icub_affordance.body import (
     to_degrees,
     to_normalised,
 )
-from icub_affordance.demos import merge_demos, object_demos
 from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
 from icub_affordance.files import save_npz
-from icub_affordance.grasp import DEMO_S, move
 from icub_affordance.learning.network import Weights, run_closed_loop, train_online
 from icub_affordance.learning.training import (
     Materials,

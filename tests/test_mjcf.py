@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from conftest import REPO, initial_posture_deg
 
-from icub_affordance.body import OBJECT_NAMES, Robot
+from icub_affordance.body.robot import OBJECT_NAMES, Robot
 from icub_workflow.scene_files import scene_files
 
 SCENE = REPO / "assets" / "icub_scene.xml"

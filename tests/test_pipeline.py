@@ -131,7 +131,8 @@ def replace_with_edited_copy(workdir: Path, relative: str) -> None:
 
 @pytest.mark.reruns
 @pytest.mark.parametrize(
-    "edited", ["assets/icub_scene.xml", "assets/icub_right_arm.xml", "src/icub_affordance/body.py"]
+    "edited",
+    ["assets/icub_scene.xml", "assets/icub_right_arm.xml", "src/icub_affordance/body/robot.py"],
 )
 def test_an_edit_of_the_scene_or_its_code_reruns_the_body_rule(workdir, edited):
     target = "data/body/joint_table.csv"

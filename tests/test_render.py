@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from icub_affordance.body import OBJECT_NAMES
+from icub_affordance.body.robot import OBJECT_NAMES
 
 W, H = 160, 120
 
@@ -14,7 +14,7 @@ W, H = 160, 120
 def eye_images():
     import mujoco
 
-    from icub_affordance.body import Robot
+    from icub_affordance.body.robot import Robot
 
     robot = Robot()
     images = {}

@@ -9,8 +9,8 @@ import pandas as pd
 import pytest
 from conftest import demo_config, load_test_config
 
-from icub_affordance.body import OBJECT_NAMES, Robot, to_normalised
-from icub_affordance.grasp import grip_in_contact, grip_used
+from icub_affordance.body.grasp import grip_in_contact, grip_used
+from icub_affordance.body.robot import OBJECT_NAMES, Robot, to_normalised
 from icub_affordance.learning.network import Weights, network_step, run_closed_loop
 from icub_affordance.representations import (
     distances_to_grasping,

@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from icub_affordance.body.vision import check_seen
 from icub_affordance.evaluate import evaluate_network
 from icub_affordance.learning.network import Weights
-from icub_affordance.vision import check_seen
 
 
 def maps(**cells) -> dict[str, np.ndarray]:

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from conftest import initial_posture_deg
 
-from icub_affordance.body import N_ARM_DOF, N_DOF, TOUCH_NAMES
+from icub_affordance.body.robot import N_ARM_DOF, N_DOF, TOUCH_NAMES
 
 FREE_ARM = initial_posture_deg()[:N_ARM_DOF]  # the initial posture's arm: the hand in free air
 PALM_UP_ARM = [-40, 30, 0, 100, -90, -60, 0]  # palm normal within 12 degrees of vertical

@@ -16,7 +16,7 @@ import pytest
 import yaml
 from conftest import REPO, TEST_CONFIG, load_test_config, run_snakemake, scratch_workflow
 
-from icub_affordance.body import Robot
+from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz
 from icub_workflow.sweep_timing import planned_jobs
 

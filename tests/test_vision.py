@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from conftest import initial_posture_deg
 
-from icub_affordance.body import OBJECT_NAMES, Robot
-from icub_affordance.vision import VisionConfig, foveate, sobel_rgb, to_map, visual_maps
+from icub_affordance.body.robot import OBJECT_NAMES, Robot
+from icub_affordance.body.vision import VisionConfig, foveate, sobel_rgb, to_map, visual_maps
 
 INITIAL = initial_posture_deg()  # config/config.yaml
 

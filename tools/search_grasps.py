@@ -6,8 +6,8 @@ those grasps pass the demonstration check (touch and lift). Run, for example:
 
     python tools/search_grasps.py power small
 
-The winners are written into ``icub_affordance.demos.grasp_template``; this script documents the
-search so that a different hand model can be given its own templates.
+The winners are written into ``icub_affordance.body.demonstrations.grasp_template``; this
+script documents the search so that a different hand model can be given its own templates.
 """
 
 from __future__ import annotations
@@ -19,9 +19,9 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from icub_affordance.body import OBJECTS, Robot
-from icub_affordance.demos import DemoConfig, is_grasp
-from icub_affordance.grasp import GraspPlan, cage_point, execute_grasp, pinch_point
+from icub_affordance.body.demonstrations import DemoConfig, is_grasp
+from icub_affordance.body.grasp import GraspPlan, cage_point, execute_grasp, pinch_point
+from icub_affordance.body.robot import OBJECTS, Robot
 
 
 def candidates(robot: Robot, grip: str, size: str):

@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from icub_affordance.body import TOUCH_NAMES
+from icub_affordance.body.robot import TOUCH_NAMES
 from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.stats import (
     adjust_families,

@@ -31,7 +31,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from icub_affordance.body import (
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
+from icub_affordance.body.robot import (
     DOF_MAX_DEG,
     DOF_MIN_DEG,
     N_ARM_DOF,
@@ -41,9 +43,7 @@ from icub_affordance.body import (
     to_degrees,
     to_normalised,
 )
-from icub_affordance.demos import DemoConfig
 from icub_affordance.evaluate import TrialSet, trial_row
-from icub_affordance.grasp import DEMO_S, grip_in_contact, grip_used, lift_arm, move
 from icub_affordance.learning.network import Weights, network_step
 from icub_affordance.learning.training import Materials
 

@@ -2,7 +2,7 @@
 six touch sensors, the four objects, the grips, tasks, category mappings, cue timings and test
 modes, and the 0-1 units the network sees. Every module names these from here.
 
-Kept apart from :mod:`icub_affordance.body` so that the learning code can use them without
+Kept apart from :mod:`icub_affordance.body.robot` so that the learning code can use them without
 importing MuJoCo (a second of start-up for every training job).
 """
 

@@ -561,7 +561,7 @@ def check_scene(config: Mapping[str, Any]) -> None:
         "`git checkout -- assets/`), or repair the file."
     )
     try:
-        from icub_affordance.body import Robot
+        from icub_affordance.body.robot import Robot
 
         robot = Robot(scene, dict(config["object_sizes_m"]))
     except Exception as err:  # whatever MuJoCo or the model indexing raise: the scene is unusable

@@ -3,7 +3,7 @@
 import csv
 import io
 
-from icub_affordance.body import Robot, check_posture_deg
+from icub_affordance.body.robot import Robot, check_posture_deg
 from icub_affordance.files import redirect_log, write_png, write_text
 
 with redirect_log(snakemake.log[0]):

@@ -1,6 +1,6 @@
 """Filmstrips of chosen demonstrations, rendered from the recorded states."""
 
-from icub_affordance.body import Robot
+from icub_affordance.body.robot import Robot
 from icub_affordance.figures import filmstrip
 from icub_affordance.files import load_npz, redirect_log
 

@@ -1,8 +1,8 @@
 """A run's demonstrations in one job: every object made and checked in physics, one after
 another, each on a freshly loaded robot, then joined with their summary."""
 
-from icub_affordance.body import Robot, check_posture_deg
-from icub_affordance.demos import DemoConfig, merge_demos, object_demos, summary_csv
+from icub_affordance.body.demonstrations import DemoConfig, merge_demos, object_demos, summary_csv
+from icub_affordance.body.robot import Robot, check_posture_deg
 from icub_affordance.files import redirect_log, save_npz, write_text
 
 with redirect_log(snakemake.log[0]):

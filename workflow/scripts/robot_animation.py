@@ -6,14 +6,14 @@ test recorded (the run's trials.csv), or the film would show another trial than 
 (``animation.film_trial``).
 """
 
-from icub_affordance.animation import (
+from icub_affordance.body.animation import (
     categorise_panels,
     filmed_networks,
     grasp_panels,
     write_gif,
 )
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.files import redirect_log
 from icub_affordance.learning.training import load_materials
 from icub_workflow.parts import load_robot_trials, load_weights, network_trials

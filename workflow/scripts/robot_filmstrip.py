@@ -1,6 +1,6 @@
 """A congruent and an incongruent categorisation trial of one object, as the robot moved."""
 
-from icub_affordance.body import Robot
+from icub_affordance.body.robot import Robot
 from icub_affordance.figures import filmstrip
 from icub_affordance.files import redirect_log
 from icub_workflow.parts import load_robot_states, load_robot_trials, network_trials

@@ -1,8 +1,8 @@
 """Replay every demonstration through the embodied controller: its servo targets and its sensed
 postures (the controller's ceiling, and what a perfect network would send)."""
 
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz, redirect_log, write_csv
 from icub_affordance.robot_trials import replay_demos
 

@@ -2,8 +2,8 @@
 icub_workflow.parts), one network (`net03`) or every network of the run one after another
 (`all`)."""
 
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.files import redirect_log
 from icub_affordance.learning.training import load_materials, mapping_of
 from icub_affordance.robot_trials import embodied_network

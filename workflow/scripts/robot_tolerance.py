@@ -3,8 +3,8 @@ with its arm targets offset, success against the palm's error."""
 
 import pandas as pd
 
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz, redirect_log, write_csv
 from icub_affordance.robot_stats import tolerance_table
 from icub_affordance.robot_trials import body_tolerance

@@ -1,8 +1,8 @@
 """The four 10x10 visual maps, and every stage of Figure 3, from the eye camera."""
 
-from icub_affordance.body import Robot, check_posture_deg
+from icub_affordance.body.robot import Robot, check_posture_deg
+from icub_affordance.body.vision import VisionConfig, check_seen, visual_maps
 from icub_affordance.files import redirect_log, save_npz
-from icub_affordance.vision import VisionConfig, check_seen, visual_maps
 
 with redirect_log(snakemake.log[0]):
     config = VisionConfig(**snakemake.params.vision)

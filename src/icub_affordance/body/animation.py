@@ -20,8 +20,8 @@ from functools import partial
 
 import numpy as np
 
-from icub_affordance.body import Robot
-from icub_affordance.demos import DemoConfig
+from icub_affordance.body.demonstrations import DemoConfig
+from icub_affordance.body.robot import Robot
 from icub_affordance.evaluate import TrialSet, describe_trial
 from icub_affordance.files import atomic_path
 from icub_affordance.learning.network import Weights

@@ -13,8 +13,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from icub_affordance.body import DOF_MAX_DEG, DOF_MIN_DEG, Robot
-from icub_affordance.grasp import GraspPlan, cage_point, execute_grasp, grip_in_contact, pinch_point
+from icub_affordance.body.grasp import (
+    GraspPlan,
+    cage_point,
+    execute_grasp,
+    grip_in_contact,
+    pinch_point,
+)
+from icub_affordance.body.robot import DOF_MAX_DEG, DOF_MIN_DEG, Robot
 from icub_affordance.vocabulary import GRIPS
 
 
@@ -138,7 +144,7 @@ def make_demo(
     size: str,
 ) -> Demo:
     """One validated demonstration, or a RuntimeError naming it if no variation grasps."""
-    from icub_affordance.body import OBJECT_NAMES
+    from icub_affordance.body.robot import OBJECT_NAMES
 
     template = grasp_template(robot, grip, size)
     for attempt in range(config.max_attempts):
@@ -172,7 +178,7 @@ def object_demos(
     robot: Robot, obj: str, initial_deg: np.ndarray, seed: int, config: DemoConfig
 ) -> dict[str, np.ndarray]:
     """All grips and sequences of one object, as arrays with (grip, sequence, ...) leading axes."""
-    from icub_affordance.body import OBJECTS
+    from icub_affordance.body.robot import OBJECTS
 
     demos = [
         [
@@ -201,7 +207,7 @@ def object_demos(
 
 def merge_demos(parts: dict[str, dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
     """The per-object parts joined into the contract file's layout (object, grip, seq, ...)."""
-    from icub_affordance.body import DOF_NAMES, to_normalised
+    from icub_affordance.body.robot import DOF_NAMES, to_normalised
 
     objects = list(parts)
     merged = {key: np.stack([parts[o][key] for o in objects]) for key in parts[objects[0]]}
@@ -214,7 +220,7 @@ def merge_demos(parts: dict[str, dict[str, np.ndarray]]) -> dict[str, np.ndarray
 
 def summary_rows(merged: dict[str, np.ndarray], config: DemoConfig) -> list[dict[str, object]]:
     """One readable row per demonstration: how it ended, and where the hand was."""
-    from icub_affordance.body import TOUCH_NAMES
+    from icub_affordance.body.robot import TOUCH_NAMES
 
     rows = []
     for o, obj in enumerate(merged["objects"]):

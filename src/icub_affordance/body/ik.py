@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from icub_affordance.body import N_ARM_DOF, Robot
+from icub_affordance.body.robot import N_ARM_DOF, Robot
 
 
 @dataclass(frozen=True)

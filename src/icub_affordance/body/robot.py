@@ -34,7 +34,7 @@ from icub_affordance.vocabulary import (  # noqa: E402, F401  (re-exported: the 
 )
 
 #: The scene shipped with the project.
-SCENE_PATH = Path(__file__).resolve().parents[2] / "assets" / "icub_scene.xml"
+SCENE_PATH = Path(__file__).resolve().parents[3] / "assets" / "icub_scene.xml"
 
 
 def resize_object(spec: mujoco.MjSpec, name: str, size: float) -> None:

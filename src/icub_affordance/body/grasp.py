@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from icub_affordance.body import DOF_MAX_DEG, DOF_MIN_DEG, N_ARM_DOF, N_DOF, Robot
-from icub_affordance.ik import solve_palm_pose
+from icub_affordance.body.ik import solve_palm_pose
+from icub_affordance.body.robot import DOF_MAX_DEG, DOF_MIN_DEG, N_ARM_DOF, N_DOF, Robot
 from icub_affordance.vocabulary import GRIPS
 
 #: Palm frame axes (columns, in world coordinates) for a palm-down hand with the fingers forward.

@@ -13,7 +13,7 @@ from itertools import combinations
 import cv2
 import numpy as np
 
-from icub_affordance.body import Robot
+from icub_affordance.body.robot import Robot
 
 
 @dataclass(frozen=True)
