@@ -13,7 +13,7 @@ from icub_affordance.body.animation import compose, filmed_networks, trial_frame
 from icub_affordance.body.demonstrations import make_demo
 from icub_affordance.body.grasp import DEMO_S
 from icub_affordance.body.robot import to_normalised
-from icub_affordance.robot_trials import replay_policy, run_trial
+from icub_affordance.trials.on_robot import replay_policy, run_trial
 
 
 def film(n: int, colour: tuple[int, int, int], height: int = 30, width: int = 40) -> list:

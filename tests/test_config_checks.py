@@ -437,9 +437,9 @@ def test_a_schema_refusal_names_key_value_allowed_and_fix(change, words):
 
 
 def test_the_measures_names_come_from_their_registry(monkeypatch):
-    """A measure is named once, in icub_affordance.measures.MEASURES: the schema takes its valid
-    `readings.measures` entries and the margins it requires from there."""
-    from icub_affordance import measures
+    """A measure is named once, in icub_affordance.trials.scores.MEASURES: the schema takes its
+    valid `readings.measures` entries and the margins it requires from there."""
+    from icub_affordance.trials import scores as measures
     from icub_workflow.config_checks import check_schema, load_schema
 
     config = load_config()

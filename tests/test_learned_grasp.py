@@ -26,7 +26,6 @@ from icub_affordance.body.robot import (
     to_degrees,
     to_normalised,
 )
-from icub_affordance.evaluate import TrialSet, evaluate_network, trial_row
 from icub_affordance.files import save_npz
 from icub_affordance.learning.network import Weights, run_closed_loop, train_online
 from icub_affordance.learning.training import (
@@ -37,7 +36,8 @@ from icub_affordance.learning.training import (
     target_grip,
     train_network,
 )
-from icub_affordance.robot_trials import (
+from icub_affordance.trials.in_silico import TrialSet, evaluate_network, trial_row
+from icub_affordance.trials.on_robot import (
     body_tolerance,
     demo_palms,
     embodied_network,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from icub_affordance.measures import (
+from icub_affordance.trials.scores import (
     DERIVED,
     EXCESS,
     MEASURES,
@@ -173,6 +173,6 @@ def test_the_correct_trial_rmse_is_declared_derived_and_able_to_lack_cells():
 
 
 def test_every_analysed_measure_has_its_label_in_the_registry():
-    from icub_affordance.measures import LABELS
+    from icub_affordance.trials.scores import LABELS
 
     assert set(analysed(MEASURES)) == set(LABELS)

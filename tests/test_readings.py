@@ -779,7 +779,7 @@ def test_closed_loop_trials_do_not_depend_on_the_sequence(built):
 
 
 def test_readings_summary_has_every_cell(built):
-    from icub_affordance.measures import analysed, can_lack_cells
+    from icub_affordance.trials.scores import analysed, can_lack_cells
 
     table = pd.read_csv(built / "data" / "readings" / "summary.csv")
     readings = load_config()["readings"]
@@ -797,7 +797,7 @@ def test_readings_summary_has_every_cell(built):
     tested = table["p"].notna()
     assert (table.loc[tested, "df"] == replications - table.loc[tested, "not_estimable"] - 1).all()
     assert not table.loc[~table["measure"].map(can_lack_cells), "not_estimable"].any()
-    from icub_affordance.measures import is_hypothesis
+    from icub_affordance.trials.scores import is_hypothesis
 
     # the null control and the measure tested by its excess over it are in no family
     hypothesis = table["measure"].map(is_hypothesis)

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from icub_affordance.body.vision import check_seen
-from icub_affordance.evaluate import evaluate_network
 from icub_affordance.learning.network import Weights
+from icub_affordance.trials.in_silico import evaluate_network
 
 
 def maps(**cells) -> dict[str, np.ndarray]:
@@ -43,7 +43,7 @@ def test_weights_with_nan_are_refused_naming_the_network():
 
 
 def test_a_network_that_outputs_nan_fails_its_evaluation_naming_it(monkeypatch):
-    import icub_affordance.evaluate as evaluate
+    import icub_affordance.trials.in_silico as evaluate
 
     class Setup:
         context = np.zeros((1, 2, 200))

@@ -299,8 +299,8 @@ def readings_effects(summary, replications, path) -> None:
     on Holm's p (``readings.direction``), and each replication's estimate as a small dot. A
     measure with a null control (``measures.NULL_CONTROLS``) shows it in the same panel, just
     below each reading, as an open grey square: the effect the denominator alone makes."""
-    from icub_affordance.measures import NULL_CONTROLS, is_null_control
     from icub_affordance.readings import direction
+    from icub_affordance.trials.scores import NULL_CONTROLS, is_null_control
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     readings = list(dict.fromkeys(summary["reading"]))
@@ -494,7 +494,7 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
     (positive: the paper's direction, large lower) and each replication's estimate, the removal
     control (no size in the input) at the left, apart. Last row: the manipulation check, the
     large/small ratio of the clusters' units per shape and map."""
-    from icub_affordance.measures import is_null_control
+    from icub_affordance.trials.scores import is_null_control
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
     cues = list(dict.fromkeys(summary["cue"]))

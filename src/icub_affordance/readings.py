@@ -33,15 +33,6 @@ import functools
 import numpy as np
 import pandas as pd
 
-from icub_affordance.measures import (
-    analysed,
-    can_lack_cells,
-    is_derived,
-    is_hypothesis,
-    is_null_control,
-    margin_measure,
-    with_excess,
-)
 from icub_affordance.outcome import Outcome
 from icub_affordance.stats import (
     categorisation_trials,
@@ -56,6 +47,15 @@ from icub_affordance.stats import (
     per_network_contrasts,
     t_term,
     with_outcomes,
+)
+from icub_affordance.trials.scores import (
+    analysed,
+    can_lack_cells,
+    is_derived,
+    is_hypothesis,
+    is_null_control,
+    margin_measure,
+    with_excess,
 )
 from icub_affordance.verdicts import ALPHA
 from icub_affordance.vocabulary import MODES

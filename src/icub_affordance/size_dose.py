@@ -28,9 +28,9 @@ import pandas as pd
 
 from icub_affordance.claims import power, sd_interval
 from icub_affordance.learning.maps import active_units
-from icub_affordance.measures import analysed
 from icub_affordance.readings import family_names, flat_term, holm_hypotheses, over_replications
 from icub_affordance.stats import holm, t_term
+from icub_affordance.trials.scores import analysed
 from icub_affordance.vocabulary import OBJECTS, TASKS
 
 #: The effect the study is about (the per-network contrast of the same name).

@@ -128,11 +128,11 @@ def _first_sentence(description: str) -> str:
 
 def load_schema(path: str | Path) -> dict[str, Any]:
     """The config's JSON schema (workflow/schemas/config.schema.yaml), with the measures' and the
-    signatures' names filled in from where they are declared (``icub_affordance.measures.
+    signatures' names filled in from where they are declared (``icub_affordance.trials.scores.
     MEASURES``, ``icub_affordance.signatures.TESTS``): a measure added there is a valid
     ``readings.measures`` entry and needs an equivalence margin."""
-    from icub_affordance.measures import MEASURES
     from icub_affordance.signatures import TESTS
+    from icub_affordance.trials.scores import MEASURES
 
     # LibYAML's loader where PyYAML has it (it reads the schema ten times faster; every
     # Snakemake start reads it)

@@ -295,7 +295,7 @@ class RunPlan:
         size-free, demonstrations and SOMs (unless it reads an earlier run's, ``stage_run``),
         its networks, and (``tests``) the in-silico tests, ANOVAs and Figure 5. A robot variant
         is tested on the robot only: its in-silico closed loop would feed a servo target back
-        as the posture reached (icub_affordance.evaluate)."""
+        as the posture reached (icub_affordance.trials.in_silico)."""
         steps = []
         if self.makes(run, "maps") and self.config(run)["size_free_input"]:
             steps.append("size_free_maps")

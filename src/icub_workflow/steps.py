@@ -151,8 +151,8 @@ def measure_networks(
 ) -> None:
     """Score every test trial of a run's networks on each declared measure (``trials_path``),
     and each measure's per-network contrasts and per-object means (``json_path``)."""
-    from icub_affordance.measures import measure_network
     from icub_affordance.readings import analyse_measures
+    from icub_affordance.trials.scores import measure_network
 
     n_networks = network["networks"]
     rows = []

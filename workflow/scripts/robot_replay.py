@@ -4,7 +4,7 @@ postures (the controller's ceiling, and what a perfect network would send)."""
 from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz, redirect_log, write_csv
-from icub_affordance.robot_trials import replay_demos
+from icub_affordance.trials.on_robot import replay_demos
 
 with redirect_log(snakemake.log[0]):
     demos = load_npz(snakemake.input.demos, required=("angles", "commands_deg", "objects", "grips"))

@@ -7,7 +7,7 @@ from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz, redirect_log, write_csv
 from icub_affordance.robot_stats import tolerance_table
-from icub_affordance.robot_trials import body_tolerance
+from icub_affordance.trials.on_robot import body_tolerance
 
 with redirect_log(snakemake.log[0]):
     demos = load_npz(snakemake.input.demos, required=("angles", "commands_deg", "objects", "grips"))

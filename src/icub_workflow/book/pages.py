@@ -17,7 +17,6 @@ from icub_affordance import verdicts as science
 from icub_affordance.files import load_npz
 from icub_affordance.learning.maps import active_units
 from icub_affordance.learning.variants import NetworkVariant
-from icub_affordance.measures import margin_measure
 from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.size_dose import (
     FAMILY_MOTOR_ADDED,
@@ -25,6 +24,7 @@ from icub_affordance.size_dose import (
     ranked_like_size,
 )
 from icub_affordance.stats import WITHIN
+from icub_affordance.trials.scores import margin_measure
 from icub_affordance.vocabulary import MODES
 from icub_workflow.runs import MAIN
 

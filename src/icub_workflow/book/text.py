@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from icub_affordance.measures import LABELS
+from icub_affordance.trials.scores import LABELS
 
 from .words import (
     AFTER_RESULTS,
@@ -70,7 +70,7 @@ CUES = {"first_step": "the cue at the first step only", "all_steps": "the cue at
 
 # -- which reading reproduces the paper: phrases on the readings' tests (``pages._shown``) -----
 
-MEASURE_LABELS = LABELS  # declared with the measures (icub_affordance.measures)
+MEASURE_LABELS = LABELS  # declared with the measures (icub_affordance.trials.scores)
 CUE_LABELS = dict(first_step="first", all_steps="every", cue_timing="cue", goal_response="Goal")
 
 

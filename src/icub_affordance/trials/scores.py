@@ -48,9 +48,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from icub_affordance.evaluate import TrialSet, describe_trial
 from icub_affordance.learning.network import Weights, run_closed_loop
 from icub_affordance.learning.training import Materials
+from icub_affordance.trials.in_silico import TrialSet, describe_trial
 from icub_affordance.vocabulary import MODES
 
 #: The measures that can be declared, in the order of the tables (config ``readings.measures``).

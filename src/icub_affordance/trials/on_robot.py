@@ -43,9 +43,9 @@ from icub_affordance.body.robot import (
     to_degrees,
     to_normalised,
 )
-from icub_affordance.evaluate import TrialSet, trial_row
 from icub_affordance.learning.network import Weights, network_step
 from icub_affordance.learning.training import Materials
+from icub_affordance.trials.in_silico import TrialSet, trial_row
 
 #: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.
 Policy = Callable[[int, np.ndarray], np.ndarray]
