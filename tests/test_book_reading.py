@@ -139,7 +139,8 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base["score_size_grips_first_step_verdict"] == "carries part of it, the paper's way"
     assert base["score_robot_own_verdict"] == "falls short"
     assert base["score_robot_best_verdict"] == "shown"
-    # a signature's row shows the verdict its chapter's test gave (icub_affordance.signatures)
+    # a signature's row shows the verdict its chapter's test gave
+    # (icub_affordance.analysis.signature_tests)
     assert base["score_signature_grows_with_rt_verdict"] == "shown"
     assert base["score_signature_advance_cueing_verdict"] == "not testable here"
     # flip each statistic: its verdict, and only its, follows

@@ -16,7 +16,7 @@ from scipy import stats as sps
 from test_contrasts import synthetic
 from test_robot_variants import trials as robot_trials
 
-from icub_affordance.robot_stats import (
+from icub_affordance.analysis.robot_effects import (
     PALM_BINS_MM,
     grasping_trials,
     record_table,
@@ -24,8 +24,12 @@ from icub_affordance.robot_stats import (
     robot_statistics,
     table_record,
 )
-from icub_affordance.stats import cue_timing_difference, difference_tests, mcnemar_exact
-from icub_affordance.verdicts import robot_effect_statistics, wrong_grip_by_congruency
+from icub_affordance.analysis.statistics import (
+    cue_timing_difference,
+    difference_tests,
+    mcnemar_exact,
+)
+from icub_affordance.analysis.verdicts import robot_effect_statistics, wrong_grip_by_congruency
 
 
 @pytest.mark.parametrize(("only_a", "only_b"), [(4, 1), (1, 4), (0, 7), (10, 10), (3, 12)])

@@ -9,7 +9,7 @@ import pytest
 from scipy import stats as sps
 from statsmodels.stats.power import TTestPower
 
-from icub_affordance import claims
+from icub_affordance.analysis import paper_claims as claims
 from icub_affordance.outcome import Outcome
 
 DECLARATION = {

@@ -96,13 +96,14 @@ def test_page_code_reads_code_cells_without_their_options(tmp_path):
     page = tmp_path / "p.md"
     page.write_text(
         "# Title\n\n```{code-cell} ipython3\n---\ntags: [remove-input]\n---\n"
-        "from icub_affordance.stats import x\n%matplotlib inline\n```\n\n"
+        "from icub_affordance.analysis.statistics import x\n%matplotlib inline\n```\n\n"
         "```python\nfrom icub_affordance.body.robot import y\n```\n"
         "```{code-cell} ipython3\n:tags: [hide-input]\nimport icub_affordance.learning.maps\n```\n"
     )
     code = page_code(page)
     ast.parse(code)
-    assert "stats" in code and "maps" in code and "body" not in code  # a plain block is no cell
+    # a plain block is no cell
+    assert "statistics" in code and "maps" in code and "body" not in code
 
 
 #: Run in one fresh interpreter: for each source, the project's modules are dropped from

@@ -1,6 +1,6 @@
 """Explore, then confirm (issue 24): the share held on the networks a variant was chosen on and on
 fresh ones, each grasping trial counted once, with an interval that takes a network's objects as
-one cluster (icub_affordance.confirmation)."""
+one cluster (icub_affordance.analysis.confirmation)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from icub_affordance.confirmation import (
+from icub_affordance.analysis.confirmation import (
     COLUMNS,
     DETAIL_COLUMNS,
     bar_verdict,

@@ -1,14 +1,18 @@
 """The correct-trial RMSE's sensitivity estimate over every replication
-(icub_affordance.correct_sensitivity), checked on made-up trials: a replication lacking a cell
-still counts, a known effect is recovered, the networks per cell are counted right."""
+(icub_affordance.analysis.correct_sensitivity), checked on made-up trials: a replication lacking a
+cell still counts, a known effect is recovered, the networks per cell are counted right."""
 
 from __future__ import annotations
 
 import numpy as np
 import pandas as pd
 
-from icub_affordance.correct_sensitivity import FAMILY, cells, observations, sensitivity
-from icub_affordance.stats import categorisation_trials, correct_trial_effects, with_outcomes
+from icub_affordance.analysis.correct_sensitivity import FAMILY, cells, observations, sensitivity
+from icub_affordance.analysis.statistics import (
+    categorisation_trials,
+    correct_trial_effects,
+    with_outcomes,
+)
 
 #: Each mapping's objects: (object, size, congruent); mapping B swaps which are congruent.
 OBJECTS = {
@@ -98,7 +102,7 @@ def test_a_replication_lacking_a_cell_still_counts():
 def test_a_known_effect_is_recovered_on_the_project_scale():
     """True congruency 0.02 and size 0.01: each within its 95% interval; with every cell
     present the estimate is the networks' mean contrast and the mean of the replications'
-    ``stats.correct_trial_effects`` estimates (the confirmation's), both computed apart."""
+    ``statistics.correct_trial_effects`` estimates (the confirmation's), both computed apart."""
     trials = made_up(replications=6, networks=8, congruency=0.02, size=0.01, seed=3)
     table = sensitivity(trials).set_index("effect")
     hand = by_hand(trials)

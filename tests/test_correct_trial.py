@@ -1,6 +1,6 @@
 """One estimator for the correct-trial RMSE (issue 47): every chapter that shows the measure (the
-results, the readings, the size study, the claims' confirmation, the signatures) takes its
-number from ``stats.correct_trial_effects``. Changing the estimator's input moves each chapter's
+results, the readings, the size study, the claims' confirmation, the signatures) takes its number
+from ``statistics.correct_trial_effects``. Changing the estimator's input moves each chapter's
 number to the estimator's new value, and the estimator itself is recomputed by hand."""
 
 from __future__ import annotations
@@ -10,7 +10,11 @@ import pandas as pd
 import pytest
 from test_contrasts import synthetic, with_errors
 
-from icub_affordance import claims, readings, signatures, size_dose, stats
+from icub_affordance.analysis import paper_claims as claims
+from icub_affordance.analysis import reading_tests as readings
+from icub_affordance.analysis import signature_tests as signatures
+from icub_affordance.analysis import size_study as size_dose
+from icub_affordance.analysis import statistics as stats
 
 MEASURES = ["rmse", "rmse_correct", "wrong_grip"]
 DECLARATION = {"cues": ["first_step"], "modes": ["closed_loop", "teacher_forced"],

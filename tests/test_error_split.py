@@ -1,5 +1,5 @@
 """The closed-loop effects taken apart into their wrong-grip and correct-trial parts
-(icub_affordance.error_split), checked on made-up trials against sums done by hand."""
+(icub_affordance.analysis.error_split), checked on made-up trials against sums done by hand."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from icub_affordance.error_split import cells, split
+from icub_affordance.analysis.error_split import cells, split
 
 
 def made_up(wrong_large: int = 3, trials: int = 10) -> pd.DataFrame:

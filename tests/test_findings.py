@@ -17,8 +17,8 @@ import yaml
 from conftest import REPO, load_test_config
 from scipy import stats as sps
 
-from icub_affordance import verdicts
-from icub_affordance.verdicts import Verdict, verdict
+from icub_affordance.analysis import verdicts
+from icub_affordance.analysis.verdicts import Verdict, verdict
 
 
 def analysis(congruent, incongruent, large, small, p_congruency, p_size):
@@ -327,7 +327,7 @@ def test_the_rule_computes_the_grip_distance_of_the_runs_demonstrations(built, f
 
 
 def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
-    from icub_affordance.stats import holm
+    from icub_affordance.analysis.statistics import holm
 
     # the front page reads the confirmatory family over the replications, recomputed here
     summary = pd.read_csv(built / "data" / "claims" / "summary.csv")

@@ -15,8 +15,7 @@ import pytest
 from conftest import REPO, load_config, run_snakemake, scratch_workflow
 from scipy import stats as sps
 
-from icub_affordance.outcome import Outcome
-from icub_affordance.readings import (
+from icub_affordance.analysis.reading_tests import (
     BY_EXCESS,
     DIFFERENCE_COLUMNS,
     FAMILY_DIFFERENCES,
@@ -33,7 +32,7 @@ from icub_affordance.readings import (
     replication_rows,
     summary,
 )
-from icub_affordance.stats import (
+from icub_affordance.analysis.statistics import (
     categorisation_trials,
     difference_tests,
     equivalence,
@@ -42,6 +41,7 @@ from icub_affordance.stats import (
     with_outcomes,
     within_network_fit,
 )
+from icub_affordance.outcome import Outcome
 from icub_workflow.book import text
 from icub_workflow.book.pages import readings as readings_page
 from icub_workflow.book.pages import traced
@@ -813,7 +813,7 @@ def test_readings_summary_has_every_cell(built):
 def test_anova_json_has_the_contrasts_per_mode(built):
     import json
 
-    from icub_affordance.stats import TERMS
+    from icub_affordance.analysis.statistics import TERMS
     from icub_affordance.vocabulary import MODES
 
     anova = json.loads((built / "data" / "eval" / "anova.json").read_text())

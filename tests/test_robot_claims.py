@@ -1,6 +1,6 @@
 """The robot's effect sentences (issue 24): each is a ``text.Claim`` resting on the statistics
 stored beside it, and changing a statistic (its sign, its p across 0.05, its counts) changes the
-sentence accordingly. Made-up effects, in the shape ``robot_stats.variant_effects`` writes."""
+sentence accordingly. Made-up effects, in the shape ``robot_effects.variant_effects`` writes."""
 
 import copy
 
@@ -169,8 +169,8 @@ def robot_trials(held: dict[str, int], touched: dict[str, int], seconds: dict[st
 @pytest.mark.heavy
 def test_the_made_up_counts_are_the_ones_variant_effects_writes():
     """The made-up variant's counts, per level, cell and object, are what
-    ``robot_stats.variant_effects`` counts in trials made to give them."""
-    from icub_affordance.robot_stats import variant_effects
+    ``robot_effects.variant_effects`` counts in trials made to give them."""
+    from icub_affordance.analysis.robot_effects import variant_effects
 
     real = variant_effects(robot_trials(HELD, TOUCHED, SECONDS))["v"]
     made = {"success": measure(HELD), "contact_time": measure(TOUCHED, SECONDS)}
@@ -340,7 +340,7 @@ def test_a_variant_is_named_in_short_words():
 
 
 def analysis(err_estimate: float, err_p: float, categorisation: float = 0.4) -> dict:
-    from icub_affordance.robot_stats import OWN_ROBOT_FAMILY
+    from icub_affordance.analysis.robot_effects import OWN_ROBOT_FAMILY
 
     # the own networks' robot tests as success_analysis writes them: a family of their own (the
     # same term twice here: congruency and size)
@@ -411,7 +411,7 @@ def test_an_effect_one_cell_carries_is_named_as_that_cell_and_follows_a_swap():
     """Holding fails in one cell only (1 of 12 held, every other cell 11 of 12): size's and
     congruency's effects are that cell's, so the chapter names the cell, not an effect; swap
     that cell's count with another's and the words follow the cell (issue 60)."""
-    from icub_affordance.robot_stats import variant_effects
+    from icub_affordance.analysis.robot_effects import variant_effects
 
     def words(held: dict[str, int]) -> dict[str, str]:
         effs = variant_effects(robot_trials(held, TOUCHED, SECONDS))

@@ -9,10 +9,10 @@ import pandas as pd
 import pytest
 from conftest import demo_config, load_test_config
 
+from icub_affordance.analysis.robot_effects import ROBOT_FAMILY, success_table, variant_effects
 from icub_affordance.body.grasp import grip_in_contact, grip_used
 from icub_affordance.body.robot import OBJECT_NAMES, Robot, to_normalised
 from icub_affordance.learning.network import Weights, network_step, run_closed_loop
-from icub_affordance.robot_stats import ROBOT_FAMILY, success_table, variant_effects
 from icub_affordance.trials.hidden_states import (
     distances_to_grasping,
     first_divergent_step,

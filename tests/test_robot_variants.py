@@ -11,7 +11,7 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
-from icub_affordance.robot_stats import (
+from icub_affordance.analysis.robot_effects import (
     VARIANT_COLUMNS,
     distinct_trials,
     paired_grasping,
@@ -21,7 +21,7 @@ from icub_affordance.robot_stats import (
     variant_effects,
     variant_table,
 )
-from icub_affordance.verdicts import (
+from icub_affordance.analysis.verdicts import (
     best_robot_variant,
     held_interval,
     robot_effect_verdict,

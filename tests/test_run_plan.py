@@ -494,7 +494,7 @@ def test_without_robustness_the_test_build_tests_its_own_networks_and_the_confir
 def test_with_robustness_the_plan_adds_the_sweep_and_the_robot_grid_in_one_job_each():
     import itertools
 
-    from icub_affordance.claims import seeds as claim_seeds
+    from icub_affordance.analysis.paper_claims import seeds as claim_seeds
 
     config = load_test_config() | {"robustness": True}
     counts = plan_runs(config).job_counts()

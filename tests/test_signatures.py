@@ -1,6 +1,6 @@
-"""The human signatures' conditions and tests (icub_affordance.signatures): the conditions show
-what they declare, each statistic is recomputed independently, and each verdict word follows its
-statistic across the threshold."""
+"""The human signatures' conditions and tests (icub_affordance.analysis.signature_tests): the
+conditions show what they declare, each statistic is recomputed independently, and each verdict word
+follows its statistic across the threshold."""
 
 from __future__ import annotations
 
@@ -11,10 +11,7 @@ import yaml
 from conftest import REPO
 from scipy import stats as sps
 
-from icub_affordance.learning.network import Weights
-from icub_affordance.learning.training import synthetic_materials
-from icub_affordance.outcome import Outcome
-from icub_affordance.signatures import (
+from icub_affordance.analysis.signature_tests import (
     FAMILY,
     IN_VIEW,
     LEVELS_FAMILY,
@@ -28,6 +25,9 @@ from icub_affordance.signatures import (
     verdict,
     visual_inputs,
 )
+from icub_affordance.learning.network import Weights
+from icub_affordance.learning.training import synthetic_materials
+from icub_affordance.outcome import Outcome
 from icub_workflow.book.words import SIGNATURE_WORDS
 
 

@@ -1,8 +1,8 @@
-"""What drives the size effect (icub_affordance.size_dose), on made-up inputs: the size-free
-input, the manipulation check and the delivered dose, the summary per dose and grip arrangement,
-the grips swapped to their same-shape partner's distance, size and the grips' distance separated
-per replication and their declared tests and power (each recomputed with scipy and numpy), the
-demonstrations' geometry by hand, the motor tests' families, and the plan's runs."""
+"""What drives the size effect (icub_affordance.analysis.size_study), on made-up inputs: the
+size-free input, the manipulation check and the delivered dose, the summary per dose and grip
+arrangement, the grips swapped to their same-shape partner's distance, size and the grips' distance
+separated per replication and their declared tests and power (each recomputed with scipy and numpy),
+the demonstrations' geometry by hand, the motor tests' families, and the plan's runs."""
 
 from __future__ import annotations
 
@@ -15,15 +15,8 @@ from conftest import REPO, load_config, load_test_config, som_config
 from scipy import stats as sps
 from statsmodels.stats.multitest import multipletests
 
-from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
-from icub_affordance.learning.training import (
-    mean_final_grip_distances,
-    shape_partners,
-    swap_scale,
-    swapped_grips,
-)
-from icub_affordance.readings import BY_EXCESS, NULL_CONTROL
-from icub_affordance.size_dose import (
+from icub_affordance.analysis.reading_tests import BY_EXCESS, NULL_CONTROL
+from icub_affordance.analysis.size_study import (
     CONTROLS,
     CROSSED_COLUMNS,
     DECLARED_COLUMNS,
@@ -49,6 +42,13 @@ from icub_affordance.size_dose import (
     separated,
     size_free_maps,
     summary,
+)
+from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
+from icub_affordance.learning.training import (
+    mean_final_grip_distances,
+    shape_partners,
+    swap_scale,
+    swapped_grips,
 )
 from icub_workflow.runs import plan_runs
 
@@ -251,7 +251,7 @@ EXCESS_STUDY = ("rmse_per_grip_distance", "rmse_per_grip_distance_null")
 
 def study_with_a_null_control() -> pd.DataFrame:
     """The study's replications on the RMSE and on RMSE per grip distance with its null control
-    and its excess over it (``measures.analysed``): a run's excess estimate is its measure's
+    and its excess over it (``scores.analysed``): a run's excess estimate is its measure's
     minus its null control's, as the per-network contrasts are linear in the trials."""
     rng = np.random.default_rng(2)
     measures = []

@@ -133,7 +133,7 @@ def test_every_outcome_a_table_or_a_page_reads_has_its_words():
     assert words.direction_codes([1, -1, 0, 2]) == ["paper", "reversed", "none", "not assessable"]
     assert words.signature_words(["", Outcome.AGAINST]) == ["", "opposite"]
     # the words read the science package's one significance level
-    from icub_affordance.verdicts import ALPHA
+    from icub_affordance.analysis.verdicts import ALPHA
 
     assert words.ALPHA == ALPHA
     assert words.verdict_word({"estimate": 1.0, "p": ALPHA * 0.99}) == "reproduced"

@@ -20,7 +20,7 @@ from pathlib import Path
 import pandas as pd
 import yaml
 
-from icub_affordance.claims import declared_tests
+from icub_affordance.analysis.paper_claims import declared_tests
 from icub_workflow.runs import plan_runs
 
 #: Where each measure's term lives in a run's anova.json.

@@ -296,10 +296,10 @@ def sweep_effects(points, path) -> None:
 def readings_effects(summary, replications, path) -> None:
     """Every reading's congruency and size effects on every measure: the mean difference over
     replications with its 95% interval (positive: the paper's direction), coloured by the verdict
-    on Holm's p (``readings.direction``), and each replication's estimate as a small dot. A
-    measure with a null control (``measures.NULL_CONTROLS``) shows it in the same panel, just
+    on Holm's p (``reading_tests.direction``), and each replication's estimate as a small dot. A
+    measure with a null control (``scores.NULL_CONTROLS``) shows it in the same panel, just
     below each reading, as an open grey square: the effect the denominator alone makes."""
-    from icub_affordance.readings import direction
+    from icub_affordance.analysis.reading_tests import direction
     from icub_affordance.trials.scores import NULL_CONTROLS, is_null_control
 
     measures = [m for m in dict.fromkeys(summary["measure"]) if not is_null_control(m)]
@@ -595,7 +595,12 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     errors over replications."""
     import pandas as pd
 
-    from icub_affordance.signatures import IN_VIEW, bin_effects, network_errors, replication_effects
+    from icub_affordance.analysis.signature_tests import (
+        IN_VIEW,
+        bin_effects,
+        network_errors,
+        replication_effects,
+    )
 
     def unit_means(table, by, column):
         table = table[table["dropped"] == -1] if "dropped" in table else table
@@ -645,8 +650,8 @@ def signatures_figure(trials, quantiles: int, path) -> None:
     save(fig, path)
 
 
-#: The forest plot's colour for each direction of a declared test (``claims.direction``), in the
-#: legend's order.
+#: The forest plot's colour for each direction of a declared test (``paper_claims.direction``), in
+#: the legend's order.
 DIRECTION_COLOURS = {Outcome.PAPER: "#1b7837", Outcome.AGAINST: "#b2182b",
                      Outcome.NONE: "#636363", Outcome.NOT_ASSESSABLE: "#bdbdbd"}  # fmt: skip
 

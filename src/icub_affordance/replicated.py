@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from icub_affordance.stats import t_term
+from icub_affordance.analysis.statistics import t_term
 
 
 def assessable(estimates: int, least: int) -> bool:

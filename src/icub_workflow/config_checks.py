@@ -128,10 +128,11 @@ def _first_sentence(description: str) -> str:
 
 def load_schema(path: str | Path) -> dict[str, Any]:
     """The config's JSON schema (workflow/schemas/config.schema.yaml), with the measures' and the
-    signatures' names filled in from where they are declared (``icub_affordance.trials.scores.
-    MEASURES``, ``icub_affordance.signatures.TESTS``): a measure added there is a valid
+    signatures' names filled in from where they are declared
+    (``icub_affordance.trials.scores.MEASURES``,
+    ``icub_affordance.analysis.signature_tests.TESTS``): a measure added there is a valid
     ``readings.measures`` entry and needs an equivalence margin."""
-    from icub_affordance.signatures import TESTS
+    from icub_affordance.analysis.signature_tests import TESTS
     from icub_affordance.trials.scores import MEASURES
 
     # LibYAML's loader where PyYAML has it (it reads the schema ten times faster; every
@@ -190,7 +191,7 @@ def check_schema(config: Mapping[str, Any], schema: Mapping[str, Any], prefix: s
 
 
 def _signature_problems(entries: list[Mapping[str, Any]], key) -> Iterator[str]:
-    from icub_affordance.signatures import TESTS
+    from icub_affordance.analysis.signature_tests import TESTS
 
     seen: set[str] = set()
     for i, entry in enumerate(entries):

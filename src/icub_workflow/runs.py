@@ -17,7 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from icub_affordance.claims import seeds as claim_seeds
+from icub_affordance.analysis.paper_claims import seeds as claim_seeds
 from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.vocabulary import AFTER_PHASE1
 from icub_workflow.config_checks import ConfigError

@@ -151,7 +151,7 @@ def measure_networks(
 ) -> None:
     """Score every test trial of a run's networks on each declared measure (``trials_path``),
     and each measure's per-network contrasts and per-object means (``json_path``)."""
-    from icub_affordance.readings import analyse_measures
+    from icub_affordance.analysis.reading_tests import analyse_measures
     from icub_affordance.trials.scores import measure_network
 
     n_networks = network["networks"]
@@ -183,8 +183,13 @@ def signature_tables(
     (``errors``). A replication: its seed, its model inputs (maps, soms, demos), grip_distance,
     network settings and weights files. A test needs
     ``min_replications`` replications with an estimate (config ``confirmation``)."""
+    from icub_affordance.analysis.signature_tests import (
+        SignatureConfig,
+        errors,
+        network_trials,
+        summary,
+    )
     from icub_affordance.learning.training import load_materials
-    from icub_affordance.signatures import SignatureConfig, errors, network_trials, summary
 
     config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []

@@ -37,7 +37,7 @@ rule claims_errors:
     """Each condition's all-trial RMSE effects taken apart over the confirmation's replications:
     the part its wrong-grip trials carry (their rate times what a wrong grip costs beyond a
     correct trial) and the part of its correct trials, which add up to the effect, with each
-    congruency x size cell's rates, RMSEs and grips' distance (icub_affordance.error_split)."""
+    congruency x size cell's rates, RMSEs and grips' distance (icub_affordance.analysis.error_split)."""
     input:
         trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
         code=script_code("claims_errors"),
@@ -61,7 +61,7 @@ rule claims_correct:
     networks that carry it (correct_cells.csv); per cue x mode a mixed model of the network x
     object means with a random intercept and effect slopes per replication and a random
     intercept per network, t on replications - 1 df, Holm
-    (correct_sensitivity.csv; icub_affordance.correct_sensitivity)."""
+    (correct_sensitivity.csv; icub_affordance.analysis.correct_sensitivity)."""
     input:
         trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
         code=script_code("claims_correct"),

@@ -6,7 +6,7 @@ the config's reading's replications (learning.csv)."""
 import json
 from pathlib import Path
 
-from icub_affordance.claims import (
+from icub_affordance.analysis.paper_claims import (
     confirm,
     learning,
     pilot_power,

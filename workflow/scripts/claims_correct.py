@@ -1,11 +1,11 @@
-"""The correct-trial RMSE's effects over every confirmation replication, none dropped for lacking
-a cell (icub_affordance.correct_sensitivity): the networks that carry each replication's cells
-(data/claims/correct_cells.csv) and the mixed model's estimates (correct_sensitivity.csv), an
+"""The correct-trial RMSE's effects over every confirmation replication, none dropped for lacking a
+cell (icub_affordance.analysis.correct_sensitivity): the networks that carry each replication's
+cells (data/claims/correct_cells.csv) and the mixed model's estimates (correct_sensitivity.csv), an
 exploration beside the confirmatory family."""
 
 import pandas as pd
 
-from icub_affordance.correct_sensitivity import cells, sensitivity
+from icub_affordance.analysis.correct_sensitivity import cells, sensitivity
 from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):

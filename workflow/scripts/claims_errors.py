@@ -4,7 +4,7 @@ cells they come from (error_cells.csv)."""
 
 import pandas as pd
 
-from icub_affordance.error_split import cells, split
+from icub_affordance.analysis.error_split import cells, split
 from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):

@@ -8,13 +8,13 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.files import redirect_log, write_tables
-from icub_affordance.readings import (
+from icub_affordance.analysis.reading_tests import (
     difference_replications,
     differences,
     replication_rows,
     summary,
 )
+from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):
     table = list(snakemake.params.table)

@@ -1,14 +1,14 @@
 """Explore, then confirm: each confirmed variant's share of grasping trials held on its fresh
 networks (the confirmation run's robot trials, joined here) and, where this build tests it there
-(its exploration run named, not None: full scale, or an entry of robot.default), on the networks
-it was chosen on (its rows of data/embodied/trials.csv), with the interval of
-icub_affordance.confirmation, its design effect before the floor at 1, and the trials and held
-per mapping and object.
+(its exploration run named, not None: full scale, or an entry of robot.default), on the networks it
+was chosen on (its rows of data/embodied/trials.csv), with the interval of
+icub_affordance.analysis.confirmation, its design effect before the floor at 1, and the trials and
+held per mapping and object.
 """
 
 import pandas as pd
 
-from icub_affordance.confirmation import confirmation_table
+from icub_affordance.analysis.confirmation import confirmation_table
 from icub_affordance.files import atomic_path, redirect_log
 from icub_workflow.parts import load_robot_trials
 

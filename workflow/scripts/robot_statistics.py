@@ -1,12 +1,12 @@
 """The robot chapter's statistics beyond the variants' table and effects, to
-data/embodied/statistics.json (``icub_affordance.robot_stats``)."""
+data/embodied/statistics.json (``icub_affordance.analysis.robot_effects``)."""
 
 import json
 
 import pandas as pd
 
+from icub_affordance.analysis.robot_effects import robot_statistics
 from icub_affordance.files import redirect_log, write_text
-from icub_affordance.robot_stats import robot_statistics
 
 with redirect_log(snakemake.log[0]):
     statistics = robot_statistics(

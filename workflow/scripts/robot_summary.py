@@ -3,20 +3,20 @@ them); the config's own networks' success by condition and congruency effect; ea
 success and contact time, and their effects (effects.json: congruency, size and their
 interaction, with the counts per cell and per object and one Holm family over every variant's
 tests): the summaries count each network x object x task once
-(``robot_stats.distinct_trials``)."""
+(``robot_effects.distinct_trials``)."""
 
 import json
 
 import pandas as pd
 
-from icub_affordance.files import atomic_path, redirect_log, write_text
-from icub_affordance.robot_stats import (
+from icub_affordance.analysis.robot_effects import (
     VARIANT_COLUMNS,
     success_analysis,
     success_table,
     variant_effects,
     variant_table,
 )
+from icub_affordance.files import atomic_path, redirect_log, write_text
 from icub_workflow.parts import load_robot_trials
 
 with redirect_log(snakemake.log[0]):

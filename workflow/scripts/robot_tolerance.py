@@ -3,10 +3,10 @@ with its arm targets offset, success against the palm's error."""
 
 import pandas as pd
 
+from icub_affordance.analysis.robot_effects import tolerance_table
 from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import load_npz, redirect_log, write_csv
-from icub_affordance.robot_stats import tolerance_table
 from icub_affordance.trials.on_robot import body_tolerance
 
 with redirect_log(snakemake.log[0]):

@@ -9,9 +9,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from icub_affordance.files import load_npz, redirect_log, write_tables
-from icub_affordance.learning.training import swapped_grips
-from icub_affordance.size_dose import (
+from icub_affordance.analysis.size_study import (
     SWAPPED,
     crossed_runs,
     declared_tests,
@@ -24,6 +22,8 @@ from icub_affordance.size_dose import (
     separated,
     summary,
 )
+from icub_affordance.files import load_npz, redirect_log, write_tables
+from icub_affordance.learning.training import swapped_grips
 
 with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]

@@ -4,8 +4,8 @@ import json
 
 import pandas as pd
 
+from icub_affordance.analysis.statistics import analyse, anova_table_markdown
 from icub_affordance.files import redirect_log, write_text
-from icub_affordance.stats import analyse, anova_table_markdown
 
 with redirect_log(snakemake.log[0]):
     trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)

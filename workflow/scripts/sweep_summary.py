@@ -4,8 +4,8 @@ import json
 
 import pandas as pd
 
+from icub_affordance.analysis.statistics import sweep_tables
 from icub_affordance.files import atomic_path, redirect_log
-from icub_affordance.stats import sweep_tables
 
 with redirect_log(snakemake.log[0]):
     names = list(snakemake.params.points)

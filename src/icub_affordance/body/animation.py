@@ -38,7 +38,7 @@ def trial_frames(
     height: int = 180,
     every: int = 20,
 ) -> tuple[list[np.ndarray], Outcome]:
-    """One trial filmed: ``trial(watch=...)`` is ``robot_trials.run_trial`` with the trial's
+    """One trial filmed: ``trial(watch=...)`` is ``on_robot.run_trial`` with the trial's
     arguments bound (``functools.partial``). A frame (height, width, 3, uint8) after the first
     physics step and every ``every`` steps after it (2 ms each), and one of the state after the
     lift test; and the trial's Outcome, the same as a run without the camera. Rendered without

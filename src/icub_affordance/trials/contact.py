@@ -6,7 +6,7 @@ incongruent minus congruent (positive: congruent faster, the paper's direction).
 Why a test of its own: the exploration's contact-time tests ran on the networks a variant was
 chosen on, so they cannot confirm anything about it; the fresh networks were tested on the robot
 in every build, but only for the share held. The estimator is the exploration's
-(``robot_stats.variant_effects``): each network x object once (its closed-loop sequences are one
+(``robot_effects.variant_effects``): each network x object once (its closed-loop sequences are one
 movement), the trials that touched, each network's contrast over its four congruency x size
 cells from the networks that touched in all four, t over them with the mapping as a covariate.
 Beside each test, per cell, the trials and how many touched: a cell that no network touches is
@@ -21,9 +21,9 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from icub_affordance.claims import direction
-from icub_affordance.robot_stats import distinct_trials
-from icub_affordance.stats import contrast_tests, holm, per_network_contrasts
+from icub_affordance.analysis.paper_claims import direction
+from icub_affordance.analysis.robot_effects import distinct_trials
+from icub_affordance.analysis.statistics import contrast_tests, holm, per_network_contrasts
 
 #: The family the declared tests are Holm-adjusted in, over themselves alone.
 FAMILY = "declared: contact-time congruency on fresh networks"
@@ -54,7 +54,7 @@ def cell_counts(trials: pd.DataFrame) -> pd.DataFrame:
 def contact_time_tests(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
     """Per run (a confirmed variant's fresh networks) the declared test: the networks in all,
     those that touched in all four cells (the test's units), estimate, interval, t, df, p, Holm's
-    p over the runs (``FAMILY``) and the direction (``claims.direction``, the confirmation's
+    p over the runs (``FAMILY``) and the direction (``paper_claims.direction``, the confirmation's
     reading: an ``Outcome``); no test with fewer than
     ``min_networks`` networks, networks of one mapping only, or no spread."""
     effect, alpha = declaration["effect"], float(declaration["alpha"])

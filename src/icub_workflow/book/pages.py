@@ -11,19 +11,19 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from icub_affordance import confirmation as confirmation_science
-from icub_affordance import readings as readings_science
-from icub_affordance import verdicts as science
-from icub_affordance.files import load_npz
-from icub_affordance.learning.maps import active_units
-from icub_affordance.learning.variants import NetworkVariant
-from icub_affordance.robot_stats import FACTOR_LEVELS, INTERACTION, record_table
-from icub_affordance.size_dose import (
+from icub_affordance.analysis import confirmation as confirmation_science
+from icub_affordance.analysis import reading_tests as readings_science
+from icub_affordance.analysis import verdicts as science
+from icub_affordance.analysis.robot_effects import FACTOR_LEVELS, INTERACTION, record_table
+from icub_affordance.analysis.size_study import (
     FAMILY_MOTOR_ADDED,
     FAMILY_MOTOR_PLANNED,
     ranked_like_size,
 )
-from icub_affordance.stats import WITHIN
+from icub_affordance.analysis.statistics import WITHIN
+from icub_affordance.files import load_npz
+from icub_affordance.learning.maps import active_units
+from icub_affordance.learning.variants import NetworkVariant
 from icub_affordance.trials.scores import margin_measure
 from icub_affordance.vocabulary import MODES
 from icub_workflow.runs import MAIN
@@ -207,7 +207,7 @@ def carrying_cell(effect: dict) -> str | None:
     """The congruency x size cell that carries a measure's effects, if one does: size's effect
     is shown (Holm within the four simple effects) within one congruency level only and
     congruency's within one size only, so the two meet in one cell ("incongruent_small"); None
-    otherwise, or without simple effects (``robot_stats.variant_effects``)."""
+    otherwise, or without simple effects (``robot_effects.variant_effects``)."""
     simple = effect.get("simple") or {}
     shown = [k for k, t in simple.items() if t["p_holm"] < science.ALPHA]
     size_in = [k.removeprefix("size_in_") for k in shown if k.startswith("size_in_")]

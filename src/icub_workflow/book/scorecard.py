@@ -9,7 +9,7 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from icub_affordance import verdicts as science
+from icub_affordance.analysis import verdicts as science
 
 from . import text, words
 

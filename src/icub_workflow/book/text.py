@@ -133,7 +133,7 @@ def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | 
 
 # -- what drives the size effect ------------------------------------------------------------
 
-#: The demonstrations' measures (icub_affordance.size_dose.GEOMETRY), in short.
+#: The demonstrations' measures (icub_affordance.analysis.size_study.GEOMETRY), in short.
 GEOMETRY_SHORT = {"demo_path_length": "path length", "demo_spread": "spread",
                   "demo_grip_distance": "grips' distance"}  # fmt: skip
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from icub_affordance.analysis.verdicts import ALPHA
 from icub_affordance.outcome import Outcome
-from icub_affordance.verdicts import ALPHA
 
 #: The verdict words themselves, each spelled once: the rest of the book layer names them here.
 REPRODUCED, CONFIRMED, REVERSED = "reproduced", "confirmed", "reversed"
@@ -66,7 +66,7 @@ def below_alpha(p: float, said: str, otherwise: str = "not shown") -> str:
     return said if p < ALPHA else otherwise
 
 
-# -- the declared tests' directions (icub_affordance.claims.direction) ------------------------
+# -- the declared tests' directions (icub_affordance.analysis.paper_claims.direction) --------------
 
 #: The code a result table (``claims/summary.csv``, ``embodied/contact_time.csv``) writes for
 #: each ``Outcome`` of a declared test.
@@ -88,19 +88,19 @@ def direction_codes(outcomes) -> list[str]:
     return [DIRECTION_CODES[Outcome(o)] for o in outcomes]
 
 
-# -- the readings (icub_affordance.readings.direction and difference_verdict) -----------------
+# -- the readings (icub_affordance.analysis.reading_tests.direction and difference_verdict) --------
 
-#: The words of ``readings.direction``'s ``Outcome``.
+#: The words of ``reading_tests.direction``'s ``Outcome``.
 READING_WORDS = {Outcome.PAPER: "reproduced", Outcome.AGAINST: "reversed",
                  Outcome.NONE: "not shown", Outcome.CONSTANT: "no variation"}  # fmt: skip
-#: The words of ``readings.difference_verdict``, where they differ from its code.
+#: The words of ``reading_tests.difference_verdict``, where they differ from its code.
 DIFFERENCE_WORDS = {"none": "not shown", "a > b": "larger", "a < b": "smaller"}
 #: An equivalence whose margin was set after its measure's results were read
 #: (config ``readings.margin_declared``): said so wherever it appears, never counted with the
 #: equivalences whose margin came first.
 AFTER_RESULTS = "equivalent, margin set after results"
 
-# -- the human signatures (icub_affordance.signatures.verdict) --------------------------------
+# -- the human signatures (icub_affordance.analysis.signature_tests.verdict) -----------------------
 
 #: A signature's verdict word for each ``Outcome``, in the order the page counts them.
 SIGNATURE_WORDS = {Outcome.PAPER: "shown", Outcome.NONE: "not shown", Outcome.AGAINST: "opposite",

@@ -237,7 +237,7 @@ def wrong_grip_by_congruency(rates: dict[str, float]) -> dict[str, float]:
 
 
 def tolerated_noise(table: pd.DataFrame, bar: float = GRASPS) -> pd.Series | None:
-    """The body's tolerance (``robot_stats.tolerance_table``): the row of the largest arm
+    """The body's tolerance (``robot_effects.tolerance_table``): the row of the largest arm
     noise at which the demonstrations' mean plan still holds the object in ``bar`` of the trials,
     if any.
     """

@@ -11,10 +11,10 @@ kept), in a linear mixed model with a random intercept and random effect slopes 
 and a random intercept per network within it (``sensitivity``). ``cells`` says how many networks
 carry each cell, so a reader sees what each replication's estimate rests on.
 
-Coding as ``stats.CODING`` (-0.5 / +0.5): the congruency coefficient is incongruent - congruent
+Coding as ``statistics.CODING`` (-0.5 / +0.5): the congruency coefficient is incongruent - congruent
 averaged over size, size's small - large averaged over congruency, the scale of the project's
 estimates (with every cell of every network present, the mixed model's estimate is the mean of the
-replications' ``stats.correct_trial_effects`` estimates). Tests are t from the model's standard
+replications' ``statistics.correct_trial_effects`` estimates). Tests are t from the model's standard
 errors on the replications less one degrees of freedom (the column ``z`` holds that t); Holm
 within ``FAMILY``.
 """
@@ -27,7 +27,13 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from icub_affordance.stats import CODING, categorisation_trials, coded, holm, with_outcomes
+from icub_affordance.analysis.statistics import (
+    CODING,
+    categorisation_trials,
+    coded,
+    holm,
+    with_outcomes,
+)
 
 #: The family of these tests: an exploration, apart from the confirmatory family.
 FAMILY = "exploration: correct-trial sensitivity"

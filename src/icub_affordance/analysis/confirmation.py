@@ -9,7 +9,7 @@ same demonstrations and maps) and tests it on the robot by the same rules; only 
 against a bar.
 
 Unit. A grasping trial is one network grasping one object: a network's test sequences of one
-object are the same movement on the robot (``robot_trials.embodied_network``), so they count once.
+object are the same movement on the robot (``on_robot.embodied_network``), so they count once.
 
 Interval. The four objects of a network are not independent trials: a network that learned
 well grasps most of them. The interval is Clopper-Pearson's exact binomial interval at an

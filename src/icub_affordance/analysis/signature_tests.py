@@ -23,12 +23,12 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.statistics import correct_trial_effects, equivalence, holm
+from icub_affordance.analysis.verdicts import ALPHA
 from icub_affordance.learning.network import Weights, run_closed_loop
 from icub_affordance.learning.training import N_VISUAL, Materials, context, target_grip
 from icub_affordance.outcome import Outcome
 from icub_affordance.replicated import assessable, over_replications
-from icub_affordance.stats import correct_trial_effects, equivalence, holm
-from icub_affordance.verdicts import ALPHA
 from icub_affordance.vocabulary import CATEGORISATION, OBJECTS
 
 #: Where the object is in view at every step: a trial's 9 steps.
@@ -111,7 +111,7 @@ def network_trials(
     """Every noisy categorisation trial of one network in every condition, one row each.
 
     Trial i uses sequence i mod 5 for its start, its target and the grips it is judged by, as
-    the evaluation's trial of that sequence does (``evaluate.trial_row``).
+    the evaluation's trial of that sequence does (``in_silico.trial_row``).
     """
     n_seq = m.demos.shape[2]
     learned = m.targets(target)
@@ -154,7 +154,7 @@ def network_trials(
 
 
 def estimator_rows(trials: pd.DataFrame) -> pd.DataFrame:
-    """``trials`` as the correct-trial estimator reads them (``stats.correct_trial_effects``):
+    """``trials`` as the correct-trial estimator reads them (``statistics.correct_trial_effects``):
     congruency and size as cell names, ``rmse_correct`` the RMSE where the grip was right."""
     out = trials.copy()
     out["congruency"] = np.where(out["congruent"].astype(bool), "congruent", "incongruent")
@@ -178,7 +178,7 @@ def _congruency(rows: pd.DataFrame, left_out: bool = True) -> list[dict[str, flo
 
 def replication_effects(trials: pd.DataFrame, left_out: bool = True) -> pd.DataFrame:
     """Per replication, condition and k: the congruency effect on correct-trial RMSE (incongruent
-    minus congruent) by ``stats.correct_trial_effects``, the estimator every chapter uses: each
+    minus congruent) by ``statistics.correct_trial_effects``, the estimator every chapter uses: each
     network x object's mean over its correct trials is an observation, the fit has an intercept
     per network and the cell terms, so networks keep their other cells when one has no correct
     trial and objects are not pooled (a pooled mean would compare different mixtures of

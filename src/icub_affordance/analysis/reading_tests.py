@@ -6,23 +6,23 @@ how many significantly reversed; and the tests of the differences between readin
 the Goal response), paired by network.
 
 An effect's difference is the contrasts' estimate with the factor coded -0.5 / +0.5
-(``stats.CODING``): incongruent minus congruent, small minus large, averaged over the other
+(``statistics.CODING``): incongruent minus congruent, small minus large, averaged over the other
 factors; for every measure higher is further from the required grip, so a positive difference is
 the paper's direction.
 
 Inference (book/notes.md, "Testing and statistics"). With one replication, an effect's test is the
-replication's own t-test over its networks (df = networks - 2, ``stats.network_contrasts``); with
-several, a t-test of the replications' estimates (df = replications - 1). The family for Holm's
+replication's own t-test over its networks (df = networks - 2, ``statistics.network_contrasts``);
+with several, a t-test of the replications' estimates (df = replications - 1). The family for Holm's
 adjustment is every row of a table that is a hypothesis: every reading x measure x effect of the
 summary, every comparison x measure x effect of the differences; a null control's rows
-(``measures.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
-out of the family (their ``p_holm`` is empty). A verdict (``direction``) needs the adjusted p
-below ``verdicts.ALPHA``; otherwise it is ``NONE``, which is not "no difference": only an
-equivalence test (TOST, with a margin declared in config) can say that. Each table names, per
-row, the family its ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
+(``scores.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
+out of the family (their ``p_holm`` is empty). A verdict (``direction``) needs the adjusted p below
+``verdicts.ALPHA``; otherwise it is ``NONE``, which is not "no difference": only an equivalence test
+(TOST, with a margin declared in config) can say that. Each table names, per row, the family its
+``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
 
-A measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``: the correct-trial
-RMSE) is tested with ``stats.correct_trial_effects``, which keeps such a network; its differences
+A measure that a network can lack in a cell (``scores.MISSING_BY_DESIGN``: the correct-trial RMSE)
+is tested with ``statistics.correct_trial_effects``, which keeps such a network; its differences
 between readings cannot be paired by network (``difference_replications``).
 """
 
@@ -33,8 +33,7 @@ import functools
 import numpy as np
 import pandas as pd
 
-from icub_affordance.outcome import Outcome
-from icub_affordance.stats import (
+from icub_affordance.analysis.statistics import (
     categorisation_trials,
     cell_means,
     correct_trial_effects,
@@ -48,6 +47,8 @@ from icub_affordance.stats import (
     t_term,
     with_outcomes,
 )
+from icub_affordance.analysis.verdicts import ALPHA
+from icub_affordance.outcome import Outcome
 from icub_affordance.trials.scores import (
     analysed,
     can_lack_cells,
@@ -57,7 +58,6 @@ from icub_affordance.trials.scores import (
     margin_measure,
     with_excess,
 )
-from icub_affordance.verdicts import ALPHA
 from icub_affordance.vocabulary import MODES
 
 #: The effects the paper reports, the per-network contrasts' test's terms of the same name.
@@ -72,7 +72,7 @@ FAMILY_EQUIVALENCE = "exploration: readings' equivalence"
 NULL_CONTROL = "null control (not a hypothesis)"
 #: A difference with no spread at all (``identical``): not tested, in no family.
 NOT_TESTED = "not tested (identical)"
-#: A measure tested by its excess over its null control (``measures.EXCESS``): shown, no test.
+#: A measure tested by its excess over its null control (``scores.EXCESS``): shown, no test.
 BY_EXCESS = "shown (tested by its excess over the null control)"
 
 #: The columns that say which effect on which measure, and its mean and interval.
@@ -122,7 +122,7 @@ COMPARISONS = {
 
 
 def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
-    """``trials`` with the derived measures among ``measures`` (``measures.DERIVED``: the
+    """``trials`` with the derived measures among ``measures`` (``scores.DERIVED``: the
     correct-trial RMSE, from ``rmse`` and ``wrong_grip``) as columns."""
     if any(is_derived(m) for m in analysed(measures)):
         trials = with_outcomes(trials)
@@ -130,10 +130,10 @@ def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
 
 
 def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None) -> dict[str, dict]:
-    """A measure's contrasts: ``stats.correct_trial_effects`` for a measure that a network can lack
-    in a cell (``measures.MISSING_BY_DESIGN``: the per-network contrasts would drop that
-    network), the per-network contrasts otherwise. ``means``: ``network_object_means(df,
-    measure)``, when the caller has it already."""
+    """A measure's contrasts: ``statistics.correct_trial_effects`` for a measure that a network can
+    lack in a cell (``scores.MISSING_BY_DESIGN``: the per-network contrasts would drop that
+    network), the per-network contrasts otherwise. ``means``: ``network_object_means(df, measure)``,
+    when the caller has it already."""
     if can_lack_cells(measure):
         return correct_trial_effects(df, measure)
     return network_contrasts(df, measure, means)
@@ -142,7 +142,7 @@ def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None)
 def defined_object_means(
     df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None
 ) -> dict[str, dict[str, float]]:
-    """``stats.object_means`` over the networks with a defined value (means over the defined
+    """``statistics.object_means`` over the networks with a defined value (means over the defined
     trials): every object kept, its ``n_networks`` the networks defined there. ``means``: as for
     ``contrasts``."""
     means = network_object_means(df, measure) if means is None else means
@@ -157,7 +157,7 @@ def defined_object_means(
 
 def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dict]:
     """Per test mode and measure (the declared ones, each with its null control:
-    ``measures.analysed``; the derived ones computed here, ``with_derived``): the contrasts
+    ``scores.analysed``; the derived ones computed here, ``with_derived``): the contrasts
     (``contrasts``), the cell means and the per-object means of the categorisation trials
     (``measures.csv``'s rows), each mean over the defined values only."""
     trials = with_derived(trials, measures)
@@ -176,7 +176,7 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
 
 
 def flat_term(term: dict) -> dict:
-    """A term as one table row: ``stats.correct_trial_effects``' networks per cell as
+    """A term as one table row: ``statistics.correct_trial_effects``' networks per cell as
     ``cells_{cell}`` columns, per mapping and cell as ``cells_{mapping}_{cell}``."""
     nested = ("cells", "cells_by_mapping")
     flat = {k: v for k, v in term.items() if k not in nested}
@@ -291,9 +291,9 @@ def welch_df(se_a: float, se_b: float, df_a: float, df_b: float) -> float:
 
 
 def unpaired_difference(a: pd.DataFrame, b: pd.DataFrame, measure: str) -> dict[str, dict]:
-    """A minus B for a measure that a network can lack in a cell (``measures.MISSING_BY_DESIGN``):
+    """A minus B for a measure that a network can lack in a cell (``scores.MISSING_BY_DESIGN``):
     a network's contrast is then undefined, so the runs cannot be paired by network. Each term
-    is the difference of the two runs' ``stats.correct_trial_effects`` estimates, with
+    is the difference of the two runs' ``statistics.correct_trial_effects`` estimates, with
     se = sqrt(se_a^2 + se_b^2) and Welch-Satterthwaite df. Conservative: the two runs' networks
     are the same networks (same seeds, same mappings), whose estimates correlate positively, and
     the unpaired se ignores that covariance."""
@@ -318,11 +318,11 @@ def difference_replications(
 ) -> pd.DataFrame:
     """One row per comparison (``COMPARISONS``), level of the other choice, replication,
     measure and effect: reading a's effect minus reading b's, paired by network
-    (``stats.difference_tests`` on the two runs' trials of the same seed: a run's network k has
+    (``statistics.difference_tests`` on the two runs' trials of the same seed: a run's network k has
     the seed ``train.network_seed(seed, k)`` and the mapping ``train.mapping_of(k)`` whatever
     the reading, so network k is the same network under the two settings). ``trials`` maps each
     run to its ``measures.csv``. A measure that a network can lack in a cell
-    (``measures.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""
+    (``scores.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""
     by = {(r["cue"], r["goal_response"], r["seed"]): r for r in table}
     rows = []
 

@@ -401,7 +401,7 @@ def object_means(
 #: correct responses with errors reported apart).
 OUTCOMES = {"contrasts": "rmse", "errors": "wrong_grip", "correct_rt": "rmse_correct"}
 
-#: The family of every test of a run, per mode (the confirmatory family is ``claims.FAMILY``).
+#: The family of every test of a run, per mode (the confirmatory family is ``paper_claims.FAMILY``).
 EXPLORATION = "exploration: {mode}"
 
 

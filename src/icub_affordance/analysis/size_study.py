@@ -26,10 +26,15 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from icub_affordance.claims import power, sd_interval
+from icub_affordance.analysis.paper_claims import power, sd_interval
+from icub_affordance.analysis.reading_tests import (
+    family_names,
+    flat_term,
+    holm_hypotheses,
+    over_replications,
+)
+from icub_affordance.analysis.statistics import holm, t_term
 from icub_affordance.learning.maps import active_units
-from icub_affordance.readings import family_names, flat_term, holm_hypotheses, over_replications
-from icub_affordance.stats import holm, t_term
 from icub_affordance.trials.scores import analysed
 from icub_affordance.vocabulary import OBJECTS, TASKS
 
@@ -163,7 +168,7 @@ def delivered_doses(checks: pd.DataFrame) -> pd.Series:
 
 def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     """One row per cue timing, measure, dose and grip arrangement (SUMMARY_COLUMNS): the size
-    effect over the replications (``readings.over_replications``: their mean, a t-interval
+    effect over the replications (``reading_tests.over_replications``: their mean, a t-interval
     over them), Holm's p over the table's hypotheses (``FAMILY_SUMMARY``, exploration; a null
     control's rows are not), the effect relative to the measure's mean, the manipulation
     check's mean ratios and the delivered dose (``delivered_doses``, its mean over the
@@ -341,9 +346,9 @@ POWER_COLUMNS = ["test", "cue", "dose", "replications", "effect_of_interest", "s
 
 
 def power_table(declared: pd.DataFrame, effect: float, alpha: float) -> pd.DataFrame:
-    """Per declared test, its power to detect ``effect`` (``claims.power``: a two-sided
+    """Per declared test, its power to detect ``effect`` (``paper_claims.power``: a two-sided
     one-sample t over its replications), from the build's own SD of the replications' values
-    and at the two ends of that SD's 95% chi-square interval (``claims.sd_interval``): the
+    and at the two ends of that SD's 95% chi-square interval (``paper_claims.sd_interval``): the
     range the variance estimate allows (a larger SD, less power). At alpha / the family's size
     (*at least*: Holm's threshold for any test of the family is at least that, so its power is
     at least this) and at alpha (*at most*: no test of the family is tried at a larger level)."""

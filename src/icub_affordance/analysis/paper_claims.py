@@ -173,7 +173,7 @@ def replication_estimates(
     declaration: Mapping[str, Any],
 ) -> pd.DataFrame:
     """One row per replication and declared test: its estimate (NaN where undefined), from each
-    replication's ``readings.analyse_measures`` result (``analyses``, in the order of ``rows``:
+    replication's ``reading_tests.analyse_measures`` result (``analyses``, in the order of ``rows``:
     cue, seed, run); for the correct-trial RMSE with its networks per cell and its
     leave-one-network-out range."""
     out = []
@@ -200,8 +200,8 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
     ``min_replications``; Holm's p over the family's tests with a p; the direction. For the
     correct-trial RMSE, the widest leave-one-network-out range of the replications' estimates
     and the fewest networks that carried a cell in any replication."""
+    from icub_affordance.analysis.statistics import holm
     from icub_affordance.replicated import over_replications
-    from icub_affordance.stats import holm
 
     alpha, least = float(declaration["alpha"]), int(declaration["min_replications"])
     rows = []
@@ -269,7 +269,7 @@ def learning(curves: Sequence[pd.DataFrame], seeds: Sequence[int], networks: int
     """Per replication (its ``networks`` curves, in the order of ``seeds``), the training RMSE
     at the start and at the end (``verdicts.curve_summary``: the first 10 iterations, the last
     500), averaged over its networks."""
-    from icub_affordance.verdicts import curve_summary
+    from icub_affordance.analysis.verdicts import curve_summary
 
     rows = []
     for i, seed in enumerate(seeds):

@@ -5,9 +5,9 @@ Kept apart from the trials' physics (``robot_trials``) so that the robot jobs st
 and the statistics, and the summary and the book read the tables without the simulator's code.
 
 In closed loop a network's test sequences of one object and task are one and the same movement
-(``robot_trials.embodied_network``): every count, rate and test here is over distinct trials, one
+(``on_robot.embodied_network``): every count, rate and test here is over distinct trials, one
 per network x object x task (``distinct_trials``), never over the duplicated sequences. The
-variants' congruency and size effects are tested per network (``stats.contrast_tests``), with
+variants' congruency and size effects are tested per network (``statistics.contrast_tests``), with
 Fisher's exact test where the contrast has no variance; their congruency x size interaction by
 the per-network contrast only; and Holm's adjustment over them all, one family
 (``ROBOT_FAMILY``). Each effect keeps its counts per cell and per object, so that a reader sees
@@ -27,9 +27,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from icub_affordance.body.robot import TOUCH_NAMES
-from icub_affordance.learning.variants import NetworkVariant
-from icub_affordance.stats import (
+from icub_affordance.analysis.statistics import (
     adjust_families,
     categorisation_trials,
     cell_means,
@@ -43,6 +41,8 @@ from icub_affordance.stats import (
     simple_effects,
     trial_conditions,
 )
+from icub_affordance.body.robot import TOUCH_NAMES
+from icub_affordance.learning.variants import NetworkVariant
 
 #: The family of the config's own networks' robot tests in ``success_analysis``.
 OWN_ROBOT_FAMILY = "exploration: the config's own networks on the robot"
@@ -123,10 +123,10 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
 
     For success (0/1) and for the final posture error: each network's mean per congruency x size
     cell, the per-network incongruent - congruent difference with its 95% t-interval, the
-    per-network contrasts used for inference (``stats.network_contrasts``: t over networks), and,
-    descriptive only, the repeated-measures ANOVA (network as subject; it averages each network's
-    cell, so the duplicated sequences never changed it). Where every network scores the same in
-    every cell the ANOVA is undefined and reported as None.
+    per-network contrasts used for inference (``statistics.network_contrasts``: t over networks),
+    and, descriptive only, the repeated-measures ANOVA (network as subject; it averages each
+    network's cell, so the duplicated sequences never changed it). Where every network scores the
+    same in every cell the ANOVA is undefined and reported as None.
     """
     trials = distinct_trials(trials)
     df = categorisation_trials(trials, "embodied")
@@ -406,14 +406,14 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     trials (``distinct_trials``: each network x object counted once, whatever the number of test
     sequences).
 
-    Success: per factor, the per-network contrast (``stats.network_contrasts`` on success as 0/1
-    per network x object, a difference of proportions tested over the networks with t), where
+    Success: per factor, the per-network contrast (``statistics.network_contrasts`` on success as
+    0/1 per network x object, a difference of proportions tested over the networks with t), where
     its test is defined; where it is not (every network shows the same contrast: no variance),
-    Fisher's exact test over the distinct trials. Contact time: the per-network contrasts over
-    the trials that touched, from the networks that touched in all four congruency x size cells;
-    where that test is undefined (fewer than three such networks, or no variance) the effect is
-    not estimable and says why. The congruency x size interaction (``INTERACTION``): the
-    per-network contrast where defined, else no test (an interaction has no exact fallback).
+    Fisher's exact test over the distinct trials. Contact time: the per-network contrasts over the
+    trials that touched, from the networks that touched in all four congruency x size cells; where
+    that test is undefined (fewer than three such networks, or no variance) the effect is not
+    estimable and says why. The congruency x size interaction (``INTERACTION``): the per-network
+    contrast where defined, else no test (an interaction has no exact fallback).
 
     Each measure keeps its counts per level, per cell (``cells``: "congruent_large", ...) and per
     mapping and object (``objects``: "A_big_ball", ...), each with its distinct trials, how many
@@ -441,7 +441,7 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
 
 
 def _simple_or_none(df: pd.DataFrame, measure: str) -> dict[str, dict] | None:
-    """Each factor's effect within each level of the other (``stats.simple_effects``: small -
+    """Each factor's effect within each level of the other (``statistics.simple_effects``: small -
     large among the congruent trials, ...) over the networks with all four cells, Holm over
     those of the four that have a test (``p_holm``): where a main effect comes from one cell,
     these say which. None with fewer
@@ -511,7 +511,7 @@ def paired_grasping(trials: pd.DataFrame, column: str, keys: tuple[str, ...]) ->
     presentations: its grasping trial of an object (one physical trial, however many test
     sequences share it) pairs with the other variant's. Per pair of values: the distinct trials,
     how many each holds, the discordant pairs, and the exact McNemar test
-    (``stats.mcnemar_exact``).
+    (``statistics.mcnemar_exact``).
     """
     grasping = grasping_trials(trials, keys)
     others = [k for k in keys if k != column]
@@ -555,8 +555,8 @@ def robot_statistics(
 ) -> dict[str, object]:
     """Every statistic of this module, for JSON (``data/embodied/statistics.json``):
 
-    - ``tolerance``: ``robot_stats.tolerance_table`` of the tolerance trials (``table_record``);
-    - ``held_by_palm_error``: ``robot_stats.held_by_palm_error`` of the tolerance trials
+    - ``tolerance``: ``robot_effects.tolerance_table`` of the tolerance trials (``table_record``);
+    - ``held_by_palm_error``: ``robot_effects.held_by_palm_error`` of the tolerance trials
       (``tolerance``), the replayed demonstrations (``replay``) and each variant's distinct
       grasping trials (``runs``, by run);
     - ``replay``: ``replay_palm``;
