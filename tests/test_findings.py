@@ -143,7 +143,7 @@ def test_the_learning_curve_summary():
 
 
 def test_a_thinned_learning_curve_is_summarised_over_the_iterations_it_kept():
-    """A long training's curve keeps every k-th iteration (train.curve_every): each window is
+    """A long training's curve keeps every k-th iteration (training.curve_every): each window is
     the kept rows whose iteration falls in it, not the first rows."""
     kept = np.arange(4, 3001, 4)  # iterations 4, 8, ..., 3000
     curves = np.stack([kept, kept + 2.0])

@@ -830,7 +830,7 @@ def test_anova_json_has_the_contrasts_per_mode(built):
 def test_paired_readings_share_each_networks_seed(built):
     """The pairing of the differences: network k of every reading at one seed draws the same
     initial weights and the same training schedule (one generator, seeded by
-    train.network_seed(seed, k), draws both in that order), so the schedules in the learning
+    training.network_seed(seed, k), draws both in that order), so the schedules in the learning
     curves coincide between readings and differ between networks."""
     import yaml
     from conftest import TEST_CONFIG

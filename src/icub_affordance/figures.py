@@ -181,7 +181,7 @@ def figure4(
 ) -> None:
     """Training RMSE per iteration, averaged over networks (moving average), with its spread.
     ``iterations``: each row's iteration, when the curves keep only every k-th
-    (``train.curve_every``); the moving average then spans ``window`` rows."""
+    (``training.curve_every``); the moving average then spans ``window`` rows."""
     data = np.array(curves)  # (networks, rows)
     kernel = np.ones(window) / window
     smooth = np.array([np.convolve(c, kernel, mode="valid") for c in data])

@@ -103,7 +103,7 @@ SCHEDULES: tuple[str, ...] = ("constant", "anneal")
 #: The network settings that act only after phase 1, or on no result: phase 1 trains grasping
 #: alone (the cue timing shows only in categorisation trials, the schedule keeps the full rate
 #: through phase 1), and the curve's rows are what is written. Networks that differ only in
-#: these share phase 1's training (train.Phase1).
+#: these share phase 1's training (training.Phase1).
 AFTER_PHASE1: tuple[str, ...] = ("categorisation_cue", "learning_rate_schedule", "curve_rows")
 
 #: The two ways the trained networks are tested (paper section 3; book/notes.md, "Testing and

@@ -77,7 +77,7 @@ def train_phase1s(
     materials: Materials, network: Mapping, seed: int, phase1_files: Sequence[str]
 ) -> None:
     """Phase 1 of each of a run's networks, saved for the runs that continue from it: trained
-    side by side, each the bits it has trained alone (``train.train_phase1s``)."""
+    side by side, each the bits it has trained alone (``training.train_phase1s``)."""
     config, nets = _networks(network, None)
     _check_files(nets, phase1_files)
     phase1s = train_phase1s_side_by_side(

@@ -4,7 +4,7 @@ chosen on and on fresh ones (config ``robot.confirmation``).
 A robot variant is picked after the grid of variants was tried on one set of networks (the
 exploration: the config's seed, network indices 0..network.networks-1), so its share there is
 the data it was chosen on and is biased upwards by the choice. The confirmation trains the same
-variant again on network indices the exploration never used (``train.network_seed(seed, i)``,
+variant again on network indices the exploration never used (``training.network_seed(seed, i)``,
 same demonstrations and maps) and tests it on the robot by the same rules; only its share is set
 against a bar.
 

@@ -319,7 +319,7 @@ def difference_replications(
     """One row per comparison (``COMPARISONS``), level of the other choice, replication,
     measure and effect: reading a's effect minus reading b's, paired by network
     (``statistics.difference_tests`` on the two runs' trials of the same seed: a run's network k has
-    the seed ``train.network_seed(seed, k)`` and the mapping ``train.mapping_of(k)`` whatever
+    the seed ``training.network_seed(seed, k)`` and the mapping ``training.mapping_of(k)`` whatever
     the reading, so network k is the same network under the two settings). ``trials`` maps each
     run to its ``measures.csv``. A measure that a network can lack in a cell
     (``scores.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""

@@ -63,7 +63,7 @@ def curve_summary(
     networks of the first 10 iterations, of the 200 around iteration 2000 (or earlier on a
     shorter run), of the last 500 of phase 1 and of the last 500 of training. ``iterations``
     (rows,) is each row's iteration (from 1; every iteration when None): a long training's
-    curve keeps only some (``train.curve_every``), and a window is the rows within it."""
+    curve keeps only some (``training.curve_every``), and a window is the rows within it."""
     curves = np.asarray(curves, dtype=float)
     it = np.arange(1, curves.shape[1] + 1) if iterations is None else np.asarray(iterations)
     last = int(it[-1])
