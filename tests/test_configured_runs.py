@@ -129,7 +129,7 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     # the two servo-target variants, which share a phase 1 (the cue acts only after it:
     # runs.RunPlan.phase1_run) and continue from it; the animated variant, listed now, is
     # filmed on its networks 0.. instead of the confirmation's fresh ones, so the film runs too
-    assert jobs.pop("run_phase1") == 1
+    assert jobs.pop("phase1") == 1
     assert jobs.pop("train") == 2 and jobs.pop("robot_test") == 3
     assert "data/runs/cue_all_steps/embodied/all/trials.csv" in result.stdout
     assert "data/runs/robot_commands_h10_it1200_all_steps/train/all/weights.npz" in result.stdout

@@ -108,3 +108,45 @@ def test_a_robot_part_all_holds_each_networks_rows_and_postures(tmp_path):
         assert states[net].tobytes() == apart[net].tobytes() == qpos.tobytes()
     with pytest.raises(ValueError, match="rows of another network"):
         write_robot_part([12, 14], tested[:2], *packed)
+
+
+def test_a_shared_phase_1_in_a_part_all_continues_each_network_to_its_bits_trained_whole(tmp_path):
+    """Rule phase1's part `all` holds every network's phase 1 in one file; a run that continues
+    from it (another cue timing and rate schedule, part `all`) gets the bits of that run trained
+    whole: the steps rules phase1 and train run, through their files. A file lacking a
+    network's array is refused with the advice that works."""
+    from conftest import load_config
+
+    from icub_affordance.learning.training import synthetic_materials
+    from icub_workflow.parts import load_phase1s
+    from icub_workflow.steps import train_part, train_phase1s
+
+    m = synthetic_materials()
+    network = load_config()["network"] | {"networks": 4, "iterations": 600,
+                                          "phase1_iterations": 300, "hidden": 12}  # fmt: skip
+    owner = network | {"learning_rate_schedule": "constant", "categorisation_cue": "first_step"}
+    other = network | {"learning_rate_schedule": "anneal", "categorisation_cue": "all_steps"}
+    shared = tmp_path / "owner" / "all" / "phase1.npz"
+    shared.parent.mkdir(parents=True)
+    train_phase1s(m, owner, 7, "all", str(shared))
+    assert sorted(load_phase1s([str(shared)])) == [0, 1, 2, 3]
+    made = {}
+    for name, phase1 in (("continued", [str(shared)]), ("whole", [])):
+        part = tmp_path / name / "all"
+        part.mkdir(parents=True)
+        train_part(m, other, 7, "all", str(part / "curve.csv"), str(part / "weights.npz"), phase1)
+        made[name] = part
+    continued, whole = (load_weights([str(made[n] / "weights.npz")]) for n in made)
+    assert [net for net, _ in continued] == [net for net, _ in whole] == [0, 1, 2, 3]
+    for (_, a), (_, b) in zip(continued, whole, strict=True):
+        for name in ("W1", "b1", "W2", "b2"):
+            assert getattr(a, name).tobytes() == getattr(b, name).tobytes()
+    curves = [(made[n] / "curve.csv").read_bytes() for n in made]
+    assert curves[0] == curves[1]
+    arrays = dict(np.load(shared))
+    del arrays["net02_U"]
+    np.savez(tmp_path / "partial.npz", **arrays)
+    (tmp_path / "p" / "all").mkdir(parents=True)
+    (tmp_path / "partial.npz").rename(tmp_path / "p" / "all" / "phase1.npz")
+    with pytest.raises(ValueError, match=r"lacks \['net02_U'\]; delete it and rerun"):
+        load_phase1s([str(tmp_path / "p" / "all" / "phase1.npz")])

@@ -479,7 +479,7 @@ def test_the_default_build_trains_the_own_networks_a_job_each_and_each_other_run
     assert counts["demos"] == len({config["seed"], *seeds})
     assert counts["soms"] == 1 and counts["measures"] == 1  # the config's own: the book reads it
     assert counts["size_free_maps"] == int(config["size_dose"]["removal"])
-    assert "run_phase1" not in counts  # no two long trainings share a phase 1 in this build
+    assert "phase1" not in counts  # no two long trainings share a phase 1 in this build
 
 
 def test_without_robustness_the_test_build_tests_its_own_networks_and_the_confirmation():
@@ -487,7 +487,7 @@ def test_without_robustness_the_test_build_tests_its_own_networks_and_the_confir
     counts = plan_runs(config).job_counts()
     n = config["network"]["networks"]
     assert counts["robot_test"] == n + 1  # the confirmation's networks: its part `all`
-    assert "run_phase1" not in counts
+    assert "phase1" not in counts
     assert not [rule for rule in counts if rule.startswith("sweep")]
 
 

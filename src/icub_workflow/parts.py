@@ -21,6 +21,7 @@ import numpy as np
 
 from icub_affordance.files import load_npz, save_npz, write_columns, write_csv
 from icub_affordance.learning.network import Weights
+from icub_affordance.learning.training import Phase1
 
 if TYPE_CHECKING:  # pandas is imported where a table is read: a training job is short
     import pandas as pd
@@ -88,6 +89,45 @@ def load_weights(paths: Sequence[str]) -> list[tuple[int, Weights]]:
             stored = load_npz(path, required=WEIGHT_ARRAYS)
             networks.append((net, Weights(**{a: stored[a] for a in WEIGHT_ARRAYS})))
     return networks
+
+
+def write_phase1_part(nets: Sequence[int], phase1s: Sequence[Phase1], path: str) -> None:
+    """Write one part of a shared phase 1 (rule phase1): a network's state as it is
+    (``Phase1.save``), or (several networks) each one's arrays under its index
+    (``net03_W1cT``...) beside the indices (``networks``)."""
+    if len(nets) != len(phase1s):
+        raise ValueError(f"{len(nets)} networks, but {len(phase1s)} phase 1s")
+    if len(nets) == 1:
+        phase1s[0].save(path)
+        return
+    arrays = {
+        f"net{net:02d}_{name}": value
+        for net, phase1 in zip(nets, phase1s, strict=True)
+        for name, value in phase1.arrays().items()
+    }
+    save_npz(path, networks=np.asarray(nets, dtype=np.int64), **arrays)
+
+
+def load_phase1s(paths: Sequence[str]) -> dict[int, Phase1]:
+    """Every network's phase 1 the parts ``paths`` hold, by network index: a one-network part's
+    index from its folder (``net03``), a part ``all``'s from its file."""
+    phase1s = {}
+    for path in paths:
+        folder = Path(path).parent.name
+        if folder == ALL:
+            stored = load_npz(path, required=("networks",))
+            nets = stored["networks"].tolist()
+            names = [f"net{net:02d}_{key}" for net in nets for key in Phase1.KEYS]
+            missing = [name for name in names if name not in stored]
+            if missing:
+                raise ValueError(f"{path} lacks {missing}; delete it and rerun `snakemake -c2`.")
+            for net in nets:
+                prefix = f"net{net:02d}_"
+                phase1s[net] = Phase1.of_arrays({k: stored[prefix + k] for k in Phase1.KEYS})
+        else:
+            (net,) = part_networks(folder)
+            phase1s[net] = Phase1.load(path)
+    return phase1s
 
 
 def load_curves(paths: Sequence[str]) -> list[tuple[int, pd.DataFrame]]:

@@ -175,7 +175,7 @@ class RunPlan:
 
     @property
     def phase1_owners(self) -> list[str]:
-        """The runs that train a phase 1 for themselves and others (rule run_phase1)."""
+        """The runs that train a phase 1 for themselves and others (rule phase1)."""
         return list(dict.fromkeys(r for r in map(self.phase1_run, self.runs) if r is not None))
 
     @property
@@ -235,7 +235,7 @@ class RunPlan:
         return run, [nets[0], nets[len(nets) // 2]]
 
     def phase1_run(self, run: str) -> str | None:
-        """The run whose phase 1 this run's networks continue from (rule run_phase1), or None
+        """The run whose phase 1 this run's networks continue from (rule phase1), or None
         (it trains whole). Robot variants of this build, trained in one job, whose settings
         differ only in what acts after phase 1 (the cue timing, the learning-rate schedule:
         vocabulary.AFTER_PHASE1) share it: the first of them (in the plan's order) trains it once,
@@ -338,7 +338,7 @@ class RunPlan:
                 counts[rule] = counts.get(rule, 0) + jobs
         owners = {self.phase1_run(run) for run in self.built()} - {None}
         if owners:
-            counts["run_phase1"] = len(owners)
+            counts["phase1"] = sum(len(self.parts(owner)) for owner in owners)
         return counts
 
     def scale(self) -> dict[str, int]:

@@ -18,7 +18,6 @@ from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.learning.network import Weights
 from icub_affordance.learning.training import (
     Materials,
-    Phase1,
     TrainConfig,
     mapping_of,
     network_seed,
@@ -26,7 +25,13 @@ from icub_affordance.learning.training import (
 from icub_affordance.learning.training import train_networks as train_side_by_side
 from icub_affordance.learning.training import train_phase1s as train_phase1s_side_by_side
 from icub_affordance.vocabulary import TASKS
-from icub_workflow.parts import load_weights, part_networks, write_part
+from icub_workflow.parts import (
+    load_phase1s,
+    load_weights,
+    part_networks,
+    write_part,
+    write_phase1_part,
+)
 
 
 def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
@@ -74,20 +79,19 @@ def _check_files(nets: Sequence, files: Sequence[str]) -> None:
 
 
 def train_phase1s(
-    materials: Materials, network: Mapping, seed: int, phase1_files: Sequence[str]
+    materials: Materials, network: Mapping, seed: int, part: str, phase1_path: str
 ) -> None:
-    """Phase 1 of each of a run's networks, saved for the runs that continue from it: trained
-    side by side, each the bits it has trained alone (``training.train_phase1s``)."""
-    config, nets = _networks(network, None)
-    _check_files(nets, phase1_files)
+    """Phase 1 of a run's part (icub_workflow.parts: every network, ``all``, or one), saved
+    for the runs that continue from it: trained side by side, each the bits it has trained
+    alone (``training.train_phase1s``)."""
+    config, nets = _networks(network, part_networks(part))
     phase1s = train_phase1s_side_by_side(
         materials,
         config,
         [mapping for _, mapping in nets],
         [network_seed(seed, net) for net, _ in nets],
     )
-    for phase1, path in zip(phase1s, phase1_files, strict=True):
-        phase1.save(path)
+    write_phase1_part([net for net, _ in nets], phase1s, phase1_path)
 
 
 def _trained(
@@ -101,9 +105,13 @@ def _trained(
     continued from its saved phase 1: each one's index, and its weights and curve's columns,
     checked finite."""
     config, nets = _networks(network, nets)
-    starts = [Phase1.load(path) for path in phase1_files] if phase1_files else None
-    if starts is not None and len(starts) != len(nets):
-        raise ValueError(f"{len(starts)} saved phase 1s for {len(nets)} networks")
+    starts = None
+    if phase1_files:
+        saved = load_phase1s(phase1_files)
+        lacking = [net for net, _ in nets if net not in saved]
+        if lacking:
+            raise ValueError(f"no saved phase 1 of networks {lacking} in {list(phase1_files)}")
+        starts = [saved[net] for net, _ in nets]
     # side by side in a vector's lanes, each network the bits it has trained alone
     trained = train_side_by_side(
         materials,

@@ -76,7 +76,7 @@ def phase1_files(wildcards):
     owner = PLAN.phase1_run(run_of(wildcards))
     if owner is None:
         return []
-    return [PLAN.path(owner, f"train/net{net}/phase1.npz") for net in NETWORKS]
+    return [PLAN.path(owner, f"train/{part}/phase1.npz") for part in PLAN.parts(owner)]
 
 
 # The filmstrip and the films show the first network of each mapping: for any object one of them

@@ -60,7 +60,7 @@ rule train:
     """A run's Jordan networks, each from its own seed; networks 0-5 learn mapping A, 6-11
     mapping B. A job per part (icub_workflow.parts): one network of the config's own run
     (`net03`: its twelve in parallel at the start), or every network of another run (`all`),
-    continued from a shared phase 1 where the run has one (runs.smk: run_phase1)."""
+    continued from a shared phase 1 where the run has one (runs.smk: phase1)."""
     input:
         unpack(model_inputs),
         phase1=phase1_files,

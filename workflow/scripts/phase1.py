@@ -1,4 +1,4 @@
-"""Phase 1 of a run's networks, saved for the runs that continue from it (rule run_phase1)."""
+"""Phase 1 of a run's networks, saved for the runs that continue from it (rule phase1)."""
 
 from icub_affordance.files import redirect_log
 from icub_affordance.learning.training import load_materials
@@ -14,5 +14,6 @@ with redirect_log(snakemake.log[0]):
         ),
         snakemake.params.network,
         snakemake.params.seed,
-        list(snakemake.output),
+        snakemake.wildcards.part,
+        snakemake.output[0],
     )

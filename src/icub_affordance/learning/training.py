@@ -13,6 +13,7 @@ import hashlib
 import json
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
@@ -176,26 +177,39 @@ class Phase1:
     """A network at the end of phase 1: its training state and phase 1's RMSE per iteration.
     Phase 1 is the same for settings that differ only after it (vocabulary.AFTER_PHASE1: the cue
     timing, the learning-rate schedule), so one training of it serves them all
-    (:func:`train_phase1`, the rule ``run_phase1``). ``key`` names what phase 1 depends on
+    (:func:`train_phase1`, the rule ``phase1``). ``key`` names what phase 1 depends on
     (:func:`phase1_key`)."""
 
     key: str
     state: TrainingState
     rmse: np.ndarray
 
+    #: the arrays a saved phase 1 holds (``arrays``)
+    KEYS: ClassVar[tuple[str, ...]] = ("key", "done", "rmse", *TrainingState.KEYS)
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """Everything it holds, as named arrays (a file's contents: ``save``, and a part
+        ``all`` of several networks, icub_workflow.parts)."""
+        return {"key": np.array(self.key), "done": np.array(self.state.done), "rmse": self.rmse,
+                **self.state.arrays}  # fmt: skip
+
+    @classmethod
+    def of_arrays(cls, arrays: dict[str, np.ndarray]) -> Phase1:
+        """The phase 1 that ``arrays`` (all of ``KEYS``) hold."""
+        arrays = dict(arrays)
+        key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
+        return cls(key, TrainingState(arrays, done), rmse)
+
     def save(self, path) -> None:
         from icub_affordance.files import save_npz
 
-        save_npz(path, key=np.array(self.key), done=np.array(self.state.done), rmse=self.rmse,
-                 **self.state.arrays)  # fmt: skip
+        save_npz(path, **self.arrays())
 
     @classmethod
     def load(cls, path) -> Phase1:
         from icub_affordance.files import load_npz
 
-        arrays = load_npz(path, required=("key", "done", "rmse", *TrainingState.KEYS))
-        key, done, rmse = str(arrays.pop("key")), int(arrays.pop("done")), arrays.pop("rmse")
-        return cls(key, TrainingState(arrays, done), rmse)
+        return cls.of_arrays(load_npz(path, required=cls.KEYS))
 
 
 def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> str:
