@@ -24,11 +24,8 @@ from icub_affordance.analysis.robot_effects import (
     robot_statistics,
     table_record,
 )
-from icub_affordance.analysis.statistics import (
-    cue_timing_difference,
-    difference_tests,
-    mcnemar_exact,
-)
+from icub_affordance.analysis.statistics import mcnemar_exact
+from icub_affordance.analysis.trial_effects import cue_timing_difference, difference_tests
 from icub_affordance.analysis.verdicts import robot_effect_statistics, wrong_grip_by_congruency
 
 

@@ -11,12 +11,11 @@ import pytest
 import statsmodels.formula.api as smf
 from scipy import stats as sps
 
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.statistics import equivalence, holm
+from icub_affordance.analysis.trial_effects import (
     TERMS,
     coded,
     difference_tests,
-    equivalence,
-    holm,
     network_contrasts,
     network_object_means,
     simple_effects,
@@ -243,7 +242,7 @@ def with_errors(df: pd.DataFrame, seed: int = 5, rate: float = 0.6) -> pd.DataFr
 
 
 def test_the_within_network_fit_equals_a_model_with_a_dummy_per_network():
-    from icub_affordance.analysis.statistics import with_outcomes, within_network_fit
+    from icub_affordance.analysis.trial_effects import with_outcomes, within_network_fit
 
     df = with_outcomes(with_errors(synthetic(seed=11)))
     fit = within_network_fit(df, "rmse_correct")
@@ -273,7 +272,7 @@ def test_the_within_network_fit_equals_a_model_with_a_dummy_per_network():
 
 
 def test_with_every_cell_the_within_fit_estimates_the_networks_contrasts():
-    from icub_affordance.analysis.statistics import within_network_fit
+    from icub_affordance.analysis.trial_effects import within_network_fit
 
     df = synthetic(seed=4)
     fit, contrasts = within_network_fit(df, "rmse"), network_contrasts(df)
@@ -282,7 +281,7 @@ def test_with_every_cell_the_within_fit_estimates_the_networks_contrasts():
 
 
 def test_a_cell_no_network_reaches_leaves_the_terms_untestable():
-    from icub_affordance.analysis.statistics import with_outcomes, within_network_fit
+    from icub_affordance.analysis.trial_effects import with_outcomes, within_network_fit
 
     df = with_outcomes(with_errors(synthetic(seed=2), rate=1.0))  # no correct incongruent trial
     fit = within_network_fit(df, "rmse_correct")
@@ -291,7 +290,7 @@ def test_a_cell_no_network_reaches_leaves_the_terms_untestable():
 
 
 def test_the_errors_are_the_wrong_grip_rates_contrasts():
-    from icub_affordance.analysis.statistics import outcome_tests, with_outcomes
+    from icub_affordance.analysis.trial_effects import outcome_tests, with_outcomes
 
     df = with_outcomes(with_errors(synthetic(seed=7)))
     errors = outcome_tests(df, "errors")
@@ -321,7 +320,7 @@ def test_the_interaction_is_twice_the_required_grip_and_the_three_way_four_times
 
 
 def analysed(df: pd.DataFrame) -> dict:
-    from icub_affordance.analysis.statistics import analyse
+    from icub_affordance.analysis.trial_effects import analyse
 
     trials = with_errors(df).assign(task="categorisation", congruent=lambda d: d["congruency"].eq(
         "congruent").astype(str))  # fmt: skip

@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.analysis.correct_sensitivity import FAMILY, cells, observations, sensitivity
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.trial_effects import (
     categorisation_trials,
     correct_trial_effects,
     with_outcomes,
@@ -102,7 +102,7 @@ def test_a_replication_lacking_a_cell_still_counts():
 def test_a_known_effect_is_recovered_on_the_project_scale():
     """True congruency 0.02 and size 0.01: each within its 95% interval; with every cell
     present the estimate is the networks' mean contrast and the mean of the replications'
-    ``statistics.correct_trial_effects`` estimates (the confirmation's), both computed apart."""
+    ``trial_effects.correct_trial_effects`` estimates (the confirmation's), both computed apart."""
     trials = made_up(replications=6, networks=8, congruency=0.02, size=0.01, seed=3)
     table = sensitivity(trials).set_index("effect")
     hand = by_hand(trials)

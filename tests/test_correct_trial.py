@@ -14,7 +14,7 @@ from icub_affordance.analysis import paper_claims as claims
 from icub_affordance.analysis import reading_tests as readings
 from icub_affordance.analysis import signature_tests as signatures
 from icub_affordance.analysis import size_study as size_dose
-from icub_affordance.analysis import statistics as stats
+from icub_affordance.analysis import trial_effects as stats
 
 MEASURES = ["rmse", "rmse_correct", "wrong_grip"]
 DECLARATION = {"cues": ["first_step"], "modes": ["closed_loop", "teacher_forced"],

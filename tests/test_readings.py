@@ -32,11 +32,10 @@ from icub_affordance.analysis.reading_tests import (
     replication_rows,
     summary,
 )
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.statistics import equivalence, holm
+from icub_affordance.analysis.trial_effects import (
     categorisation_trials,
     difference_tests,
-    equivalence,
-    holm,
     network_contrasts,
     with_outcomes,
     within_network_fit,
@@ -813,7 +812,7 @@ def test_readings_summary_has_every_cell(built):
 def test_anova_json_has_the_contrasts_per_mode(built):
     import json
 
-    from icub_affordance.analysis.statistics import TERMS
+    from icub_affordance.analysis.trial_effects import TERMS
     from icub_affordance.vocabulary import MODES
 
     anova = json.loads((built / "data" / "eval" / "anova.json").read_text())

@@ -84,7 +84,7 @@ def test_the_sweep_dag_trains_each_points_networks_in_one_job(tmp_path):
 def test_sweep_tables_count_significant_replications():
     import pandas as pd
 
-    from icub_affordance.analysis.statistics import sweep_tables
+    from icub_affordance.analysis.sweep import sweep_tables
 
     def trials(effect):
         rows = []

@@ -1,11 +1,11 @@
 """The test of the difference between the cue timings (first step only minus every step), to
-data/eval/cue_difference.json (``icub_affordance.analysis.statistics.cue_timing_difference``)."""
+data/eval/cue_difference.json (``icub_affordance.analysis.trial_effects.cue_timing_difference``)."""
 
 import json
 
 import pandas as pd
 
-from icub_affordance.analysis.statistics import cue_timing_difference
+from icub_affordance.analysis.trial_effects import cue_timing_difference
 from icub_affordance.files import redirect_log, write_text
 
 with redirect_log(snakemake.log[0]):

@@ -2,7 +2,7 @@
 
 import pandas as pd
 
-from icub_affordance.analysis.statistics import categorisation_trials
+from icub_affordance.analysis.trial_effects import categorisation_trials
 from icub_affordance.figures import conflict_timecourse, figure5
 from icub_affordance.files import redirect_log
 from icub_affordance.vocabulary import MODES

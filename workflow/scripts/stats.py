@@ -4,7 +4,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.analysis.statistics import analyse, anova_table_markdown
+from icub_affordance.analysis.trial_effects import analyse, anova_table_markdown
 from icub_affordance.files import redirect_log, write_text
 
 with redirect_log(snakemake.log[0]):

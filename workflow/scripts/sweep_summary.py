@@ -4,7 +4,7 @@ import json
 
 import pandas as pd
 
-from icub_affordance.analysis.statistics import sweep_tables
+from icub_affordance.analysis.sweep import sweep_tables
 from icub_affordance.files import atomic_path, redirect_log
 
 with redirect_log(snakemake.log[0]):

@@ -11,12 +11,12 @@ kept), in a linear mixed model with a random intercept and random effect slopes 
 and a random intercept per network within it (``sensitivity``). ``cells`` says how many networks
 carry each cell, so a reader sees what each replication's estimate rests on.
 
-Coding as ``statistics.CODING`` (-0.5 / +0.5): the congruency coefficient is incongruent - congruent
-averaged over size, size's small - large averaged over congruency, the scale of the project's
-estimates (with every cell of every network present, the mixed model's estimate is the mean of the
-replications' ``statistics.correct_trial_effects`` estimates). Tests are t from the model's standard
-errors on the replications less one degrees of freedom (the column ``z`` holds that t); Holm
-within ``FAMILY``.
+Coding as ``trial_effects.CODING`` (-0.5 / +0.5): the congruency coefficient is incongruent -
+congruent averaged over size, size's small - large averaged over congruency, the scale of the
+project's estimates (with every cell of every network present, the mixed model's estimate is the
+mean of the replications' ``trial_effects.correct_trial_effects`` estimates). Tests are t from the
+model's standard errors on the replications less one degrees of freedom (the column ``z`` holds that
+t); Holm within ``FAMILY``.
 """
 
 from __future__ import annotations
@@ -27,11 +27,11 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.statistics import holm
+from icub_affordance.analysis.trial_effects import (
     CODING,
     categorisation_trials,
     coded,
-    holm,
     with_outcomes,
 )
 

@@ -6,12 +6,12 @@ how many significantly reversed; and the tests of the differences between readin
 the Goal response), paired by network.
 
 An effect's difference is the contrasts' estimate with the factor coded -0.5 / +0.5
-(``statistics.CODING``): incongruent minus congruent, small minus large, averaged over the other
+(``trial_effects.CODING``): incongruent minus congruent, small minus large, averaged over the other
 factors; for every measure higher is further from the required grip, so a positive difference is
 the paper's direction.
 
 Inference (book/notes.md, "Testing and statistics"). With one replication, an effect's test is the
-replication's own t-test over its networks (df = networks - 2, ``statistics.network_contrasts``);
+replication's own t-test over its networks (df = networks - 2, ``trial_effects.network_contrasts``);
 with several, a t-test of the replications' estimates (df = replications - 1). The family for Holm's
 adjustment is every row of a table that is a hypothesis: every reading x measure x effect of the
 summary, every comparison x measure x effect of the differences; a null control's rows
@@ -22,7 +22,7 @@ out of the family (their ``p_holm`` is empty). A verdict (``direction``) needs t
 ``p_holm`` is adjusted within (``family``; ``FAMILY_*``).
 
 A measure that a network can lack in a cell (``scores.MISSING_BY_DESIGN``: the correct-trial RMSE)
-is tested with ``statistics.correct_trial_effects``, which keeps such a network; its differences
+is tested with ``trial_effects.correct_trial_effects``, which keeps such a network; its differences
 between readings cannot be paired by network (``difference_replications``).
 """
 
@@ -33,18 +33,16 @@ import functools
 import numpy as np
 import pandas as pd
 
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.statistics import equivalence, holm, t_term
+from icub_affordance.analysis.trial_effects import (
     categorisation_trials,
     cell_means,
     correct_trial_effects,
-    equivalence,
-    holm,
     network_contrasts,
     network_object_means,
     object_means,
     paired_difference,
     per_network_contrasts,
-    t_term,
     with_outcomes,
 )
 from icub_affordance.analysis.verdicts import ALPHA
@@ -130,8 +128,8 @@ def with_derived(trials: pd.DataFrame, measures) -> pd.DataFrame:
 
 
 def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None) -> dict[str, dict]:
-    """A measure's contrasts: ``statistics.correct_trial_effects`` for a measure that a network can
-    lack in a cell (``scores.MISSING_BY_DESIGN``: the per-network contrasts would drop that
+    """A measure's contrasts: ``trial_effects.correct_trial_effects`` for a measure that a network
+    can lack in a cell (``scores.MISSING_BY_DESIGN``: the per-network contrasts would drop that
     network), the per-network contrasts otherwise. ``means``: ``network_object_means(df, measure)``,
     when the caller has it already."""
     if can_lack_cells(measure):
@@ -142,7 +140,7 @@ def contrasts(df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None)
 def defined_object_means(
     df: pd.DataFrame, measure: str, means: pd.DataFrame | None = None
 ) -> dict[str, dict[str, float]]:
-    """``statistics.object_means`` over the networks with a defined value (means over the defined
+    """``trial_effects.object_means`` over the networks with a defined value (means over the defined
     trials): every object kept, its ``n_networks`` the networks defined there. ``means``: as for
     ``contrasts``."""
     means = network_object_means(df, measure) if means is None else means
@@ -176,7 +174,7 @@ def analyse_measures(trials: pd.DataFrame, measures: list[str]) -> dict[str, dic
 
 
 def flat_term(term: dict) -> dict:
-    """A term as one table row: ``statistics.correct_trial_effects``' networks per cell as
+    """A term as one table row: ``trial_effects.correct_trial_effects``' networks per cell as
     ``cells_{cell}`` columns, per mapping and cell as ``cells_{mapping}_{cell}``."""
     nested = ("cells", "cells_by_mapping")
     flat = {k: v for k, v in term.items() if k not in nested}
@@ -293,7 +291,7 @@ def welch_df(se_a: float, se_b: float, df_a: float, df_b: float) -> float:
 def unpaired_difference(a: pd.DataFrame, b: pd.DataFrame, measure: str) -> dict[str, dict]:
     """A minus B for a measure that a network can lack in a cell (``scores.MISSING_BY_DESIGN``):
     a network's contrast is then undefined, so the runs cannot be paired by network. Each term
-    is the difference of the two runs' ``statistics.correct_trial_effects`` estimates, with
+    is the difference of the two runs' ``trial_effects.correct_trial_effects`` estimates, with
     se = sqrt(se_a^2 + se_b^2) and Welch-Satterthwaite df. Conservative: the two runs' networks
     are the same networks (same seeds, same mappings), whose estimates correlate positively, and
     the unpaired se ignores that covariance."""
@@ -318,10 +316,10 @@ def difference_replications(
 ) -> pd.DataFrame:
     """One row per comparison (``COMPARISONS``), level of the other choice, replication,
     measure and effect: reading a's effect minus reading b's, paired by network
-    (``statistics.difference_tests`` on the two runs' trials of the same seed: a run's network k has
-    the seed ``training.network_seed(seed, k)`` and the mapping ``training.mapping_of(k)`` whatever
-    the reading, so network k is the same network under the two settings). ``trials`` maps each
-    run to its ``measures.csv``. A measure that a network can lack in a cell
+    (``trial_effects.difference_tests`` on the two runs' trials of the same seed: a run's network k
+    has the seed ``training.network_seed(seed, k)`` and the mapping ``training.mapping_of(k)``
+    whatever the reading, so network k is the same network under the two settings). ``trials`` maps
+    each run to its ``measures.csv``. A measure that a network can lack in a cell
     (``scores.MISSING_BY_DESIGN``) is not paired: ``unpaired_difference``."""
     by = {(r["cue"], r["goal_response"], r["seed"]): r for r in table}
     rows = []

@@ -7,8 +7,8 @@ and the statistics, and the summary and the book read the tables without the sim
 In closed loop a network's test sequences of one object and task are one and the same movement
 (``on_robot.embodied_network``): every count, rate and test here is over distinct trials, one
 per network x object x task (``distinct_trials``), never over the duplicated sequences. The
-variants' congruency and size effects are tested per network (``statistics.contrast_tests``), with
-Fisher's exact test where the contrast has no variance; their congruency x size interaction by
+variants' congruency and size effects are tested per network (``trial_effects.contrast_tests``),
+with Fisher's exact test where the contrast has no variance; their congruency x size interaction by
 the per-network contrast only; and Holm's adjustment over them all, one family
 (``ROBOT_FAMILY``). Each effect keeps its counts per cell and per object, so that a reader sees
 which trials were missed.
@@ -27,14 +27,12 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from icub_affordance.analysis.statistics import (
+from icub_affordance.analysis.statistics import holm, mcnemar_exact, mean_ci
+from icub_affordance.analysis.trial_effects import (
     adjust_families,
     categorisation_trials,
     cell_means,
     contrast_tests,
-    holm,
-    mcnemar_exact,
-    mean_ci,
     network_contrasts,
     per_network_contrasts,
     repeated_measures_anova,
@@ -123,7 +121,7 @@ def success_analysis(trials: pd.DataFrame, replay: pd.DataFrame) -> dict[str, ob
 
     For success (0/1) and for the final posture error: each network's mean per congruency x size
     cell, the per-network incongruent - congruent difference with its 95% t-interval, the
-    per-network contrasts used for inference (``statistics.network_contrasts``: t over networks),
+    per-network contrasts used for inference (``trial_effects.network_contrasts``: t over networks),
     and, descriptive only, the repeated-measures ANOVA (network as subject; it averages each
     network's cell, so the duplicated sequences never changed it). Where every network scores the
     same in every cell the ANOVA is undefined and reported as None.
@@ -406,7 +404,7 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
     trials (``distinct_trials``: each network x object counted once, whatever the number of test
     sequences).
 
-    Success: per factor, the per-network contrast (``statistics.network_contrasts`` on success as
+    Success: per factor, the per-network contrast (``trial_effects.network_contrasts`` on success as
     0/1 per network x object, a difference of proportions tested over the networks with t), where
     its test is defined; where it is not (every network shows the same contrast: no variance),
     Fisher's exact test over the distinct trials. Contact time: the per-network contrasts over the
@@ -441,8 +439,8 @@ def variant_effects(trials: pd.DataFrame) -> dict[str, object]:
 
 
 def _simple_or_none(df: pd.DataFrame, measure: str) -> dict[str, dict] | None:
-    """Each factor's effect within each level of the other (``statistics.simple_effects``: small -
-    large among the congruent trials, ...) over the networks with all four cells, Holm over
+    """Each factor's effect within each level of the other (``trial_effects.simple_effects``: small
+    - large among the congruent trials, ...) over the networks with all four cells, Holm over
     those of the four that have a test (``p_holm``): where a main effect comes from one cell,
     these say which. None with fewer
     than three such networks or a singular design."""

@@ -23,7 +23,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from icub_affordance.analysis.statistics import correct_trial_effects, equivalence, holm
+from icub_affordance.analysis.statistics import equivalence, holm
+from icub_affordance.analysis.trial_effects import correct_trial_effects
 from icub_affordance.analysis.verdicts import ALPHA
 from icub_affordance.learning.network import Weights, run_closed_loop
 from icub_affordance.learning.training import N_VISUAL, Materials, context, target_grip
@@ -154,8 +155,9 @@ def network_trials(
 
 
 def estimator_rows(trials: pd.DataFrame) -> pd.DataFrame:
-    """``trials`` as the correct-trial estimator reads them (``statistics.correct_trial_effects``):
-    congruency and size as cell names, ``rmse_correct`` the RMSE where the grip was right."""
+    """``trials`` as the correct-trial estimator reads them
+    (``trial_effects.correct_trial_effects``): congruency and size as cell names,
+    ``rmse_correct`` the RMSE where the grip was right."""
     out = trials.copy()
     out["congruency"] = np.where(out["congruent"].astype(bool), "congruent", "incongruent")
     out["rmse_correct"] = out["rmse"].where(out["correct"].astype(bool))
@@ -178,8 +180,8 @@ def _congruency(rows: pd.DataFrame, left_out: bool = True) -> list[dict[str, flo
 
 def replication_effects(trials: pd.DataFrame, left_out: bool = True) -> pd.DataFrame:
     """Per replication, condition and k: the congruency effect on correct-trial RMSE (incongruent
-    minus congruent) by ``statistics.correct_trial_effects``, the estimator every chapter uses: each
-    network x object's mean over its correct trials is an observation, the fit has an intercept
+    minus congruent) by ``trial_effects.correct_trial_effects``, the estimator every chapter uses:
+    each network x object's mean over its correct trials is an observation, the fit has an intercept
     per network and the cell terms, so networks keep their other cells when one has no correct
     trial and objects are not pooled (a pooled mean would compare different mixtures of
     objects: correct incongruent trials are mostly of some objects, and correct-trial RMSE

@@ -23,7 +23,8 @@ import pandas as pd
 
 from icub_affordance.analysis.paper_claims import direction
 from icub_affordance.analysis.robot_effects import distinct_trials
-from icub_affordance.analysis.statistics import contrast_tests, holm, per_network_contrasts
+from icub_affordance.analysis.statistics import holm
+from icub_affordance.analysis.trial_effects import contrast_tests, per_network_contrasts
 
 #: The family the declared tests are Holm-adjusted in, over themselves alone.
 FAMILY = "declared: contact-time congruency on fresh networks"

@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from icub_affordance.analysis.statistics import CODING, group_regression, holm, trial_conditions
+from icub_affordance.analysis.statistics import group_regression, holm
+from icub_affordance.analysis.trial_effects import CODING, trial_conditions
 
 
 def pca(states: np.ndarray, components: int = 2) -> tuple[np.ndarray, np.ndarray]:

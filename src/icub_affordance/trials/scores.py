@@ -9,7 +9,7 @@ further from the required grip: the paper's reading is that higher is slower.
   required grip's (same object and sequence), else 0: the ``final_grip`` column of
   ``eval/trials.csv`` differing from ``target_grip`` (a tie is not wrong). A network's mean over
   an object's sequences is a proportion; the analysis takes each network x object's proportion
-  once, as for every measure (``statistics.network_contrasts``).
+  once, as for every measure (``trial_effects.network_contrasts``).
 - ``commitment``: how far along the line from the required grip to the other grip the output
   moved. At predicted step t, with r_t and q_t the required and the other grip's demonstrated
   postures and o_t the output, the output's position on the line from r_t (0) to q_t (1) is
@@ -34,7 +34,7 @@ further from the required grip: the paper's reading is that higher is slower.
 - ``rmse_correct``: the trial's RMSE where its grip was right (``wrong_grip`` 0), else undefined:
   the reaction-time analogue, as people's reaction times are measured on correct responses with
   errors reported apart. Derived at analysis time from ``rmse`` and ``wrong_grip``
-  (``statistics.with_outcomes``), not a column of ``measures.csv``. In closed loop a network's
+  (``trial_effects.with_outcomes``), not a column of ``measures.csv``. In closed loop a network's
   trials of one object are one trial, so a network that always took the wrong grip on an object has
   no value there: a network can lack a cell by design (``MISSING_BY_DESIGN``).
 
@@ -74,12 +74,13 @@ LABELS: dict[str, str] = {
 }
 
 #: The measures computed at analysis time from other measures' columns
-#: (``statistics.with_outcomes``), with the columns each needs: not written by ``measure_network``.
+#: (``trial_effects.with_outcomes``), with the columns each needs: not written by
+#: ``measure_network``.
 DERIVED: dict[str, tuple[str, ...]] = {"rmse_correct": ("rmse", "wrong_grip")}
 
 #: The measures a network can lack in a cell by design (no correct trial of an object): their
-#: contrasts come from ``statistics.correct_trial_effects``, which keeps such a network, never from
-#: the per-network contrasts, which drop it. Declared here, never read off the data.
+#: contrasts come from ``trial_effects.correct_trial_effects``, which keeps such a network, never
+#: from the per-network contrasts, which drop it. Declared here, never read off the data.
 MISSING_BY_DESIGN: frozenset[str] = frozenset({"rmse_correct"})
 
 #: A measure's null control, analysed beside it whenever it is declared (not a hypothesis).

@@ -20,7 +20,7 @@ from icub_affordance.analysis.size_study import (
     FAMILY_MOTOR_PLANNED,
     ranked_like_size,
 )
-from icub_affordance.analysis.statistics import WITHIN
+from icub_affordance.analysis.trial_effects import WITHIN
 from icub_affordance.files import load_npz
 from icub_affordance.learning.maps import active_units
 from icub_affordance.learning.variants import NetworkVariant
