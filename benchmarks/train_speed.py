@@ -30,6 +30,7 @@ import numpy as np
 import torch
 import yaml
 
+from icub_affordance.learning.materials import synthetic_materials
 from icub_affordance.learning.network import Weights
 from icub_affordance.learning.torch_reference import JordanNet, train_sequence_torch
 from icub_affordance.learning.training import (
@@ -38,7 +39,6 @@ from icub_affordance.learning.training import (
     mapping_of,
     network_seed,
     schedule,
-    synthetic_materials,
     target_grip,
     train_network,
     train_networks,

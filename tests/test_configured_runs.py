@@ -206,7 +206,7 @@ def test_the_confirmation_trains_fresh_networks_on_the_main_runs_demonstrations_
     import numpy as np
     import pandas as pd
 
-    from icub_affordance.learning.training import load_materials
+    from icub_affordance.learning.materials import load_materials
     from icub_workflow.parts import load_weights
     from icub_workflow.runs import plan_runs
     from icub_workflow.steps import train_part

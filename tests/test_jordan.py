@@ -11,6 +11,7 @@ import pytest
 import torch
 from conftest import REPO, train_config
 
+from icub_affordance.learning.materials import synthetic_materials
 from icub_affordance.learning.network import N_INPUT, Weights, run_closed_loop, train_online
 from icub_affordance.learning.torch_reference import JordanNet, train_sequence_torch
 from icub_affordance.learning.training import (
@@ -18,7 +19,6 @@ from icub_affordance.learning.training import (
     learning_rates,
     mapping_of,
     schedule,
-    synthetic_materials,
     target_grip,
     train_network,
 )
@@ -79,7 +79,7 @@ def test_fast_trainer_equals_the_plain_torch_loop(hidden, rate):
 KERNEL_RUN = """
 import hashlib, sys
 import numba
-from icub_affordance.learning.training import synthetic_materials
+from icub_affordance.learning.materials import synthetic_materials
 from conftest import train_config
 import icub_affordance.learning.kernel as kernel
 from icub_affordance.learning.training import train_network, train_networks

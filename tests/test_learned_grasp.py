@@ -27,15 +27,9 @@ from icub_affordance.body.robot import (
     to_normalised,
 )
 from icub_affordance.files import save_npz
+from icub_affordance.learning.materials import Materials, load_materials, synthetic_materials
 from icub_affordance.learning.network import Weights, run_closed_loop, train_online
-from icub_affordance.learning.training import (
-    Materials,
-    context,
-    load_materials,
-    synthetic_materials,
-    target_grip,
-    train_network,
-)
+from icub_affordance.learning.training import context, target_grip, train_network
 from icub_affordance.trials.in_silico import TrialSet, evaluate_network, trial_row
 from icub_affordance.trials.on_robot import (
     body_tolerance,

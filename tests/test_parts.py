@@ -117,7 +117,7 @@ def test_a_shared_phase_1_in_a_part_all_continues_each_network_to_its_bits_train
     network's array is refused with the advice that works."""
     from conftest import load_config
 
-    from icub_affordance.learning.training import synthetic_materials
+    from icub_affordance.learning.materials import synthetic_materials
     from icub_workflow.parts import load_phase1s
     from icub_workflow.steps import train_part, train_phase1s
 

@@ -25,8 +25,8 @@ from icub_affordance.analysis.signature_tests import (
     verdict,
     visual_inputs,
 )
+from icub_affordance.learning.materials import synthetic_materials
 from icub_affordance.learning.network import Weights
-from icub_affordance.learning.training import synthetic_materials
 from icub_affordance.outcome import Outcome
 from icub_workflow.book.words import SIGNATURE_WORDS
 

@@ -43,13 +43,13 @@ from icub_affordance.analysis.size_study import (
     size_free_maps,
     summary,
 )
-from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
-from icub_affordance.learning.training import (
+from icub_affordance.learning.grip_distance import (
     mean_final_grip_distances,
     shape_partners,
     swap_scale,
     swapped_grips,
 )
+from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
 from icub_workflow.runs import plan_runs
 
 OBJECTS = ["big_ball", "small_ball", "big_cube", "small_cube"]

@@ -512,7 +512,7 @@ def _crossed_problems(config: Mapping[str, Any], confirmation: list[int], key) -
     crossed = config["size_dose"]["crossed"]
     swapping = "swapped" in crossed["grip_arrangements"] or config["grip_distance"] == "swapped"
     if swapping:
-        from icub_affordance.learning.training import (
+        from icub_affordance.learning.grip_distance import (
             shape_partners,  # scipy: only when a swap is asked for
         )
 

@@ -15,13 +15,9 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights
-from icub_affordance.learning.training import (
-    Materials,
-    TrainConfig,
-    mapping_of,
-    network_seed,
-)
+from icub_affordance.learning.training import TrainConfig, mapping_of, network_seed
 from icub_affordance.learning.training import train_networks as train_side_by_side
 from icub_affordance.learning.training import train_phase1s as train_phase1s_side_by_side
 from icub_affordance.vocabulary import TASKS
@@ -197,7 +193,7 @@ def signature_tables(
         network_trials,
         summary,
     )
-    from icub_affordance.learning.training import load_materials
+    from icub_affordance.learning.materials import load_materials
 
     config = SignatureConfig(**signatures, min_replications=min_replications)
     rows = []

@@ -4,7 +4,8 @@ import numpy as np
 import pandas as pd
 
 from icub_affordance.files import atomic_path, redirect_log, save_npz
-from icub_affordance.learning.training import load_materials, mapping_of
+from icub_affordance.learning.materials import load_materials
+from icub_affordance.learning.training import mapping_of
 from icub_affordance.trials.in_silico import evaluate_network
 from icub_workflow.parts import load_weights
 

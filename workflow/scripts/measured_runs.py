@@ -3,7 +3,7 @@ trained where the run makes its own, its networks trained, then scored on the de
 (the steps of rules soms, train and measures)."""
 
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials
+from icub_affordance.learning.materials import load_materials
 from icub_workflow.steps import make_soms, measure_networks, train_part
 
 with redirect_log(snakemake.log[0]):

@@ -2,7 +2,7 @@
 per-object means (data/eval/measures.json)."""
 
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials
+from icub_affordance.learning.materials import load_materials
 from icub_workflow.steps import measure_networks
 
 with redirect_log(snakemake.log[0]):

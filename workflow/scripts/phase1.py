@@ -1,7 +1,7 @@
 """Phase 1 of a run's networks, saved for the runs that continue from it (rule phase1)."""
 
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials
+from icub_affordance.learning.materials import load_materials
 from icub_workflow.steps import train_phase1s
 
 with redirect_log(snakemake.log[0]):

@@ -15,7 +15,7 @@ from icub_affordance.body.animation import (
 from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials
+from icub_affordance.learning.materials import load_materials
 from icub_workflow.parts import load_robot_trials, load_weights, network_trials
 
 

@@ -5,7 +5,8 @@ icub_workflow.parts), one network (`net03`) or every network of the run one afte
 from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials, mapping_of
+from icub_affordance.learning.materials import load_materials
+from icub_affordance.learning.training import mapping_of
 from icub_affordance.trials.on_robot import embodied_network
 from icub_workflow.parts import load_weights, part_networks, write_robot_part
 

@@ -23,7 +23,7 @@ from icub_affordance.analysis.size_study import (
     summary,
 )
 from icub_affordance.files import load_npz, redirect_log, write_tables
-from icub_affordance.learning.training import swapped_grips
+from icub_affordance.learning.grip_distance import swapped_grips
 
 with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]

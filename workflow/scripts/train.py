@@ -3,7 +3,7 @@ config's own run, a job per network) or every network of the run (`all`), contin
 shared phase 1 where the run has one (input `phase1`); save its learning curve and weights."""
 
 from icub_affordance.files import redirect_log
-from icub_affordance.learning.training import load_materials
+from icub_affordance.learning.materials import load_materials
 from icub_workflow.steps import train_part
 
 with redirect_log(snakemake.log[0]):

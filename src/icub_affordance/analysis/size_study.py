@@ -11,7 +11,7 @@ each map's cluster lifts above one half, large over small, per shape.
 With four objects a large object's two grips end further apart than its small partner's, so
 size and the grips' distance go together. The crossed design (config ``size_dose.crossed``)
 runs every replication twice, with the grips as demonstrated and with each object's grips moved
-to its same-shape partner's distance (``training.swapped_grips``), and measures each run's gap
+to its same-shape partner's distance (``grip_distance.swapped_grips``), and measures each run's gap
 (``grip_gaps``). Each replication's two size effects against its two gaps give a line, whose
 value at no gap is size's part and whose rise over the natural gap is the grips' distance's part
 (``separated``); the declared tests (``declared_tests``) are one-sample t-tests of those parts

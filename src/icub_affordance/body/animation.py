@@ -23,8 +23,9 @@ import numpy as np
 from icub_affordance.body.demonstrations import DemoConfig
 from icub_affordance.body.robot import Robot
 from icub_affordance.files import atomic_path
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights
-from icub_affordance.learning.training import Materials, mapping_of
+from icub_affordance.learning.training import mapping_of
 from icub_affordance.trials.in_silico import TrialSet, describe_trial
 from icub_affordance.trials.on_robot import Outcome, network_policy, outcome_columns, run_trial
 from icub_affordance.vocabulary import TASKS

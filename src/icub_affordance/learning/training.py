@@ -11,12 +11,12 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
-from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
 
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import (
     N_GOAL,
     N_VISUAL,
@@ -35,7 +35,6 @@ from icub_affordance.vocabulary import (
     SCHEDULES,
     TARGETS,
     TASKS,
-    to_normalised,
 )
 
 
@@ -71,50 +70,6 @@ class TrainConfig:
             raise ValueError("network.curve_rows must be 0 (every iteration) or more")
         if (self.iterations - self.phase1_iterations) % 2:
             raise ValueError("phase 2 must have an even number of iterations (half of each task)")
-
-
-@dataclass(frozen=True)
-class Materials:
-    """Everything a network learns from, with the object axis in the same order everywhere."""
-
-    objects: tuple[str, ...]
-    grips: tuple[str, ...]
-    visual: np.ndarray  # (objects, 100) the visual maps
-    goal: np.ndarray  # (objects, tasks, 100) the Goal map's activations
-    demos: np.ndarray  # (objects, grips, sequences, steps, 16) normalised postures
-    commands: np.ndarray  # the same shape: the servo targets the demonstrator sent, 0-1
-
-    def targets(self, target: str) -> np.ndarray:
-        """What the motor outputs learn and are compared with (config ``network.target``): the
-        sensed postures (the paper) or the servo targets."""
-        if target not in TARGETS:
-            raise ValueError(f"network.target must be one of {TARGETS}, not {target!r}")
-        return self.demos if target == "sensed" else self.commands
-
-    @property
-    def n_train_sequences(self) -> int:
-        return self.demos.shape[2] - 1  # the last sequence is held out
-
-
-def synthetic_materials(seed: int = 0) -> Materials:
-    """Small stand-ins for the pipeline's outputs with the real shapes: what the tests and the
-    training benchmark train on without running the pipeline."""
-    rng = np.random.default_rng(seed)
-    start = rng.uniform(0.2, 0.8, 16)
-    ends = rng.uniform(0, 1, (4, 2, 16))
-    steps = np.linspace(0, 1, 10)[:, None]
-    demos = np.empty((4, 2, 5, 10, 16))
-    for o, g, s in np.ndindex(4, 2, 5):
-        end = np.clip(ends[o, g] + rng.normal(0, 0.02, 16), 0, 1)
-        demos[o, g, s] = start + steps * (end - start)
-    return Materials(
-        objects=("big_ball", "small_ball", "big_cube", "small_cube"),
-        grips=("power", "precision"),
-        visual=rng.integers(0, 2, (4, 100)).astype(float),
-        goal=rng.uniform(0, 1, (4, 2, 100)),
-        demos=demos,
-        commands=np.clip(demos + 0.05, 0, 1),
-    )
 
 
 def mapping_of(network: int, n_networks: int) -> str:
@@ -411,90 +366,3 @@ def curve_every(config: TrainConfig) -> int:
 def network_seed(seed: int, network: int) -> int:
     """Each network's own seed, derived from the config's seed and its index."""
     return int(np.random.SeedSequence([seed, 1000 + network]).generate_state(1)[0])
-
-
-#: What the networks learn of the two grips' distance (config ``grip_distance``): the
-#: demonstrations as made, or each object's grips moved to its same-shape partner's distance.
-GRIP_DISTANCES = ("natural", "swapped")
-
-
-def mean_final_grip_distances(postures: np.ndarray) -> np.ndarray:
-    """Per object, the distance between its two grips' mean final postures (over sequences):
-    the grips' distance the size study measures and the swap matches."""
-    final = np.asarray(postures, dtype=float)[:, :, :, -1].mean(axis=2)
-    return np.linalg.norm(final[:, 0] - final[:, 1], axis=-1)
-
-
-def shape_partners(objects: Sequence[str]) -> list[int]:
-    """Per object, the index of the other object of its shape (its category: the balls are
-    the natural objects, the cubes the artefacts). Refused unless each shape has two."""
-    partners = []
-    for obj in objects:
-        same = [k for k, o in enumerate(objects) if o != obj
-                and OBJECTS[o].category == OBJECTS[obj].category]  # fmt: skip
-        if len(same) != 1:
-            raise ValueError(
-                f"grip_distance 'swapped' needs each object's one same-shape partner; {obj!r} "
-                f"has {len(same)} among {list(objects)}: use grip_distance 'natural'"
-            )
-        partners.append(same[0])
-    return partners
-
-
-def swap_scale(postures: np.ndarray, objects: Sequence[str]) -> np.ndarray:
-    """Per object, the factor that moves its two grips' mean final postures to its partner's
-    distance (``mean_final_grip_distances``): partner's distance over its own."""
-    distances = mean_final_grip_distances(postures)
-    return distances[shape_partners(objects)] / distances
-
-
-def scaled_grips(postures: np.ndarray, scale: np.ndarray) -> np.ndarray:
-    """The demonstrations with each object's two grips moved apart (factor above 1) or together
-    about their midpoint, at every step, by the object's factor, then held within the joints'
-    ranges (0-1), which may clip the move: its effect is measured, not assumed. Step 0, common
-    to both grips, does not move."""
-    postures = np.asarray(postures, dtype=float)
-    mid = postures.mean(axis=1, keepdims=True)
-    factor = np.asarray(scale, dtype=float)[:, None, None, None, None]
-    return np.clip(mid + factor * (postures - mid), 0.0, 1.0)
-
-
-def swapped_grips(postures: np.ndarray, objects: Sequence[str]) -> np.ndarray:
-    """The demonstrations with each object's grips at its same-shape partner's distance: the
-    small objects' grips then lie the further apart, so size and the grips' distance no longer
-    go together (the size study's crossed design)."""
-    return scaled_grips(postures, swap_scale(postures, objects))
-
-
-def load_materials(visual_maps_path, soms_path, demos_path, grip_distance="natural") -> Materials:
-    """Read the pipeline's vision, SOM and demonstration outputs into one consistent bundle;
-    with ``grip_distance`` "swapped", the demonstrations (and the servo targets, by the same
-    factors) with each object's grips at its partner's distance (``swapped_grips``)."""
-    if grip_distance not in GRIP_DISTANCES:
-        raise ValueError(f"grip_distance must be one of {GRIP_DISTANCES}, not {grip_distance!r}")
-    from icub_affordance.files import load_npz
-
-    demos = load_npz(demos_path, required=("angles", "commands_deg", "objects", "grips"))
-    objects = tuple(demos["objects"].tolist())
-    maps = load_npz(visual_maps_path, required=objects)
-    soms = load_npz(soms_path, required=("goal_act", "objects"))
-    if tuple(soms["objects"].tolist()) != objects:
-        raise ValueError(
-            f"{soms_path} and {demos_path} list different objects: delete both and rerun "
-            "`snakemake -c2`."
-        )
-    angles = demos["angles"]
-    # a servo target may lie beyond a joint's range (pressing against the stop); the sigmoid
-    # outputs cannot, so they learn the range's end
-    commands = np.clip(to_normalised(demos["commands_deg"]), 0.0, 1.0)
-    if grip_distance == "swapped":
-        scale = swap_scale(angles, objects)
-        angles, commands = (scaled_grips(a, scale) for a in (angles, commands))
-    return Materials(
-        objects=objects,
-        grips=tuple(demos["grips"].tolist()),
-        visual=np.array([maps[o].ravel() for o in objects], dtype=float),
-        goal=soms["goal_act"].reshape(len(objects), len(TASKS), -1),
-        demos=angles,
-        commands=commands,
-    )

@@ -17,8 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights, run_closed_loop
-from icub_affordance.learning.training import Materials, context, target_grip
+from icub_affordance.learning.training import context, target_grip
 from icub_affordance.vocabulary import GRASPING, MODES, OBJECTS, TASKS
 
 

@@ -43,8 +43,8 @@ from icub_affordance.body.robot import (
     to_degrees,
     to_normalised,
 )
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights, network_step
-from icub_affordance.learning.training import Materials
 from icub_affordance.trials.in_silico import TrialSet, trial_row
 
 #: A controller: (step index, the posture proprioception reads, 0-1) -> the servo targets, 0-1.

@@ -48,8 +48,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights, run_closed_loop
-from icub_affordance.learning.training import Materials
 from icub_affordance.trials.in_silico import TrialSet, describe_trial
 from icub_affordance.vocabulary import MODES
 
