@@ -17,7 +17,6 @@ from statsmodels.stats.multitest import multipletests
 
 from icub_affordance.analysis.reading_tests import BY_EXCESS, NULL_CONTROL
 from icub_affordance.analysis.size_study import (
-    CONTROLS,
     CROSSED_COLUMNS,
     DECLARED_COLUMNS,
     FAMILY_DECLARED,
@@ -34,13 +33,11 @@ from icub_affordance.analysis.size_study import (
     delivered_doses,
     demo_geometry,
     grip_gaps,
-    manipulation_rows,
     motor_tests,
     power_table,
     ranked_like_size,
     separate,
     separated,
-    size_free_maps,
     summary,
 )
 from icub_affordance.learning.grip_distance import (
@@ -50,6 +47,7 @@ from icub_affordance.learning.grip_distance import (
     swapped_grips,
 )
 from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
+from icub_affordance.learning.size_manipulation import CONTROLS, manipulation_rows, size_free_maps
 from icub_workflow.runs import plan_runs
 
 OBJECTS = ["big_ball", "small_ball", "big_cube", "small_cube"]

@@ -15,7 +15,6 @@ from icub_affordance.analysis.size_study import (
     declared_tests,
     demo_geometry,
     geometry_of_trials,
-    manipulation,
     motor_tests,
     power_table,
     replication_rows,
@@ -24,6 +23,7 @@ from icub_affordance.analysis.size_study import (
 )
 from icub_affordance.files import load_npz, redirect_log, write_tables
 from icub_affordance.learning.grip_distance import swapped_grips
+from icub_affordance.learning.size_manipulation import manipulation
 
 with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]

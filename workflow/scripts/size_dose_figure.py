@@ -3,9 +3,9 @@ dose and grip arrangement, and the manipulation check (plot only)."""
 
 import pandas as pd
 
-from icub_affordance.analysis.size_study import dose_value
 from icub_affordance.figures import dose_response
 from icub_affordance.files import redirect_log
+from icub_affordance.learning.size_manipulation import dose_value
 
 
 def read(path: str) -> pd.DataFrame:

@@ -1,7 +1,7 @@
 """A run's visual maps without size: each object's map its shape's mean (the removal control)."""
 
-from icub_affordance.analysis.size_study import size_free_maps
 from icub_affordance.files import load_npz, redirect_log, save_npz
+from icub_affordance.learning.size_manipulation import size_free_maps
 
 with redirect_log(snakemake.log[0]):
     objects = list(snakemake.params.objects)

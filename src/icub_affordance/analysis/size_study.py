@@ -15,13 +15,13 @@ to its same-shape partner's distance (``grip_distance.swapped_grips``), and meas
 (``grip_gaps``). Each replication's two size effects against its two gaps give a line, whose
 value at no gap is size's part and whose rise over the natural gap is the grips' distance's part
 (``separated``); the declared tests (``declared_tests``) are one-sample t-tests of those parts
-over the replications, each replication one observation.
+over the replications, each replication one observation. The manipulation itself (the shapes,
+the removal control's size-free maps, the manipulation check) is ``learning.size_manipulation``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -34,9 +34,8 @@ from icub_affordance.analysis.reading_tests import (
     over_replications,
 )
 from icub_affordance.analysis.statistics import holm, t_term
-from icub_affordance.learning.maps import active_units
+from icub_affordance.learning.size_manipulation import CONTROLS, SHAPES
 from icub_affordance.trials.scores import analysed
-from icub_affordance.vocabulary import OBJECTS, TASKS
 
 #: The effect the study is about (the per-network contrast of the same name).
 EFFECT = "size"
@@ -50,25 +49,11 @@ FAMILY_DECLARED = "size study: declared"
 FAMILY_MOTOR_PLANNED = "exploration: size study motor (planned)"
 FAMILY_MOTOR_ADDED = "exploration: size study motor (added after results)"
 
-#: The study's control, which stands in its ``dose`` column beside the numeric doses: no size in
-#: the input (``removed``).
-CONTROLS: tuple[str, ...] = ("removed",)
 
 #: The grips as the networks learn them: as demonstrated, or each object's at its same-shape
 #: partner's distance (config ``size_dose.crossed.grip_arrangements``).
 NATURAL, SWAPPED = "natural", "swapped"
 
-
-def dose_value(dose: Any) -> Any:
-    """A ``dose`` cell as read from a table: a number, or the name of a control."""
-    return dose if str(dose) in CONTROLS else float(dose)
-
-
-#: The shapes, each with its large and its small object.
-SHAPES: dict[str, tuple[str, str]] = {
-    "ball": ("big_ball", "small_ball"),
-    "cube": ("big_cube", "small_cube"),
-}
 
 #: The columns of data/size_dose/summary.csv (the contract first).
 SUMMARY_COLUMNS = [
@@ -89,55 +74,6 @@ SUMMARY_COLUMNS = [
     "family",
     "relative_to_mean",
 ]
-
-
-def size_free_maps(maps: Mapping[str, np.ndarray], objects: Sequence[str]) -> dict[str, np.ndarray]:
-    """The removal control's visual input: each object's map replaced by the mean of its shape's
-    maps (the natural objects', balls; the artefacts', cubes), so the input says which shape, not
-    which size; and the maps' clusters, computed from it, are equal for the two sizes."""
-    by_category: dict[str, list[str]] = {}
-    for obj in objects:
-        by_category.setdefault(OBJECTS[obj].category, []).append(obj)
-    mean = {c: np.mean([maps[o] for o in members], axis=0) for c, members in by_category.items()}
-    return {obj: mean[OBJECTS[obj].category] for obj in objects}
-
-
-def manipulation_rows(soms: Mapping[str, np.ndarray]) -> list[dict[str, Any]]:
-    """Per shape and map, the units the large and the small object's cluster lifts above one
-    half (``maps.active_units``), and their ratio: the Object map's response to the object, and
-    the Goal map's, averaged over the two tasks."""
-    objects = [str(o) for o in soms["objects"]]
-    rows = []
-    for shape, (large, small) in SHAPES.items():
-        li, si = objects.index(large), objects.index(small)
-        units = {
-            "object": (active_units(soms["object_act"][li]), active_units(soms["object_act"][si])),
-            "goal": tuple(
-                float(np.mean([active_units(soms["goal_act"][i, t]) for t in range(len(TASKS))]))
-                for i in (li, si)
-            ),
-        }
-        for name, (n_large, n_small) in units.items():
-            rows.append(
-                {
-                    "shape": shape,
-                    "map": name,
-                    "large_units": n_large,
-                    "small_units": n_small,
-                    "ratio": n_large / n_small,
-                }  # fmt: skip
-            )
-    return rows
-
-
-def manipulation(table: Sequence[Mapping], soms: Sequence[Mapping]) -> pd.DataFrame:
-    """One row per study run (dose, cue, seed, run), shape and map: the manipulation check."""
-    rows = [
-        dict(row) | check
-        for row, maps in zip(table, soms, strict=True)
-        for check in manipulation_rows(maps)
-    ]
-    return pd.DataFrame(rows)
 
 
 def replication_rows(
@@ -198,9 +134,6 @@ def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     out["p_holm"] = holm_hypotheses(out) if len(out) else []
     out["family"] = family_names(out, FAMILY_SUMMARY)
     return out
-
-
-# ---- size crossed with the grips' distance ---------------------------------------------------
 
 
 def grip_gaps(geometry: pd.DataFrame) -> pd.Series:
@@ -370,9 +303,6 @@ def power_table(declared: pd.DataFrame, effect: float, alpha: float) -> pd.DataF
                     f"power_{name}_high": power(effect, low, n, level)}  # fmt: skip
         rows.append(out)
     return pd.DataFrame(rows, columns=POWER_COLUMNS)
-
-
-# ---- the motor side: the demonstrations' geometry ---------------------------------------------
 
 
 #: The demonstrations' geometry, per object and grip (columns of data/size_dose/geometry.csv).
