@@ -15,6 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 from icub_affordance.analysis.paper_claims import seeds as claim_seeds
@@ -119,10 +120,24 @@ class RunPlan:
     def stage_run(self, run: str, stage: str) -> str:
         """The run whose ``stage`` (demos, soms) outputs this run reads: the first with equal
         settings for it (itself, if none before it has them)."""
-        key = [self.config(run)[k] for k in STAGE_SETTINGS[stage]]
-        return next(
-            r for r in self.runs if [self.config(r)[k] for k in STAGE_SETTINGS[stage]] == key
-        )
+        return self._stage_owners[stage][run]
+
+    @cached_property
+    def _stage_owners(self) -> dict[str, dict[str, str]]:
+        """For each stage, each run's ``stage_run``, found once (every Snakemake start asks a
+        thousand times): the first run whose settings for the stage equal the run's."""
+        owners: dict[str, dict[str, str]] = {}
+        for stage, keys in STAGE_SETTINGS.items():
+            firsts: list[tuple[list[Any], str]] = []  # each distinct setting and its first run
+            owners[stage] = {}
+            for run in self.runs:
+                setting = [self.config(run)[k] for k in keys]
+                owner = next((first for seen, first in firsts if seen == setting), None)
+                if owner is None:
+                    firsts.append((setting, run))
+                    owner = run
+                owners[stage][run] = owner
+        return owners
 
     def makes(self, run: str, stage: str) -> bool:
         """Does this run make its own ``stage`` (rather than read an earlier run's)?"""

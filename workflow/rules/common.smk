@@ -217,8 +217,10 @@ def job_records(files):
             makers, wildcards = [exact[path]], {}
         else:
             candidates = [*by_name.get(path.rsplit("/", 1)[-1], ()), *any_name]
-            makers = list(dict.fromkeys(r for r, output in candidates if output.match(path)))
-            wildcards = makers[0].get_wildcards(path) if len(makers) == 1 else {}
+            matches = [(r, found) for r, output in candidates if (found := output.match(path))]
+            makers = list(dict.fromkeys(r for r, _ in matches))
+            # the wildcards from the output's own match (Rule.get_wildcards matches again, slowly)
+            wildcards = matches[0][1].groupdict() if len(makers) == 1 else {}
         if len(makers) != 1 or not makers[0].benchmark:
             makers = [r for r in workflow.rules if any(o.match(path) for o in r.output)]
             raise ValueError(
