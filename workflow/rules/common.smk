@@ -1,6 +1,7 @@
 # Shared helpers of the rules (no rules here): the runs of the model, their settings and paths,
 # and the code each rule runs.
 import glob
+import itertools
 import re
 from pathlib import Path
 
@@ -160,8 +161,19 @@ def robot_test_weights(wildcards):
 
 
 def outputs(rule, run, **wildcards):
-    """The files `rule` makes for `run`."""
-    return expand(list(getattr(rules, rule).output), folder=PLAN.folder(run), **wildcards)
+    """The files `rule` makes for `run` (`wildcards`: a value or a list of values each), each
+    noted with its job's rule and wildcards (_MADE_BY, for job_records)."""
+    patterns, folder = list(getattr(rules, rule).output), PLAN.folder(run)
+    values = {k: v if isinstance(v, list) else [v] for k, v in wildcards.items()}
+    for combination in itertools.product(*values.values()):
+        job = {"folder": folder, **dict(zip(values, combination))}
+        for path in expand(patterns, **job):
+            _MADE_BY[path] = (rule, job)
+    return expand(patterns, folder=folder, **wildcards)
+
+
+#: Each file `outputs` named: the rule and wildcards of the job that makes it.
+_MADE_BY = {}
 
 
 def robot_test_files(run, name, nets=None):
@@ -215,6 +227,9 @@ def job_records(files):
     for path in files:
         if path in exact:
             makers, wildcards = [exact[path]], {}
+        elif path in _MADE_BY:  # a run's file: its job is known from the plan (outputs)
+            maker, wildcards = _MADE_BY[path]
+            makers = [workflow.get_rule(maker)]
         else:
             candidates = [*by_name.get(path.rsplit("/", 1)[-1], ()), *any_name]
             matches = [(r, found) for r, output in candidates if (found := output.match(path))]
