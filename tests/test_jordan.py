@@ -85,7 +85,7 @@ import icub_affordance.learning.kernel as kernel
 from icub_affordance.learning.training import train_network, train_networks
 if sys.argv[1] == "uncached":  # the same options, less the cache (the kernel the wrappers
     # call first: they find it among the module's globals when they compile)
-    for name in ("train_schedule", "_train_lanes", "train_lanes4", "train_lanes8"):
+    for name in ("_train_lanes", "train_lanes4", "train_lanes8"):
         compiled = getattr(kernel, name)
         options = {k: v for k, v in compiled.targetoptions.items() if k != "nopython"}
         setattr(kernel, name, numba.njit(**options)(compiled.py_func))
@@ -324,7 +324,7 @@ def test_networks_trained_together_are_the_networks_trained_alone(hidden, rate):
                 assert curve[key].tobytes() == alone_curve[key].tobytes(), key
 
 
-def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_alone():
+def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_to_four_lanes():
     from icub_affordance.learning.network import lane_groups
 
     def widths(n):
@@ -332,8 +332,8 @@ def test_networks_go_eight_then_four_to_a_kernel_and_a_last_one_alone():
 
     assert widths(12) == [(8, 8), (4, 4)] and widths(13) == [(8, 8), (5, 8)]
     assert widths(6) == [(6, 8)] and widths(5) == [(5, 8)] and widths(4) == [(4, 4)]
-    assert widths(3) == [(3, 4)] and widths(9) == [(8, 8), (1, 1)]
-    assert widths(1) == [(1, 1)] and widths(0) == []
+    assert widths(3) == [(3, 4)] and widths(9) == [(8, 8), (1, 4)]
+    assert widths(1) == [(1, 4)] and widths(0) == []  # one learning rule: no kernel for one
     assert [i for group, _ in lane_groups(21) for i in group] == list(range(21))
 
 

@@ -40,8 +40,9 @@ module (whose change the cache would not see): every size comes from the arrays.
 
 ``train_lanes4`` and ``train_lanes8`` train four or eight networks of one run at once, network l
 in lane l of 4- or 8-wide vectors, each lane making its network's operations in its network's
-order, so that each ends with the bits it has when trained alone (``network.train_together``; the
-section at the end of this file).
+order, so that each ends with the same bits whatever the group it trains in
+(``network.train_together``; the section at the end of this file). They are the one learning
+rule: a network alone trains in four lanes beside three copies of itself.
 
 Kept apart from ``network`` so that only training pays numba's import (about 0.5 s).
 """
@@ -115,140 +116,6 @@ def project_contexts(W1cT, unique, U, gram):
             gram[k, q] = s
 
 
-@numba.njit(cache=True, nogil=True, error_model="numpy")
-def train_schedule(
-    W1pT, b1, W2T, b2, U, moved, gram, lr_p, d_hid, lr_h, d_out, rates, context_ids, run_ends,
-    demos, targets, grips, tasks, objects, sequences, rmse,
-):  # fmt: skip
-    """Train in place over the schedule; each sequence's RMSE (before its updates) to ``rmse``.
-
-    The training state (``network.TrainingState``), carried from one call to the next so that a
-    schedule trained in parts is trained to the same bits as in one call: the weights, transposed
-    so that the inner loops run over contiguous rows, ``W1pT`` (16, hidden) from the
-    proprioceptive input, ``b1`` (hidden,), ``W2T`` (hidden, 16), ``b2`` (16,); the context
-    part ``U`` (contexts, hidden) and ``moved`` (contexts, hidden), the sum of lr * dh over each
-    context's steps, with ``gram`` (contexts, contexts) from :func:`project_contexts`; the last
-    step's pending weight update ``lr_p`` (16,), ``d_hid`` (hidden,), ``lr_h`` (hidden,),
-    ``d_out`` (16,) (zero before the first step).
-
-    The schedule: ``rates`` (iterations,) the learning rate of each iteration's updates;
-    ``context_ids`` (objects, tasks, steps-1) which distinct context is the input at each
-    transition; ``run_ends`` (objects, tasks, steps-1) the end of the run of equal contexts that
-    starts at each step; ``demos`` (objects, grips, sequences, steps, 16) the postures fed back
-    as proprioception; ``targets`` (the same shape) what the motor output learns at each next
-    step (``demos`` itself in the paper's reading); ``grips`` (objects, tasks) the target grip;
-    ``tasks``, ``objects``, ``sequences`` (iterations,) the schedule.
-    """
-    n_hid = W1pT.shape[1]
-    n_unique = U.shape[0]
-    n_pro = W1pT.shape[0]
-    n_out = W2T.shape[1]
-    W2 = np.empty((n_out, n_hid))  # W2T's transpose, updated alongside it
-    for j in range(n_hid):
-        for m in range(n_out):
-            W2[m, j] = W2T[j, m]
-    n_max = max(n_hid, n_out)
-    e = np.empty(n_max)
-    bits = np.empty(n_max, dtype=np.int64)
-    scale = bits.view(np.float64)
-    run_sum = np.empty(n_hid)  # the run's summed hidden deltas
-    h = np.empty(n_hid)
-    y = np.empty(n_out)
-    back = np.empty(n_hid)
-    # A step's updates of W1p, W2T and W2 are made by the next step's loops over those weights,
-    # each weight updated just before that loop reads it (one pass over the weights, not two);
-    # lr_p, d_hid, lr_h and d_out hold the update: W1p -= lr_p d_hid^T, W2T -= lr_h d_out^T, W2
-    # -= its transpose (:func:`finish` makes the last one).
-    d_new = np.empty(n_out)
-    err = np.empty(n_out)
-    for it in range(tasks.shape[0]):
-        lr = rates[it]
-        o = objects[it]
-        k = tasks[it]
-        ids = context_ids[o, k]
-        ends = run_ends[o, k]
-        post = demos[o, grips[o, k], sequences[it]]
-        goal = targets[o, grips[o, k], sequences[it]]
-        steps = post.shape[0] - 1
-        sq = 0.0
-        t = 0
-        while t < steps:
-            end = ends[t]
-            r = ids[t]
-            u = U[r]
-            for j in range(n_hid):
-                run_sum[j] = 0.0
-            lr_cc = lr * gram[r, r]
-            for s in range(t, end):
-                p = post[s]
-                # forward: hidden (W1p updated by the last step first), then motor output (W2T
-                # updated by the last step first)
-                for j in range(n_hid):
-                    h[j] = u[j] + b1[j]
-                for i in range(n_pro):
-                    lp = lr_p[i]
-                    pi = p[i]
-                    for j in range(n_hid):
-                        w = W1pT[i, j] - lp * d_hid[j]
-                        W1pT[i, j] = w
-                        h[j] += w * pi
-                _neg_exp(h, n_hid, e, bits, scale)
-                for j in range(n_hid):
-                    h[j] = 1.0 / (1.0 + e[j])
-                for m in range(n_out):
-                    y[m] = b2[m]
-                for j in range(n_hid):
-                    lh = lr_h[j]
-                    hj = h[j]
-                    for m in range(n_out):
-                        w = W2T[j, m] - lh * d_out[m]
-                        W2T[j, m] = w
-                        y[m] += w * hj
-                # backward: deltas of 0.5 * squared error, with the weights before this step's
-                # update (W2 updated by the last step first)
-                _neg_exp(y, n_out, e, bits, scale)
-                target = goal[s + 1]
-                for m in range(n_out):  # in vector lanes: the sum of squares apart
-                    ym = 1.0 / (1.0 + e[m])
-                    err[m] = ym - target[m]
-                    d_new[m] = err[m] * ym * (1.0 - ym)
-                for m in range(n_out):
-                    sq += err[m] * err[m]
-                for j in range(n_hid):
-                    back[j] = 0.0
-                for m in range(n_out):
-                    dm = d_new[m]
-                    dp = d_out[m]
-                    for j in range(n_hid):
-                        w = W2[m, j] - lr_h[j] * dp
-                        W2[m, j] = w
-                        back[j] += w * dm
-                # one SGD step: the biases and the context's part now, the weights pending
-                for m in range(n_out):
-                    d_out[m] = d_new[m]
-                    b2[m] -= lr * d_out[m]
-                for j in range(n_hid):
-                    d_hid[j] = back[j] * h[j] * (1.0 - h[j])
-                    lr_h[j] = lr * h[j]
-                for i in range(n_pro):
-                    lr_p[i] = lr * p[i]
-                for j in range(n_hid):
-                    b1[j] -= lr * d_hid[j]
-                    u[j] -= lr_cc * d_hid[j]
-                    run_sum[j] += d_hid[j]
-            # the run's update of W1c, seen by the other contexts and kept for the end
-            for j in range(n_hid):
-                run_sum[j] *= lr
-                moved[r, j] += run_sum[j]
-            for q in range(n_unique):
-                g = gram[q, r]
-                if q != r and g != 0.0:
-                    for j in range(n_hid):
-                        U[q, j] -= g * run_sum[j]
-            t = end
-        rmse[it] = np.sqrt(sq / (steps * n_out))
-
-
 @numba.njit(cache=True, nogil=True)
 def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
     """The weights at the end, in place: the last step's pending update made, and ``W1cT`` (the
@@ -275,7 +142,7 @@ def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
 # network l in lane l of every vector: each array of the state has a last axis of 4 or 8, and
 # every vector operation below is one IEEE operation per lane, the very operation the
 # per-network kernel makes on that network's number. The order of every sum (over the inputs,
-# the hidden units, the outputs, a sequence's squared errors) is that of ``train_schedule``; no
+# the hidden units, the outputs, a sequence's squared errors) is a lone network's own; no
 # fused multiply-add, no reassociation. So each lane ends with the bits its network has when
 # trained alone, whatever the width (a test checks, ``tests/test_jordan.py``).
 #
@@ -287,7 +154,7 @@ def finish(W1cT, unique, moved, W1pT, W2T, lr_p, d_hid, lr_h, d_out):
 # sums), so eight lanes, two vectors' work in flight where the CPU has 256-bit registers, train
 # eight networks in about 1.3 times the time of four (``benchmarks/train_speed.py``).
 #
-# What differs from ``train_schedule`` is only where numbers live, never what is computed:
+# What differs from a loop over one network is only where numbers live, never what is computed:
 # - W2 is kept once, as (16, hidden, lanes): the per-network kernel's second, transposed copy
 #   (kept for contiguous sums) holds the same bits, and here every sum runs over lanes anyway.
 # - Each network's runs of equal contexts are its own (a categorisation trial with the cue at
@@ -527,7 +394,8 @@ def _train_lanes(
     RMSE (before its updates) to ``rmse`` (iterations, lanes). ``lanes`` (4 or 8) must be a
     literal: called through :func:`train_lanes4` or :func:`train_lanes8`.
 
-    The state of :func:`train_schedule` with a last axis of ``lanes`` (network l in lane l), its
+    A network's training state (``network.TrainingState``) with a last axis of ``lanes`` (network
+    l in lane l), its
     weights laid out for sums over lanes: ``W1p`` (hidden, 16, lanes) from the proprioceptive
     input (the per-network ``W1pT`` transposed), ``b1`` (hidden, lanes), ``W2`` (16, hidden,
     lanes), ``b2`` (16, lanes), ``U`` and ``moved`` (contexts, hidden, lanes), ``lr_p`` (16,
@@ -535,7 +403,7 @@ def _train_lanes(
     contexts), the contexts' dot products, the same for all. The schedules: ``rates``,
     ``tasks``, ``objects``, ``sequences`` (iterations, lanes); ``grips`` (objects, tasks, lanes)
     each network's target grips; ``context_ids``, ``run_ends``, ``demos``, ``targets`` shared,
-    as in :func:`train_schedule`.
+    as ``network.train_together`` passes them.
     """
     numba.literally(lanes)
     L = lanes  # the lanes, a constant of each compiled kernel

@@ -75,7 +75,7 @@ def sigmoid(z: np.ndarray) -> np.ndarray:
 @dataclass
 class TrainingState:
     """A network part-way through its online training: what the compiled loop carries from one
-    iteration to the next (``kernel.train_schedule``). Training a schedule in parts, from
+    iteration to the next (``kernel.train_lanes4``). Training a schedule in parts, from
     a saved state, gives the same bits as in one call: so two settings that differ only after
     phase 1 (the learning-rate schedule) can share phase 1's training.
 
@@ -138,35 +138,11 @@ class TrainingState:
         targets: np.ndarray | None = None,
     ) -> np.ndarray:
         """Train on, in place, over ``schedule`` (see :func:`train_online` for the arguments);
-        return each of its iterations' RMSE, measured before that sequence's updates."""
-        from icub_affordance.learning.kernel import train_schedule
-
-        tasks, objects, sequences = (np.ascontiguousarray(a, dtype=np.int64) for a in schedule)
-        contexts = np.ascontiguousarray(contexts, dtype=np.float64)
-        unique, context_ids = _distinct_contexts(contexts)
-        if not np.array_equal(unique, self.arrays["unique"]):
-            raise ValueError(
-                "these contexts are not the ones the training started with: a state continues "
-                "only the training it was made by (same maps, same cue timing)"
-            )
-        run_ends = _run_ends(contexts)
-        rmse = np.empty(len(tasks))
-        demos, targets = _demos_and_targets(demos, targets)
-        grips = np.ascontiguousarray(grips, dtype=np.int64)
-        rates = np.asarray(learning_rate, dtype=np.float64)
-        if rates.ndim and rates.shape != tasks.shape:
-            raise ValueError(
-                f"{rates.shape} learning rates for a schedule of {tasks.shape} iterations"
-            )
-        rates = np.ascontiguousarray(np.broadcast_to(rates, tasks.shape))
-        a = self.arrays
-        train_schedule(
-            a["W1pT"], a["b1"], a["W2T"], a["b2"], a["U"], a["moved"], a["gram"], a["lr_p"],
-            a["d_hid"], a["lr_h"], a["d_out"], rates, context_ids, run_ends, demos, targets,
-            grips, tasks, objects, sequences, rmse,
-        )  # fmt: skip
-        self.done += len(tasks)
-        return rmse
+        return each of its iterations' RMSE, measured before that sequence's updates. The one
+        learning rule, the lanes kernel's (:func:`train_together`, this network in a group of
+        its own)."""
+        return train_together([self], [learning_rate], contexts, demos, [grips], [schedule],
+                              targets)[0]  # fmt: skip
 
     def weights(self) -> Weights:
         """The weights the training has reached (the state itself can train on)."""
@@ -206,16 +182,17 @@ def _run_ends(contexts: np.ndarray) -> np.ndarray:
 
 
 def lane_groups(n: int) -> list[tuple[list[int], int]]:
-    """How :func:`train_together` trains networks 0..n-1: groups and the kernel's lanes for each
-    (1: alone). Eight at a time while five or more are left, then four (a group of two or three
-    filled with copies), a last one alone. In the kernels alone, eight lanes train in about 1.3
-    times four lanes' time, and four lanes in about 1.7 times one network's: so five networks go
-    to eight lanes (1.3) rather than to four and one alone (1.6), four to four lanes (1.0), and
-    one network alone (0.6) rather than beside three copies."""
+    """How :func:`train_together` trains networks 0..n-1: groups and the kernel's lanes for each.
+    Eight at a time while five or more are left, then four (a group of one to three filled with
+    copies). Eight lanes train in about 1.3 times four lanes' time, so five networks go to eight
+    lanes rather than to four and one. A network alone goes to four lanes too: about 2.3 times
+    the time of a kernel for one network (0.08 CPU s for the paper's 12,000 iterations; 3.4
+    times for a wide robot network), the price of one learning rule written once instead of
+    twice (docs/speed.md)."""
     groups, start = [], 0
     while start < n:
         left = n - start
-        lanes = 8 if left >= 5 else 4 if left >= 2 else 1
+        lanes = 8 if left >= 5 else 4
         groups.append((list(range(start, start + min(lanes, left))), lanes))
         start += min(lanes, left)
     return groups
@@ -247,7 +224,7 @@ def train_together(
     trained eight or four at a time (:func:`lane_groups`), network l of a group in lane l of 8-
     or 4-wide vectors, each lane doing its network's operations in its network's order
     (``kernel.train_lanes8``, ``train_lanes4``). A short group is filled with copies of
-    its first network, trained and dropped; a last network alone is trained alone.
+    its first network, trained and dropped.
     """
     from icub_affordance.learning import kernel
 
@@ -283,10 +260,6 @@ def train_together(
         rates.append(np.broadcast_to(rate, (length,)))
     rmse = []  # in the networks' order, as the groups come
     for group, width in lane_groups(n):
-        if width == 1:
-            i = group[0]
-            rmse.append(states[i].train(rates[i], contexts, demos, grips[i], schedules[i], targets))
-            continue
         lanes = group + [group[0]] * (width - len(group))  # a short group: copies of its first
 
         def stacked(arrays, lanes=lanes):
