@@ -9,7 +9,7 @@ import pytest
 from conftest import demo_config, initial_posture_deg, load_config
 from PIL import Image
 
-from icub_affordance.body.animation import compose, filmed_networks, trial_frames, write_gif
+from icub_affordance.animation import compose, filmed_networks, trial_frames, write_gif
 from icub_affordance.body.demonstrations import make_demo
 from icub_affordance.body.grasp import DEMO_S
 from icub_affordance.body.robot import to_normalised

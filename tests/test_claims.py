@@ -102,9 +102,10 @@ def test_power_far_from_zero_agrees_with_a_simulation():
 
 
 def test_a_claim_on_fewer_replications_than_the_minimum_is_not_assessable():
-    """The one rule of every replicated test (icub_affordance.replicated, which the signatures
-    read too): a test over fewer estimates than ``min_replications`` has no p and reads "not
-    assessable"; at the minimum it is the t-test over the estimates, recomputed here."""
+    """The one rule of every replicated test (icub_affordance.analysis.replicated, which the
+    signatures read too): a test over fewer estimates than ``min_replications`` has no p and
+    reads "not assessable"; at the minimum it is the t-test over the estimates, recomputed
+    here."""
     rng = np.random.default_rng(5)
     rows = [
         test | {"seed": seed, "estimate": 0.01 + rng.normal(0, 0.0002), "lono_low": np.nan,

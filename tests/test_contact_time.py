@@ -1,4 +1,4 @@
-"""The declared contact-time test on the robot's fresh networks (icub_affordance.trials.contact):
+"""The declared contact-time test on the robot's fresh networks (icub_affordance.analysis.contact):
 the per-network contrast over the networks that touched in all four cells, recomputed by hand
 (an ordinary least-squares fit of the contrasts on the mapping), and its cells."""
 
@@ -9,8 +9,8 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
+from icub_affordance.analysis.contact import FAMILY, cell_counts, contact_time_tests
 from icub_affordance.outcome import Outcome
-from icub_affordance.trials.contact import FAMILY, cell_counts, contact_time_tests
 
 DECLARATION = {"effect": "congruency", "alpha": 0.05, "min_networks": 3}
 #: Under mapping A the big ball and the small cube are congruent, under B the other two.

@@ -96,6 +96,48 @@ def test_the_science_never_imports_the_workflow_and_benchmarks_import_no_tests()
         assert not re.search(r"^\s*(from|import) (test_|conftest)", path.read_text(), re.M), path
 
 
+#: The science package's layers, lowest first (icub_affordance/__init__.py): a module imports
+#: only from its own layer or a lower one.
+LAYERS = (
+    {"vocabulary", "outcome", "files"},
+    {"learning", "body"},
+    {"trials"},
+    {"analysis"},
+    {"figures", "animation"},
+)
+
+
+def science_imports() -> list[tuple[str, str]]:
+    """Every import between the science package's top-level parts: (importer, imported)."""
+    import ast
+
+    root = REPO / "src" / "icub_affordance"
+    found = []
+    for path in root.rglob("*.py"):
+        part = path.relative_to(root).parts[0].removesuffix(".py")
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.module:
+                names = [node.module]
+            elif isinstance(node, ast.Import):
+                names = [alias.name for alias in node.names]
+            else:
+                continue
+            found += [(part, n.split(".")[1]) for n in names
+                      if n.startswith("icub_affordance.")]  # fmt: skip
+    return found
+
+
+def test_the_science_packages_layers_import_only_downwards():
+    """learning and body stand on the vocabulary, the trials on them, the analysis on the
+    trials, the figures and films on everything: no import runs back up."""
+    layer = {part: level for level, parts in enumerate(LAYERS) for part in parts}
+    imports = science_imports()
+    assert {part for pair in imports for part in pair} <= set(layer), imports
+    upwards = [(a, b) for a, b in imports if layer[b] > layer[a]]
+    assert not upwards, upwards
+    assert ("analysis", "trials") in imports and ("trials", "learning") in imports
+
+
 @pytest.mark.dryrun  # runs Snakemake
 def test_snakemake_lint_gives_no_advice_but_the_conda_one():
     result = subprocess.run(

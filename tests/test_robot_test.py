@@ -9,15 +9,15 @@ import pandas as pd
 import pytest
 from conftest import demo_config, load_test_config
 
-from icub_affordance.analysis.robot_effects import ROBOT_FAMILY, success_table, variant_effects
-from icub_affordance.body.grasp import grip_in_contact, grip_used
-from icub_affordance.body.robot import OBJECT_NAMES, Robot, to_normalised
-from icub_affordance.learning.network import Weights, network_step, run_closed_loop
-from icub_affordance.trials.hidden_states import (
+from icub_affordance.analysis.hidden_states import (
     distances_to_grasping,
     first_divergent_step,
     pca,
 )
+from icub_affordance.analysis.robot_effects import ROBOT_FAMILY, success_table, variant_effects
+from icub_affordance.body.grasp import grip_in_contact, grip_used
+from icub_affordance.body.robot import OBJECT_NAMES, Robot, to_normalised
+from icub_affordance.learning.network import Weights, network_step, run_closed_loop
 from icub_affordance.trials.on_robot import (
     Outcome,
     network_policy,
@@ -305,7 +305,7 @@ def test_the_divergence_has_the_mapping_as_a_covariate():
     as an ordinary least-squares fit with the mapping coded -0.5 / +0.5 gives it."""
     import statsmodels.api as sm
 
-    from icub_affordance.trials.hidden_states import divergence
+    from icub_affordance.analysis.hidden_states import divergence
 
     mappings, gaps = ["A", "A", "A", "B"], [0.1, 0.2, 0.3, 1.0]
     _, summary = divergence(*_divergence_inputs(mappings, gaps))
@@ -321,7 +321,7 @@ def test_the_divergence_has_the_mapping_as_a_covariate():
 
 
 def test_the_divergence_refuses_an_unknown_mapping():
-    from icub_affordance.trials.hidden_states import divergence
+    from icub_affordance.analysis.hidden_states import divergence
 
     hidden, trials = _divergence_inputs(["A", "C"], [0.1, 0.2])
     with pytest.raises(ValueError, match="mapping: levels \\['C'\\]"):

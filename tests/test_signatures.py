@@ -181,9 +181,9 @@ def test_over_units_takes_one_value_per_replication_and_counts_the_undefined():
 
 @pytest.mark.heavy
 def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
-    """One minimum for every replicated test (icub_affordance.replicated): five replications
-    against a declared minimum of six give no p and no verdict but "not assessable"; the
-    confirmation's claims read the same rule (tests/test_claims.py)."""
+    """One minimum for every replicated test (icub_affordance.analysis.replicated): five
+    replications against a declared minimum of six give no p and no verdict but "not
+    assessable"; the confirmation's claims read the same rule (tests/test_claims.py)."""
     config = declared()
     trials = synthetic_trials(0.002)
     assert trials["replication"].nunique() == 5

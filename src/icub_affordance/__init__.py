@@ -1,11 +1,12 @@
 """icub-affordance: reproducing Macura et al. (2009), "A Cognitive Robotic Model of Grasping".
 
-Laid out like the paper: ``body`` (the simulated iCub, its grasps, demonstrations and vision),
-``learning`` (the Kohonen maps and the Jordan network, and their training), ``trials`` (tests of
-a trained network, in silico and on the robot) and ``analysis`` (the statistics, the paper's
-claims and the tests added to them). Shared by all of them at the top: the vocabulary of objects,
-grips and tasks (``vocabulary``), what a test shows (``outcome``), tests over replications
-(``replicated``), file writing (``files``) and the figures (``figures``).
+Laid out like the paper, in layers that import only downwards: ``learning`` (the Kohonen maps
+and the Jordan network, and their training), ``body`` (the simulated iCub, its grasps,
+demonstrations and vision), ``trials`` (tests of a trained network, in silico and on the
+robot) and ``analysis`` (the statistics of the trials, the hidden states and the contacts, the
+paper's claims and the tests added to them). At the top, below them all: the vocabulary of
+objects, grips and tasks (``vocabulary``), what a test shows (``outcome``) and file writing
+(``files``); above them all: the figures (``figures``) and the robot's films (``animation``).
 """
 
 import os

@@ -146,7 +146,7 @@ rule robot_contact_time:
     robot.confirmation.contact_time): per confirmed variant, the congruency effect on the time
     until the required grip's fingers touch, over the networks that touched in all four cells,
     Holm over the variants; and per cell the trials and how many touched
-    (icub_affordance.trials.contact)."""
+    (icub_affordance.analysis.contact)."""
     input:
         trials=rules.robot_confirmation.output.trials,
         code=script_code("robot_contact_time"),

@@ -23,7 +23,7 @@ rule signatures:
     params:
         replications=SIGNATURE_REPLICATIONS,
         signatures=settings(config["signatures"]),
-        # one minimum for every test over replications (icub_affordance.replicated)
+        # one minimum for every test over replications (icub_affordance.analysis.replicated)
         min_replications=config["confirmation"]["min_replications"],
     log:
         "data/logs/signatures/summary.log",

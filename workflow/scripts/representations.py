@@ -4,8 +4,12 @@ import json
 
 import pandas as pd
 
+from icub_affordance.analysis.hidden_states import (
+    divergence,
+    first_divergent_step,
+    trajectory_table,
+)
 from icub_affordance.files import atomic_path, load_npz, redirect_log, write_text
-from icub_affordance.trials.hidden_states import divergence, first_divergent_step, trajectory_table
 
 with redirect_log(snakemake.log[0]):
     trials = pd.read_csv(snakemake.input.trials, keep_default_na=False)

@@ -6,7 +6,7 @@ test recorded (the run's trials.csv), or the film would show another trial than 
 (``animation.film_trial``).
 """
 
-from icub_affordance.body.animation import (
+from icub_affordance.animation import (
     categorise_panels,
     filmed_networks,
     grasp_panels,

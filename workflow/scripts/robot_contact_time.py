@@ -3,8 +3,8 @@ cells it rests on (contact_time_cells.csv), from the fresh networks' robot trial
 
 import pandas as pd
 
+from icub_affordance.analysis.contact import cell_counts, contact_time_tests
 from icub_affordance.files import redirect_log, write_tables
-from icub_affordance.trials.contact import cell_counts, contact_time_tests
 from icub_workflow.book.words import direction_codes
 
 with redirect_log(snakemake.log[0]):

@@ -1,3 +1,4 @@
 """The analysis of the trials (the paper's results, and the tests added to them): the statistics,
-the paper's claims and their confirmation on fresh networks, the declared readings and studies,
-the robot's effects, and the verdicts' thresholds."""
+tests over replications, the paper's claims and their confirmation on fresh networks, the
+declared readings and studies, the hidden states, the robot's effects and contact times, and the
+verdicts' thresholds."""

@@ -200,8 +200,8 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
     ``min_replications``; Holm's p over the family's tests with a p; the direction. For the
     correct-trial RMSE, the widest leave-one-network-out range of the replications' estimates
     and the fewest networks that carried a cell in any replication."""
+    from icub_affordance.analysis.replicated import over_replications
     from icub_affordance.analysis.statistics import holm
-    from icub_affordance.replicated import over_replications
 
     alpha, least = float(declaration["alpha"]), int(declaration["min_replications"])
     rows = []

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.replicated import assessable, over_replications
 from icub_affordance.analysis.statistics import equivalence, holm
 from icub_affordance.analysis.trial_effects import correct_trial_effects
 from icub_affordance.analysis.verdicts import ALPHA
@@ -30,7 +31,6 @@ from icub_affordance.learning.materials import Materials
 from icub_affordance.learning.network import Weights, run_closed_loop
 from icub_affordance.learning.training import N_VISUAL, context, target_grip
 from icub_affordance.outcome import Outcome
-from icub_affordance.replicated import assessable, over_replications
 from icub_affordance.vocabulary import CATEGORISATION, OBJECTS
 
 #: Where the object is in view at every step: a trial's 9 steps.
