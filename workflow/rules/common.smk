@@ -160,20 +160,26 @@ def robot_test_weights(wildcards):
     return weights_files(run_of(wildcards), None if nets is None else [f"{n:02d}" for n in nets])
 
 
-def outputs(rule, run, **wildcards):
-    """The files `rule` makes for `run` (`wildcards`: a value or a list of values each), each
-    noted with its job's rule and wildcards (_MADE_BY, for job_records)."""
-    patterns, folder = list(getattr(rules, rule).output), PLAN.folder(run)
-    values = {k: v if isinstance(v, list) else [v] for k, v in wildcards.items()}
-    for combination in itertools.product(*values.values()):
-        job = {"folder": folder, **dict(zip(values, combination))}
-        for path in expand(patterns, **job):
-            _MADE_BY[path] = (rule, job)
-    return expand(patterns, folder=folder, **wildcards)
-
-
 #: Each file `outputs` named: the rule and wildcards of the job that makes it.
 _MADE_BY = {}
+
+
+def outputs(rule, run, **wildcards):
+    """The files `rule` makes for `run` (`wildcards`: a value or a list of values each), in
+    `expand`'s order (output by output), each noted with its job's rule and wildcards
+    (_MADE_BY, for job_records)."""
+    values = {k: v if isinstance(v, list) else [v] for k, v in wildcards.items()}
+    jobs = [
+        {"folder": PLAN.folder(run), **dict(zip(values, combination))}
+        for combination in itertools.product(*values.values())
+    ]
+    files = []
+    for pattern in getattr(rules, rule).output:
+        for job in jobs:
+            (path,) = expand(pattern, **job)
+            _MADE_BY[path] = (rule, job)
+            files.append(path)
+    return files
 
 
 def robot_test_files(run, name, nets=None):
@@ -183,18 +189,13 @@ def robot_test_files(run, name, nets=None):
     return part_files(run, "robot_test", name, nets)
 
 
-def robot_files(run):
-    """A run's robot test, for a run that is a tested robot variant."""
-    return robot_test_files(run, "trials.csv") + robot_test_files(run, "states.npz")
-
-
 def step_files(run, step):
     """The files a step of a run makes (RunPlan.steps): its rule's outputs in the run's folder,
     part by part for the networks and the robot test."""
     if step == "train":
         return outputs("train", run, part=PLAN.parts(run))
     if step == "robot_test":
-        return robot_files(run)
+        return outputs("robot_test", run, part=PLAN.parts(run, "robot_test"))
     return outputs(step, run)
 
 
