@@ -70,8 +70,8 @@ def test_closure_follows_relative_absolute_and_nested_imports(tmp_path):
 def test_the_import_cache_follows_edits_new_modules_and_survives_a_broken_file(tmp_path):
     """What a graph parsed is kept in its cache file; a later graph reading that file gives the
     closure a fresh parse gives, after a module's edit and after a module is added (the cache
-    keeps what a source names, not which names are project modules), and a broken cache file
-    is parsed afresh."""
+    keeps what a source names, not which names are project modules); an edited source's old
+    entry is dropped; and a broken cache file is parsed afresh."""
     src = write_package(tmp_path / "src", {"a": "from . import b\n", "b": ""})
     cache = tmp_path / "cache" / "code_deps.json"
 
@@ -87,7 +87,10 @@ def test_the_import_cache_follows_edits_new_modules_and_survives_a_broken_file(t
     (src / "icub_affordance" / "c.py").write_text("")
     assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py", "b.py", "c.py"]
     (src / "icub_affordance" / "a.py").write_text("")
-    assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py"]
+    edited = CodeGraph([src], cache=cache)
+    assert closure(edited) == ["__init__.py", "a.py"]
+    edited.save()  # the file keeps the sources as they are now: the source asked for, a, __init__
+    assert len(json.loads(cache.read_text())) == 3
     cache.write_text("{not json")
     assert closure(CodeGraph([src], cache=cache)) == ["__init__.py", "a.py"]
 

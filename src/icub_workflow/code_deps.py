@@ -29,7 +29,8 @@ class CodeGraph:
         # (a JSON file; a missing or unreadable one is started afresh), kept there by `save`
         self._cache = Path(cache) if cache is not None else None
         self._named: dict[str, list[str]] = _read_json(self._cache)
-        self._added = False
+        self._stored = set(self._named)  # the digests the cache file holds
+        self._used: set[str] = set()  # the digests asked for since the graph was made
 
     @cache  # noqa: B019 (one graph per workflow, alive as long as it)
     def find(self, module: str) -> Path | None:
@@ -57,7 +58,7 @@ class CodeGraph:
         key = hashlib.sha256(f"{module}\0{is_package}\0{source}".encode()).hexdigest()
         if key not in self._named:
             self._named[key] = _imported_names(source, module, is_package)
-            self._added = True
+        self._used.add(key)
         found: set[str] = set()
         for name in self._named[key]:
             found |= {m for m in self._with_parents(name) if self.find(m) is not None}
@@ -66,15 +67,17 @@ class CodeGraph:
     def save(self) -> None:
         """Keep what this graph parsed in its cache file (written whole), so that the next
         Snakemake start parses only the sources that changed: parsing every module took a
-        tenth of each start."""
-        if self._cache is None or not self._added:
+        tenth of each start. Only the sources asked for since the graph was made are kept, so
+        the file holds the code as it is, not every version it has been; an unchanged cache is
+        not written."""
+        if self._cache is None or self._used == self._stored:
             return
         self._cache.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(dir=self._cache.parent, prefix=self._cache.name)
         with os.fdopen(fd, "w") as out:
-            json.dump(self._named, out)
+            json.dump({key: self._named[key] for key in sorted(self._used)}, out)
         os.replace(tmp, self._cache)
-        self._added = False
+        self._stored = set(self._used)
 
     @cache  # noqa: B019 (one graph per workflow, alive as long as it)
     def _direct(self, module: str) -> frozenset[str]:
