@@ -124,7 +124,7 @@ def test_a_confirmations_fresh_networks_take_their_mapping_by_place_in_the_run()
     settings = {"networks": 12, "first_network": 12}
     settings |= {"categorisation_cue": "all_steps", "target": "commands"}
     files = [None, None], [[], []]
-    with pytest.raises(AttributeError, match="demos"):  # past the checks, to the test's trials
+    with pytest.raises(AttributeError, match="'NoneType' object"):  # past the checks, to the trials
         filmed_networks(None, settings, [12, 18], *files)
     with pytest.raises(ValueError, match="one of each is needed"):
         filmed_networks(None, settings, [12, 13], *files)

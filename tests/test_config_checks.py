@@ -45,6 +45,19 @@ def test_the_default_and_the_test_config_pass():
             lambda c: c["network"].update(phase1_iterations=5999),
             ["network.phase1_iterations", "5999", "odd", "Fix"],
         ),
+        # names whose training shares do not split a phase into whole trials, or show nothing
+        (
+            lambda c: c["names"].update(
+                use=True, training={"phase1": {"both": 1}, "phase2": {"image": 7}}
+            ),
+            ["names.training.phase2", "6000", "divide", "Fix"],
+        ),
+        (
+            lambda c: c["names"].update(
+                use=True, training={"phase1": {"both": 0}, "phase2": {"image": 1}}
+            ),
+            ["names.training.phase1", "every weight is 0", "Fix"],
+        ),
         # the window outside the image, or not a multiple of the grid
         (
             lambda c: c["vision"].update(window=300),

@@ -106,6 +106,14 @@ SCHEDULES: tuple[str, ...] = ("constant", "anneal")
 #: these share phase 1's training (training.Phase1).
 AFTER_PHASE1: tuple[str, ...] = ("categorisation_cue", "learning_rate_schedule", "curve_rows")
 
+#: What a trial shows of its object (config ``names``, beyond the paper): its image (the visual
+#: map, the paper's only input), its name, or both. A run without names shows the image alone.
+FORMS: tuple[str, ...] = ("image", "name", "both")
+
+#: Where a name enters (config ``names.routes``): the routes the visual map takes, beside it into
+#: the network's hidden layer, and into the Object map (and through it the Goal map).
+NAME_ROUTES: tuple[str, ...] = ("network", "object_map")
+
 #: The two ways the trained networks are tested (paper section 3; book/notes.md, "Testing and
 #: statistics").
 MODES: tuple[str, ...] = ("closed_loop", "teacher_forced")

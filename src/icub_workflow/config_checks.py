@@ -235,6 +235,7 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             "is half grasping, half categorisation. Allowed: iterations - phase1_iterations even. "
             "Fix: change either by one."
         )
+    yield from _names_problems(config, key)
 
     vision = config["vision"]
     window, grid = vision["window"], vision["grid"]
@@ -354,6 +355,28 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
             f"are demos.sequences = {sequences} per object and grip. Allowed: "
             f"0..{sequences - 1}. Fix: pick a sequence in that range."
         )
+
+
+def _names_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """A run with names whose training shares do not split a phase into whole trials."""
+    names, network = config["names"], config["network"]
+    if not names["use"]:
+        return
+    phase1 = network["phase1_iterations"]
+    lengths = {"phase1": phase1, "phase2": network["iterations"] - phase1}
+    for phase, weights in names["training"].items():
+        total = sum(weights.values())
+        if total == 0:
+            yield (
+                f"{key(f'names.training.{phase}')}: every weight is 0, so no trial of the phase "
+                "shows anything. Fix: give image, name or both a weight of 1 or more."
+            )
+        elif lengths[phase] % total:
+            yield (
+                f"{key(f'names.training.{phase}')}: the weights {dict(weights)} sum to {total}, "
+                f"which does not divide the phase's {lengths[phase]} iterations into whole "
+                "shares. Fix: weights whose sum divides the phase's iterations (e.g. 1 each)."
+            )
 
 
 def _variant_words(variant: NetworkVariant) -> str:

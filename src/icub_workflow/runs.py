@@ -41,7 +41,7 @@ _SCENE = ("scene", "objects", "object_sizes_m", "initial_posture_deg")
 STAGE_SETTINGS = {
     "maps": (*_SCENE, "vision", "size_free_input"),
     "demos": ("seed", *_SCENE, "demos"),
-    "soms": ("seed", *_SCENE, "vision", "size_free_input", "soms"),
+    "soms": ("seed", *_SCENE, "vision", "size_free_input", "soms", "names"),
 }
 
 

@@ -16,11 +16,12 @@ import pandas as pd
 
 from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.learning.materials import Materials
+from icub_affordance.learning.names import NamesConfig
 from icub_affordance.learning.network import Weights
 from icub_affordance.learning.training import TrainConfig, mapping_of, network_seed
 from icub_affordance.learning.training import train_networks as train_side_by_side
 from icub_affordance.learning.training import train_phase1s as train_phase1s_side_by_side
-from icub_affordance.vocabulary import TASKS
+from icub_affordance.vocabulary import FORMS, TASKS
 from icub_workflow.parts import (
     load_phase1s,
     load_weights,
@@ -30,14 +31,23 @@ from icub_workflow.parts import (
 )
 
 
-def make_soms(maps_path: str, objects: Sequence[str], soms: Mapping, seed: int, path: str) -> None:
-    """Train the three SOMs on the objects' visual maps; save their activations and weights."""
+def make_soms(
+    maps_path: str,
+    objects: Sequence[str],
+    soms: Mapping,
+    seed: int,
+    path: str,
+    names: Mapping | None = None,
+) -> None:
+    """Train the three SOMs on the objects' visual maps (and their names, config ``names``, when
+    used); save their activations and weights."""
     from icub_affordance.learning.maps import SOMConfig, active_units, train_soms
 
     maps = load_npz(maps_path, required=tuple(objects))
     visual = np.array([maps[o] for o in objects])
-    trained = train_soms(visual, SOMConfig(**soms), seed)
-    save_npz(path, objects=np.array(objects), tasks=np.array(TASKS), **vars(trained))
+    trained = train_soms(visual, SOMConfig(**soms), seed, names and NamesConfig.of(names))
+    arrays = {key: value for key, value in vars(trained).items() if value is not None}
+    save_npz(path, objects=np.array(objects), tasks=np.array(TASKS), **arrays)
     for obj, act in zip(objects, trained.object_act, strict=True):
         print(f"{obj}: {active_units(act)} Object-map units above 0.5")
 
@@ -51,11 +61,12 @@ def curve_columns(curve: Mapping[str, np.ndarray], objects: Sequence[str]) -> di
         "object": [objects[obj] for obj in curve["object"].tolist()],
         "sequence": curve["sequence"].tolist(),
         "rmse": curve["rmse"].tolist(),
-    }
+    } | ({"form": [FORMS[form] for form in curve["form"].tolist()]} if "form" in curve else {})
 
 
-def _networks(network: Mapping, nets: Sequence[int] | None):
-    """A run's training settings, and each network asked for with its mapping: (net, mapping)."""
+def _networks(network: Mapping, nets: Sequence[int] | None, names: Mapping | None = None):
+    """A run's training settings (with its ``names``, config ``names``), and each network asked
+    for with its mapping: (net, mapping)."""
     settings = dict(network)
     n_networks = settings.pop("networks")
     # a confirmation's fresh networks start at this index (robot.confirmation); others at 0
@@ -66,7 +77,8 @@ def _networks(network: Mapping, nets: Sequence[int] | None):
             f"networks {nets} asked for, but the run's are {first}..{first + n_networks - 1}"
         )
     # each network's mapping by its place in the run
-    return TrainConfig(**settings), [(net, mapping_of(net - first, n_networks)) for net in nets]
+    config = TrainConfig(**settings, names=names and NamesConfig.of(names))
+    return config, [(net, mapping_of(net - first, n_networks)) for net in nets]
 
 
 def _check_files(nets: Sequence, files: Sequence[str]) -> None:
@@ -75,12 +87,17 @@ def _check_files(nets: Sequence, files: Sequence[str]) -> None:
 
 
 def train_phase1s(
-    materials: Materials, network: Mapping, seed: int, part: str, phase1_path: str
+    materials: Materials,
+    network: Mapping,
+    seed: int,
+    part: str,
+    phase1_path: str,
+    names: Mapping | None = None,
 ) -> None:
     """Phase 1 of a run's part (icub_workflow.parts: every network, ``all``, or one), saved
     for the runs that continue from it: trained side by side, each the bits it has trained
     alone (``training.train_phase1s``)."""
-    config, nets = _networks(network, part_networks(part))
+    config, nets = _networks(network, part_networks(part), names)
     phase1s = train_phase1s_side_by_side(
         materials,
         config,
@@ -96,11 +113,12 @@ def _trained(
     seed: int,
     nets: Sequence[int] | None,
     phase1_files: Sequence[str],
+    names: Mapping | None = None,
 ) -> tuple[list[int], list[tuple[Weights, dict[str, list]]]]:
     """Train a run's networks ``nets`` (all of them when None), each from its own seed or
     continued from its saved phase 1: each one's index, and its weights and curve's columns,
     checked finite."""
-    config, nets = _networks(network, nets)
+    config, nets = _networks(network, nets, names)
     starts = None
     if phase1_files:
         saved = load_phase1s(phase1_files)
@@ -138,10 +156,11 @@ def train_part(
     curve_path: str,
     weights_path: str,
     phase1_files: Sequence[str] = (),
+    names: Mapping | None = None,
 ) -> None:
     """Train a run's part (icub_workflow.parts: one network, ``net03``, or ``all``) and write
     its curve and weights."""
-    nets, trained = _trained(materials, network, seed, part_networks(part), phase1_files)
+    nets, trained = _trained(materials, network, seed, part_networks(part), phase1_files, names)
     write_part(nets, trained, curve_path, weights_path)
 
 

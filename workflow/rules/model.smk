@@ -14,6 +14,7 @@ rule soms:
         folder=served_by("soms", "soms"),
     params:
         soms=run_section("soms"),
+        names=run_section("names"),
         seed=run_section("seed"),
         objects=settings(config["objects"]),
     priority: 3  # every training waits on it: first
@@ -70,6 +71,7 @@ rule train:
         weights="data/{folder}train/{part}/weights.npz",
     params:
         network=run_section("network"),
+        names=run_section("names"),
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     wildcard_constraints:

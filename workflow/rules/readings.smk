@@ -47,6 +47,7 @@ for _group, _runs in MEASURED_GROUPS.items():
             **model_inputs({"folder": PLAN.folder(run)}),
             "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
             "som_settings": settings(PLAN.config(run)["soms"]),
+            "names": settings(PLAN.config(run)["names"]),
             "curves": curve_files(run),  # its part `all`: one file each
             "weights": weights_files(run),
             "trials": PLAN.path(run, "eval/measures.csv"),

@@ -15,6 +15,7 @@ rule phase1:
         part=r"net\d\d|all",
     params:
         network=run_section("network"),
+        names=run_section("names"),
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     priority: 3  # the build's longest chain: phase 1, three trainings, their robot tests

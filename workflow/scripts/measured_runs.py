@@ -11,11 +11,18 @@ with redirect_log(snakemake.log[0]):
         print(f"run {run['run']}")
         if run["makes_soms"]:
             make_soms(
-                run["maps"], snakemake.params.objects, run["som_settings"], run["seed"], run["soms"]
+                run["maps"],
+                snakemake.params.objects,
+                run["som_settings"],
+                run["seed"],
+                run["soms"],
+                run["names"],
             )
         materials = load_materials(run["maps"], run["soms"], run["demos"], run["grip_distance"])
         (curve,), (weights,) = run["curves"], run["weights"]  # its part `all`
-        train_part(materials, run["network"], run["seed"], "all", curve, weights)
+        train_part(
+            materials, run["network"], run["seed"], "all", curve, weights, names=run["names"]
+        )
         measure_networks(
             materials,
             run["network"],

@@ -16,4 +16,5 @@ with redirect_log(snakemake.log[0]):
         snakemake.params.seed,
         snakemake.wildcards.part,
         snakemake.output[0],
+        snakemake.params.names,
     )

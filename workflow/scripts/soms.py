@@ -10,4 +10,5 @@ with redirect_log(snakemake.log[0]):
         snakemake.params.soms,
         snakemake.params.seed,
         snakemake.output[0],
+        snakemake.params.names,
     )

@@ -20,4 +20,5 @@ with redirect_log(snakemake.log[0]):
         snakemake.output.curve,
         snakemake.output.weights,
         list(snakemake.input.phase1),
+        snakemake.params.names,
     )

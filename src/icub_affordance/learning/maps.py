@@ -19,7 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 from minisom import MiniSom
 
-from icub_affordance.vocabulary import GOAL_RESPONSES, TASKS
+from icub_affordance.learning.names import NamesConfig, name_patterns, shown
+from icub_affordance.vocabulary import FORMS, GOAL_RESPONSES, TASKS
 
 
 @dataclass(frozen=True)
@@ -125,14 +126,43 @@ class SOMs:
     goal_weights: np.ndarray
     object_winners: np.ndarray  # (objects, 2)
     goal_winners: np.ndarray  # (objects, tasks, 2)
+    # a run with names (learning.names); the fields above are then the image's
+    name_patterns: np.ndarray | None = None  # (objects, units) each object's name
+    name_input: np.ndarray | None = None  # the names the network receives: (objects, 0) if none
+    object_act_forms: np.ndarray | None = None  # (forms, objects, grid, grid), vocabulary.FORMS
+    goal_act_forms: np.ndarray | None = None  # (forms, objects, tasks, grid, grid)
 
 
-def train_soms(visual_maps: np.ndarray, config: SOMConfig, seed: int) -> SOMs:
-    """Train Object, Task and Goal maps in that order (the Goal map learns from the other two)."""
+def object_inputs(flat: np.ndarray, names: NamesConfig | None) -> dict[str, np.ndarray]:
+    """The Object map's input for each form a trial may show (vocabulary.FORMS): the visual map,
+    blanked unless the image is shown, and with the ``object_map`` route the name beside it,
+    0 unless the name is shown. Without names: the image alone, the visual map (the paper)."""
+    if names is None:
+        return {"image": flat}
+    patterns = name_patterns(len(flat), names.units_per_name)
+    inputs = {}
+    for form in FORMS:
+        visual, name = shown(flat, patterns, form)
+        inputs[form] = np.hstack([visual, name]) if "object_map" in names.routes else visual
+    return inputs
+
+
+def train_soms(
+    visual_maps: np.ndarray, config: SOMConfig, seed: int, names: NamesConfig | None = None
+) -> SOMs:
+    """Train Object, Task and Goal maps in that order (the Goal map learns from the other two);
+    with ``names``, the Object and Goal maps learn from the forms training shows (image, name,
+    both) and respond to each."""
     rng = np.random.default_rng([seed, 1])
     flat = visual_maps.reshape(len(visual_maps), -1).astype(float)
-    object_som = train_som(flat, config, seed + 11)
-    object_act = np.array([object_activation(object_som, m, config) for m in visual_maps])
+    inputs = object_inputs(flat, names)
+    trained = names.trained_forms if names else ("image",)
+    object_som = train_som(np.concatenate([inputs[f] for f in trained]), config, seed + 11)
+    object_forms = {
+        form: np.array([object_activation(object_som, x, config) for x in shown_inputs])
+        for form, shown_inputs in inputs.items()
+    }
+    object_act = object_forms["image"]
 
     # the paper's task inputs: a pattern for grasping and a "new (random)" one for categorising
     patterns = rng.integers(0, 2, size=(len(TASKS), config.task_pattern_size)).astype(float)
@@ -141,13 +171,27 @@ def train_soms(visual_maps: np.ndarray, config: SOMConfig, seed: int) -> SOMs:
     task_som = train_som(patterns, config, seed + 12)
     task_act = np.array([fixed_activation(task_som, p, config) for p in patterns])
 
-    goal_inputs = np.array(
-        [np.concatenate([o.ravel(), t.ravel()]) for o in object_act for t in task_act]
-    )
-    goal_som = train_som(goal_inputs, config, seed + 13)
+    goal_forms = {
+        form: np.array([np.concatenate([o.ravel(), t.ravel()]) for o in act for t in task_act])
+        for form, act in object_forms.items()
+    }
+    goal_inputs = goal_forms["image"]
+    goal_som = train_som(np.concatenate([goal_forms[f] for f in trained]), config, seed + 13)
     goal_act = np.array([goal_activation(goal_som, g, config) for g in goal_inputs])
     n_obj, n_task = len(object_act), len(task_act)
+    extra = {}
+    if names is not None:
+        patterns = name_patterns(n_obj, names.units_per_name)
+        extra = {
+            "name_patterns": patterns,
+            "name_input": patterns if "network" in names.routes else patterns[:, :0],
+            "object_act_forms": np.array([object_forms[f] for f in FORMS]),
+            "goal_act_forms": np.array(
+                [[goal_activation(goal_som, g, config) for g in goal_forms[f]] for f in FORMS]
+            ).reshape(len(FORMS), n_obj, n_task, config.grid, config.grid),
+        }
     return SOMs(
+        **extra,
         object_act=object_act,
         task_act=task_act,
         goal_act=goal_act.reshape(n_obj, n_task, config.grid, config.grid),
@@ -155,7 +199,7 @@ def train_soms(visual_maps: np.ndarray, config: SOMConfig, seed: int) -> SOMs:
         object_weights=object_som.get_weights(),
         task_weights=task_som.get_weights(),
         goal_weights=goal_som.get_weights(),
-        object_winners=np.array([object_som.winner(x) for x in flat]),
+        object_winners=np.array([object_som.winner(x) for x in inputs["image"]]),
         goal_winners=np.array([goal_som.winner(g) for g in goal_inputs]).reshape(n_obj, n_task, 2),
     )
 

@@ -24,9 +24,15 @@ N_PROPRIO = 16
 N_GOAL = 100
 N_INPUT = N_VISUAL + N_PROPRIO + N_GOAL
 N_OUTPUT = 16
-# Input layout: [visual (100), proprioception (16), goal (100)], as in Figure 2.
+# Input layout: [visual (100), proprioception (16), goal (100)], as in Figure 2; a run with
+# names (learning.names) appends the name's units after the goal.
 PROPRIO = slice(N_VISUAL, N_VISUAL + N_PROPRIO)
-CONTEXT = np.r_[0:N_VISUAL, N_VISUAL + N_PROPRIO : N_INPUT]  # the visual and goal inputs
+
+
+def context_columns(n_input: int) -> np.ndarray:
+    """The input columns a trial's context fills (every input but proprioception), for a network
+    of ``n_input`` inputs: the visual and goal inputs for the paper's 216."""
+    return np.r_[0:N_VISUAL, N_VISUAL + N_PROPRIO : n_input]
 
 
 @dataclass
@@ -39,9 +45,12 @@ class Weights:
     b2: np.ndarray  # (16,)
 
     @classmethod
-    def init(cls, hidden: int, scale: float, rng: np.random.Generator) -> Weights:
+    def init(
+        cls, hidden: int, scale: float, rng: np.random.Generator, n_input: int = N_INPUT
+    ) -> Weights:
+        """Uniform in +- ``scale``; ``n_input`` inputs (more than the paper's 216 with names)."""
         return cls(
-            W1=rng.uniform(-scale, scale, (hidden, N_INPUT)),
+            W1=rng.uniform(-scale, scale, (hidden, n_input)),
             b1=rng.uniform(-scale, scale, hidden),
             W2=rng.uniform(-scale, scale, (N_OUTPUT, hidden)),
             b2=rng.uniform(-scale, scale, N_OUTPUT),
@@ -108,7 +117,7 @@ class TrainingState:
         unique = np.ascontiguousarray(unique)
         hidden = weights.W1.shape[0]
         arrays = {
-            "W1cT": np.ascontiguousarray(weights.W1[:, CONTEXT].T),
+            "W1cT": np.ascontiguousarray(weights.W1[:, context_columns(weights.W1.shape[1])].T),
             "W1pT": np.ascontiguousarray(weights.W1[:, PROPRIO].T),
             "b1": weights.b1.copy(),
             "W2T": np.ascontiguousarray(weights.W2.T),
@@ -154,8 +163,9 @@ class TrainingState:
             a["lr_h"], a["d_out"],
         )  # fmt: skip
         hidden = a["b1"].shape[0]
-        W1 = np.empty((hidden, N_INPUT))
-        W1[:, CONTEXT] = a["W1cT"].T
+        n_input = N_PROPRIO + a["W1cT"].shape[0]
+        W1 = np.empty((hidden, n_input))
+        W1[:, context_columns(n_input)] = a["W1cT"].T
         W1[:, PROPRIO] = a["W1pT"].T
         return Weights(W1, a["b1"], np.ascontiguousarray(a["W2T"].T), a["b2"])
 

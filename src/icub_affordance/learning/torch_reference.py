@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import torch
 
-from icub_affordance.learning.network import N_INPUT, N_OUTPUT, N_VISUAL, Weights
+from icub_affordance.learning.network import N_OUTPUT, N_VISUAL, Weights
 
 
 class JordanNet(torch.nn.Module):
@@ -20,7 +20,9 @@ class JordanNet(torch.nn.Module):
     def __init__(self, weights: Weights) -> None:
         super().__init__()
         hidden = weights.W1.shape[0]
-        self.hidden = torch.nn.Linear(N_INPUT, hidden).double()
+        self.hidden = torch.nn.Linear(
+            weights.W1.shape[1], hidden
+        ).double()  # 216, or more with names
         self.motor = torch.nn.Linear(hidden, N_OUTPUT).double()
         with torch.no_grad():
             self.hidden.weight.copy_(torch.from_numpy(weights.W1))

@@ -17,8 +17,10 @@ from typing import ClassVar
 import numpy as np
 
 from icub_affordance.learning.materials import Materials
+from icub_affordance.learning.names import NamesConfig, form_schedule
 from icub_affordance.learning.network import (
     N_GOAL,
+    N_INPUT,
     N_VISUAL,
     TrainingState,
     Weights,
@@ -29,6 +31,7 @@ from icub_affordance.vocabulary import (
     AFTER_PHASE1,
     CATEGORISATION,
     CUES,
+    FORMS,
     GRASPING,
     MAPPINGS,
     OBJECTS,
@@ -51,6 +54,7 @@ class TrainConfig:
     target: str  # one of TARGETS: what the motor outputs learn
     learning_rate_schedule: str = "constant"  # one of SCHEDULES
     curve_rows: int = 0  # the learning curve's rows at most (every k-th iteration); 0: all
+    names: NamesConfig | None = None  # config ``names``: None, the paper's model without names
 
     def __post_init__(self) -> None:
         if self.target not in TARGETS:
@@ -83,19 +87,28 @@ def target_grip(obj: str, task: int, mapping: str) -> str:
 
 
 def context(m: Materials, obj: int, task: int, cue: str) -> np.ndarray:
-    """Visual and goal input at each of the steps-1 transitions of a trial: (steps-1, 200).
+    """Visual and goal input at each of the steps-1 transitions of a trial: (steps-1, 200), and
+    the name's units after them where names reach the network (``Materials.names``).
 
     In a categorisation trial the Task map shows the categorisation pattern at the first step
     only (cue "first_step"), then the grasping pattern again; with cue "all_steps" it stays on. Both
     are readings of the paper (book/notes.md, "The network and its training"), run side by side.
     """
+    if m.goal_forms is not None:
+        raise ValueError(
+            "a run with names shows its objects in forms: choose what a trial shows "
+            "(Materials.shown) before building its input"
+        )
     steps = m.demos.shape[3] - 1
-    ctx = np.empty((steps, N_VISUAL + N_GOAL))
+    goal = slice(N_VISUAL, N_VISUAL + N_GOAL)
+    ctx = np.empty((steps, goal.stop + (0 if m.names is None else m.names.shape[1])))
     ctx[:, :N_VISUAL] = m.visual[obj]
-    ctx[:, N_VISUAL:] = m.goal[obj, GRASPING]
+    ctx[:, goal] = m.goal[obj, GRASPING]
     if task == CATEGORISATION:
         cued = slice(0, 1) if cue == "first_step" else slice(0, steps)
-        ctx[cued, N_VISUAL:] = m.goal[obj, CATEGORISATION]
+        ctx[cued, goal] = m.goal[obj, CATEGORISATION]
+    if m.names is not None:
+        ctx[:, goal.stop :] = m.names[obj]
     return ctx
 
 
@@ -173,8 +186,12 @@ def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> st
     settings = dataclasses.asdict(config)
     for after in AFTER_PHASE1:
         settings.pop(after)
+    if config.names is None:
+        settings.pop("names")  # the paper's model: the key it always had
     digest = hashlib.sha256()
-    for array in (m.visual, m.goal, m.demos, m.targets(config.target)):
+    arrays = [m.visual, m.goal, m.demos, m.targets(config.target)]
+    arrays += [a for a in (m.names, m.goal_forms) if a is not None]
+    for array in arrays:
         digest.update(np.ascontiguousarray(array, dtype=np.float64).tobytes())
     what = settings | {"mapping": mapping, "seed": seed, "materials": digest.hexdigest()}
     return json.dumps(what, sort_keys=True)
@@ -182,44 +199,65 @@ def phase1_key(m: Materials, config: TrainConfig, mapping: str, seed: int) -> st
 
 @dataclass(frozen=True)
 class _Training:
-    """A network's training, laid out: initial weights, schedule, inputs and rates."""
+    """A network's training, laid out: initial weights, schedule, inputs and rates.
+
+    The learning rule sees presentations, an object shown in a form (vocabulary.FORMS): form f
+    of object o is presentation f * objects + o, and ``schedule`` names presentations; without
+    names there is one form, the image, and a presentation is its object. ``objects`` and
+    ``forms`` (None without names): what each iteration shows, for the learning curve."""
 
     weights: Weights
     schedule: tuple[np.ndarray, np.ndarray, np.ndarray]
-    contexts: np.ndarray
-    grips: np.ndarray
+    contexts: np.ndarray  # (presentations, tasks, steps-1, context)
+    grips: np.ndarray  # (presentations, tasks)
+    demos: np.ndarray  # (presentations, grips, sequences, steps, 16)
     targets: np.ndarray | None
     rates: np.ndarray
+    objects: np.ndarray
+    forms: np.ndarray | None
 
 
 def _training(m: Materials, config: TrainConfig, mapping: str, seed: int) -> _Training:
     rng = np.random.default_rng(seed)
-    weights = Weights.init(config.hidden, config.init_scale, rng)
+    n_input = N_INPUT + (0 if m.names is None else m.names.shape[1])
+    weights = Weights.init(config.hidden, config.init_scale, rng, n_input)
     tasks, objects, sequences = schedule(config, len(m.objects), m.n_train_sequences, rng)
+    forms, shown = None, [m]
+    if config.names is not None:
+        forms = form_schedule(config.names, config.phase1_iterations, config.iterations, rng)
+        shown = [m.shown(form) for form in FORMS]
     n_objects, n_tasks = len(m.objects), len(TASKS)
     contexts = np.array(
         [
-            [context(m, o, k, config.categorisation_cue) for k in range(n_tasks)]
+            [context(view, o, k, config.categorisation_cue) for k in range(n_tasks)]
+            for view in shown
             for o in range(n_objects)
         ]
     )
     grips = np.array(
         [
             [m.grips.index(target_grip(m.objects[o], k, mapping)) for k in range(n_tasks)]
+            for _ in shown
             for o in range(n_objects)
         ]
     )
     targets = None if config.target == "sensed" else m.targets(config.target)
+    demos = m.demos
+    if forms is not None:  # every form of an object shows its demonstrations
+        demos = np.concatenate([m.demos] * len(shown))
+        targets = None if targets is None else np.concatenate([targets] * len(shown))
+    presentations = objects if forms is None else forms * n_objects + objects
     return _Training(
-        weights, (tasks, objects, sequences), contexts, grips, targets, learning_rates(config)
-    )
+        weights, (tasks, presentations, sequences), contexts, grips, demos, targets,
+        learning_rates(config), objects, forms,
+    )  # fmt: skip
 
 
 def _train_part(m: Materials, state: TrainingState, training: _Training, begin: int, end: int):
     """Train ``state`` on, over iterations begin..end-1; their RMSE."""
     part = tuple(a[begin:end] for a in training.schedule)
     return state.train(
-        training.rates[begin:end], training.contexts, m.demos, training.grips, part,
+        training.rates[begin:end], training.contexts, training.demos, training.grips, part,
         training.targets,
     )  # fmt: skip
 
@@ -261,16 +299,19 @@ def train_network(
 
 def _curve(config: TrainConfig, training: _Training, rmse: np.ndarray) -> dict[str, np.ndarray]:
     """The learning curve's rows (:func:`curve_every`) from every iteration's RMSE."""
-    tasks, objects, sequences = training.schedule
+    tasks, _, sequences = training.schedule
     kept = np.arange(curve_every(config) - 1, config.iterations, curve_every(config))
-    return {
+    curve = {
         "iteration": kept + 1,
         "phase": np.where(kept < config.phase1_iterations, 1, 2),
         "task": tasks[kept],
-        "object": objects[kept],
+        "object": training.objects[kept],
         "sequence": sequences[kept],
         "rmse": rmse[kept],
     }
+    if training.forms is not None:
+        curve["form"] = training.forms[kept]
+    return curve
 
 
 def _train_parts_together(
@@ -282,7 +323,7 @@ def _train_parts_together(
         states,
         [t.rates[begin:end] for t in trainings],
         trainings[0].contexts,
-        m.demos,
+        trainings[0].demos,
         [t.grips for t in trainings],
         [tuple(a[begin:end] for a in t.schedule) for t in trainings],
         trainings[0].targets,

@@ -56,7 +56,10 @@ class TrialSet:
     targets: np.ndarray  # (trials, steps, 16) what the outputs are compared with (network.target)
 
     @classmethod
-    def of(cls, m: Materials, mapping: str, cue: str, target: str) -> TrialSet:
+    def of(cls, m: Materials, mapping: str, cue: str, target: str, form: str = "image") -> TrialSet:
+        """Every trial, showing ``form`` of its object (vocabulary.FORMS): the image, as the
+        paper's tests do, unless asked; a run without names shows nothing else."""
+        m = m.shown(form)
         n_seq = m.demos.shape[2]
         trials = [
             (task, o, s)
