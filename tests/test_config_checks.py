@@ -58,6 +58,15 @@ def test_the_default_and_the_test_config_pass():
             ),
             ["names.training.phase1", "every weight is 0", "Fix"],
         ),
+        # the words study's replications not fresh, or counted twice
+        (
+            lambda c: c["words"].update(seeds=[101, 141]),
+            ["words.seeds", "[101]", "confirmation.seeds", "fresh", "Fix"],
+        ),
+        (
+            lambda c: c["words"].update(robustness_seeds=[150, 151]),
+            ["words.robustness_seeds", "[150]", "words.seeds too", "Fix"],
+        ),
         # the window outside the image, or not a multiple of the grid
         (
             lambda c: c["vision"].update(window=300),
@@ -291,6 +300,20 @@ def test_a_confirmed_variant_of_the_grid_need_not_be_tested_in_the_default_build
         check_config(config)
     assert "robot.confirmation.variants[0]" in str(info.value)
     assert "robot.animation.variant" not in str(info.value)
+
+
+def test_the_declared_words_study_is_fresh_and_has_ten_replications():
+    """The words study's seeds (declared before any result with names) are at least ten, and no
+    other run of either scale's plan is made at any of them."""
+    from icub_workflow.runs import plan_runs
+
+    config = load_config()
+    words = config["words"]
+    assert len(words["seeds"]) >= 10
+    for robustness in (False, True):
+        plan = plan_runs(config | {"robustness": robustness})
+        used = {run.config["seed"] for run in plan.runs.values()}
+        assert not used & set(words["seeds"] + words["robustness_seeds"])
 
 
 def test_the_default_confirmation_is_fresh_and_large_enough():

@@ -435,10 +435,41 @@ def check_config(config: Mapping[str, Any], prefix: str = "") -> None:
     problems = list(_problems(config, prefix))
     if not prefix:
         problems += _backed_problems(config, lambda name: f"config key {name}")
+        problems += _words_problems(config, lambda name: f"config key {name}")
     if len(problems) == 1:
         raise ConfigError(problems[0])
     if problems:
         raise ConfigError(f"{len(problems)} problems:\n  - " + "\n  - ".join(problems))
+
+
+def _words_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """The words study's replications must be fresh, seeds no other study of the build runs
+    (a test over them would otherwise rest on models other choices were made on), and its
+    runs, which turn names on, must be able to train with the config's names."""
+    words = config["words"]
+    others = {
+        "seed": [config["seed"]],
+        "confirmation.seeds": config["confirmation"]["seeds"],
+        "confirmation.robustness_seeds": config["confirmation"]["robustness_seeds"],
+        "size_dose.crossed.seeds": config["size_dose"]["crossed"]["seeds"],
+        "sweep.seeds": config["sweep"]["seeds"],
+    }
+    for name in ("seeds", "robustness_seeds"):
+        for other, seeds in others.items():
+            shared = sorted(set(words[name]) & set(seeds))
+            if shared:
+                yield (
+                    f"{key(f'words.{name}')}: {shared} also seeds {other}; the words study's "
+                    "replications must be fresh. Fix: choose seeds no other study runs."
+                )
+    both = sorted(set(words["seeds"]) & set(words["robustness_seeds"]))
+    if both:
+        yield (
+            f"{key('words.robustness_seeds')}: {both} is in words.seeds too. Fix: drop it from "
+            "one of them."
+        )
+    if not config["names"]["use"]:  # the study turns names on: its shares must split phases
+        yield from _names_problems(merged(config, {"names": {"use": True}}), key)
 
 
 def _backed_problems(config: Mapping[str, Any], key) -> Iterator[str]:
