@@ -158,3 +158,28 @@ def test_names_off_leave_every_bit_as_it_was_before_names():
     """Turned off (the paper's model), names change nothing: the networks and the maps are the
     bits the code made before names existed (the build's own check: `snakemake -c2 verify`)."""
     assert _paper_digest(load_config()["names"]) == BEFORE_NAMES
+
+
+def test_a_network_with_names_is_tested_in_every_form():
+    """Each test trial once per form, scored as the paper's trials are on what the form shows;
+    and each form's hidden state at the first step, the network's own step on that input."""
+    from icub_affordance.learning.network import network_step
+    from icub_affordance.trials.forms import form_states, measure_forms
+    from icub_affordance.trials.in_silico import TrialSet
+    from icub_affordance.trials.scores import measure_network
+
+    m = synthetic_materials(units_per_name=10)
+    config = train_config(iterations=600, phase1_iterations=300, names=names_on())
+    weights, _ = train_network(m, config, "A", seed=3)
+    rows = measure_forms(m, weights, 0, "A", "first_step", "sensed")
+    n = len(rows) // len(FORMS)
+    assert [row["form"] for row in rows] == [form for form in FORMS for _ in range(n)]
+    name_rows = measure_network(m.shown("name"), weights, 0, "A", "first_step", "sensed")
+    assert [r | {"form": "name"} for r in name_rows] == rows[n : 2 * n]
+    assert [r["rmse"] for r in rows[:n]] != [r["rmse"] for r in rows[n : 2 * n]]
+    trials, states = form_states(m, weights, "A", "first_step", "sensed", 1)
+    for form in FORMS:
+        setup = TrialSet.of(m, "A", "first_step", "sensed", form)
+        _, hidden = network_step(weights, setup.context[:, 0], setup.teacher[:, 0])
+        np.testing.assert_array_equal(states[form], hidden)
+    assert trials == setup.trials and states["name"].shape == (len(trials), 10)

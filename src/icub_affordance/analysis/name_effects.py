@@ -1,0 +1,188 @@
+"""Names against images over fresh replications (config ``words``, declared before any result):
+the declared family of tests, and whether a name re-activates its object's hidden state.
+
+Each replication (the whole model at one seed, names on, one cue timing) gives one estimate per
+test mode, measure, form and effect: its networks' contrast on the trials showing that form
+(``reading_tests.analyse_measures``, the estimator every chapter uses; for the correct-trial RMSE
+the within-network fit). A declared test is over the replications, as the confirmation's
+(``paper_claims``): a one-sample t (df = replications - 1) for the name-alone congruency and size
+effects; for the name's equivalence with the image, each replication's difference (the name's
+congruency effect minus the image's, on its own networks) held within the declared margin by two
+one-sided t's. Holm over the whole family. A replication whose estimate is undefined is left out
+of that test and counted; a test on fewer than ``min_replications`` has no p.
+
+The reactivation (config ``words.reactivation``), a family of its own: at a declared step every
+trial starts from the same posture, so a hidden state there reflects what the trial shows. For
+each network the mean over tasks and objects of (the distance of the name's state to the other
+objects' image states, averaged) minus (its distance to its own object's image state).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from icub_affordance.analysis.paper_claims import direction
+from icub_affordance.analysis.replicated import over_replications
+from icub_affordance.analysis.statistics import equivalence, holm
+from icub_affordance.outcome import Outcome
+from icub_affordance.vocabulary import FORMS
+
+#: The families' names wherever their tests appear.
+FAMILY = "confirmatory: names against images over fresh replications"
+FAMILY_REACTIVATION = "declared: a name's hidden state against its object's image's"
+
+#: What a declared test is made of, in the order of its table's columns.
+TEST_KEYS: tuple[str, ...] = ("cue", "mode", "measure", "test")
+
+#: The effects each form is estimated on; positive is the paper's direction.
+EFFECTS: tuple[str, ...] = ("congruency", "size")
+
+#: Each declared test: the form and effect it reads, and whether it compares it with the image's.
+TESTS: dict[str, tuple[str, str]] = {
+    "congruency": ("name", "congruency"),
+    "size": ("name", "size"),
+    "equivalence": ("name", "congruency"),  # minus the image's, within the margin
+}
+
+#: The columns of a test's row after ``TEST_KEYS``.
+SUMMARY_COLUMNS: tuple[str, ...] = (
+    "replications", "estimable", "not_estimable", "estimate", "se", "ci_low", "ci_high", "t",
+    "df", "p", "margin", "p_difference", "family", "p_holm", "family_size", "direction",
+)  # fmt: skip
+
+
+def declared_tests(declaration: Mapping[str, Any]) -> list[dict[str, str]]:
+    """Every test of the family: each cue timing x test mode x measure x test the declaration
+    lists (config ``words``), in that order."""
+    lists = [declaration[key] for key in ("cues", "modes", "measures", "tests")]
+    return [dict(zip(TEST_KEYS, combo, strict=True)) for combo in itertools.product(*lists)]
+
+
+def replication_estimates(
+    rows: Sequence[Mapping[str, Any]],
+    analyses: Sequence[Mapping[str, Any]],
+    declaration: Mapping[str, Any],
+) -> pd.DataFrame:
+    """One row per replication, test mode, measure, form and effect: its estimate (NaN where
+    undefined), from each replication's analyses by form (``analyses``, in the order of
+    ``rows``: cue, seed, run; each ``{form: reading_tests.analyse_measures(...)}``)."""
+    out = []
+    for row, by_form in zip(rows, analyses, strict=True):
+        for mode, measure, form, effect in itertools.product(
+            declaration["modes"], declaration["measures"], FORMS, EFFECTS
+        ):
+            term = by_form[form][mode][measure]["contrasts"][effect]
+            out.append(
+                {"cue": row["cue"], "seed": row["seed"], "run": row["run"], "mode": mode}
+                | {"measure": measure, "form": form, "effect": effect}
+                | {"estimate": float(term.get("estimate", np.nan))}
+            )
+    return pd.DataFrame(out)
+
+
+def _per_seed(estimates: pd.DataFrame, cue: str, mode: str, measure: str, form: str,
+              effect: str) -> pd.Series:  # fmt: skip
+    """The replications' estimates of one form and effect, by seed."""
+    keys = {"cue": cue, "mode": mode, "measure": measure, "form": form, "effect": effect}
+    mask = np.logical_and.reduce([estimates[k] == v for k, v in keys.items()])
+    return estimates[mask].set_index("seed")["estimate"].astype(float)
+
+
+def word_tests(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
+    """Each declared test over the replications (``SUMMARY_COLUMNS``), Holm over the family.
+    ``direction``: for the name-alone effects, the paper's direction, against it, or neither
+    (``paper_claims.direction``); for equivalence, ``PAPER`` when the difference is shown
+    within the margin, else ``NONE`` (the difference's own t, ``p_difference``, is beside it,
+    unadjusted: exploration)."""
+    alpha, least = float(declaration["alpha"]), int(declaration["min_replications"])
+    rows = []
+    for test in declared_tests(declaration):
+        form, effect = TESTS[test["test"]]
+        cell = (test["cue"], test["mode"], test["measure"])
+        values = _per_seed(estimates, *cell, form, effect)
+        margin, p_difference = np.nan, np.nan
+        if test["test"] == "equivalence":
+            values = values - _per_seed(estimates, *cell, "image", effect)
+        defined = values.to_numpy()[np.isfinite(values.to_numpy())]
+        term = over_replications(defined, least)
+        p = term["p"]
+        if test["test"] == "equivalence":
+            margin = float(declaration["margin"][test["measure"]])
+            p_difference, p = p, equivalence(term, margin)["p"]
+        rows.append(
+            test
+            | {"replications": len(values), "estimable": len(defined)}
+            | {"not_estimable": len(values) - len(defined)}
+            | {k: term[k] for k in ("estimate", "se", "ci_low", "ci_high", "t", "df")}
+            | {"p": p, "margin": margin, "p_difference": p_difference}
+        )
+    table = pd.DataFrame(rows)
+    table["family"] = FAMILY
+    table["p_holm"] = holm(table["p"].to_numpy(dtype=float))
+    table["family_size"] = int(np.isfinite(table["p"].to_numpy(dtype=float)).sum())
+    table["direction"] = [
+        _equivalent(p, alpha) if kind == "equivalence" else direction(e, p, alpha)
+        for kind, e, p in zip(table["test"], table["estimate"], table["p_holm"], strict=True)
+    ]
+    return table[[*TEST_KEYS, *SUMMARY_COLUMNS]]
+
+
+def _equivalent(p_holm: float, alpha: float) -> Outcome:
+    """An equivalence test's ``Outcome``: ``PAPER`` (within the margin: the names' effect as
+    the images', Tucker & Ellis 2004) when its adjusted p is below alpha, else ``NONE``."""
+    if not np.isfinite(p_holm):
+        return Outcome.NOT_ASSESSABLE
+    return Outcome.PAPER if p_holm < alpha else Outcome.NONE
+
+
+def reactivation(
+    trials: Sequence[tuple[int, int, int]], name: np.ndarray, image: np.ndarray
+) -> float:
+    """One network's contrast (module docstring): ``trials`` (task, object, sequence) and the
+    hidden states (trials, hidden) with the name alone and with the image alone. States of one
+    task and object are averaged over sequences first."""
+    trials = np.asarray(trials)
+    contrasts = []
+    for task in np.unique(trials[:, 0]):
+        objects = np.unique(trials[:, 1])
+        means = [
+            [states[(trials[:, 0] == task) & (trials[:, 1] == o)].mean(axis=0) for o in objects]
+            for states in (name, image)
+        ]
+        distances = np.linalg.norm(
+            np.asarray(means[0])[:, None] - np.asarray(means[1])[None], axis=-1
+        )  # (name's object, image's object)
+        own = np.diag(distances)
+        others = (distances.sum(axis=1) - own) / (len(objects) - 1)
+        contrasts.append(float(np.mean(others - own)))
+    return float(np.mean(contrasts))
+
+
+def reactivation_tests(contrasts: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
+    """Per cue timing: each replication's estimate the mean of its networks' contrasts
+    (``contrasts``: cue, seed, network, contrast), a one-sample t over the replications, Holm
+    over the cue timings at ``reactivation.alpha``; direction positive (the name nearer its
+    own object's image)."""
+    alpha = float(declaration["reactivation"]["alpha"])
+    least = int(declaration["min_replications"])
+    rows = []
+    for cue in declaration["cues"]:
+        per_seed = contrasts[contrasts["cue"] == cue].groupby("seed")["contrast"].mean()
+        defined = per_seed.to_numpy()[np.isfinite(per_seed.to_numpy())]
+        term = over_replications(defined, least)
+        rows.append(
+            {"cue": cue, "replications": len(per_seed), "estimable": len(defined)}
+            | {k: term[k] for k in ("estimate", "se", "ci_low", "ci_high", "t", "df", "p")}
+        )
+    table = pd.DataFrame(rows)
+    table["family"] = FAMILY_REACTIVATION
+    table["p_holm"] = holm(table["p"].to_numpy(dtype=float))
+    table["direction"] = [
+        direction(e, p, alpha) for e, p in zip(table["estimate"], table["p_holm"], strict=True)
+    ]
+    return table

@@ -1,0 +1,151 @@
+"""The words study's declared tests (analysis.name_effects), recomputed independently: the t's
+over replications, the two one-sided t's of the name's equivalence with the image, Holm over the
+family, and the reactivation contrast from hidden states."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pandas as pd
+import pytest
+from conftest import load_config
+from scipy import stats
+
+from icub_affordance.analysis.name_effects import (
+    declared_tests,
+    reactivation,
+    reactivation_tests,
+    word_tests,
+)
+from icub_affordance.outcome import Outcome
+from icub_affordance.vocabulary import FORMS
+
+SEEDS = list(range(141, 151))
+
+
+def estimates_of(effects) -> pd.DataFrame:
+    """A table of replication estimates: ``effects(form, effect, rng)`` draws each seed's."""
+    declaration = load_config()["words"]
+    rng = np.random.default_rng(0)
+    rows = []
+    for cue, mode, measure, form, effect in itertools.product(
+        declaration["cues"], declaration["modes"], declaration["measures"], FORMS,
+        ("congruency", "size"),
+    ):  # fmt: skip
+        values = effects(form, effect, rng)
+        for seed, value in zip(SEEDS, values, strict=True):
+            rows.append({"cue": cue, "seed": seed, "run": f"r{seed}", "mode": mode,
+                         "measure": measure, "form": form, "effect": effect,
+                         "estimate": value})  # fmt: skip
+    return pd.DataFrame(rows)
+
+
+def test_the_family_is_every_declared_combination():
+    declaration = load_config()["words"]
+    tests = declared_tests(declaration)
+    assert len(tests) == 2 * 2 * 2 * 3 == len({tuple(t.values()) for t in tests})
+
+
+def test_names_tests_recomputed():
+    """Names' congruency effect clearly positive and as large as the image's; size none."""
+    declaration = load_config()["words"]
+
+    def effects(form, effect, rng):
+        if effect == "size":
+            return rng.normal(0, 0.01, len(SEEDS))
+        return 0.03 + rng.normal(0, 0.002, len(SEEDS))
+
+    estimates = estimates_of(effects)
+    table = word_tests(estimates, declaration)
+    assert len(table) == 24 and (table["family_size"] == 24).all()
+    # every p recomputed by scipy, then Holm by hand
+    ps = []
+    for row in table.itertuples():
+
+        def values(form, effect, row=row):
+            keys = {"cue": row.cue, "mode": row.mode, "measure": row.measure, "form": form,
+                    "effect": effect}  # fmt: skip
+            mask = np.logical_and.reduce([estimates[k] == v for k, v in keys.items()])
+            return estimates[mask].sort_values("seed")["estimate"].to_numpy()
+
+        if row.test == "equivalence":
+            diff = values("name", "congruency") - values("image", "congruency")
+            margin = declaration["margin"][row.measure]
+            lower = stats.ttest_1samp(diff, -margin, alternative="greater").pvalue
+            upper = stats.ttest_1samp(diff, margin, alternative="less").pvalue
+            p = max(lower, upper)
+            assert row.p_difference == pytest.approx(stats.ttest_1samp(diff, 0).pvalue)
+        else:
+            p = stats.ttest_1samp(values("name", row.test), 0).pvalue
+        assert row.p == pytest.approx(p, rel=1e-9)
+        ps.append(p)
+    order = np.argsort(ps)
+    holm = np.maximum.accumulate([ps[i] * (24 - k) for k, i in enumerate(order)])
+    expected = np.empty(24)
+    expected[order] = np.minimum(holm, 1)
+    np.testing.assert_allclose(table["p_holm"], expected, rtol=1e-12)
+    verdicts = table.groupby("test")["direction"].agg(set)
+    assert verdicts["congruency"] == {Outcome.PAPER}
+    assert verdicts["equivalence"] == {Outcome.PAPER}
+    assert Outcome.PAPER not in verdicts["size"]
+
+
+def test_a_names_effect_far_from_the_images_is_not_equivalent():
+    declaration = load_config()["words"]
+
+    def effects(form, effect, rng):
+        base = 0.05 if form == "image" else 0.0
+        return base + rng.normal(0, 0.002, len(SEEDS))
+
+    table = word_tests(estimates_of(effects), declaration)
+    rmse = table[(table["test"] == "equivalence") & (table["measure"] == "rmse_correct")]
+    assert (rmse["direction"] == Outcome.NONE).all()
+    assert (rmse["p_difference"] < 1e-6).all()
+
+
+def test_an_undefined_replication_is_left_out_and_counted():
+    declaration = load_config()["words"]
+    estimates = estimates_of(lambda form, effect, rng: 0.02 + rng.normal(0, 0.01, len(SEEDS)))
+    estimates.loc[estimates["seed"] == 141, "estimate"] = np.nan
+    table = word_tests(estimates, declaration)
+    assert (table["estimable"] == 9).all() and (table["not_estimable"] == 1).all()
+
+
+def test_the_reactivation_contrast():
+    """A name whose state is its object's image's: the mean distance to the other images; a name
+    whose state is the same for every object: exactly 0; recomputed by loops."""
+    rng = np.random.default_rng(3)
+    trials = [(task, o, s) for task in range(2) for o in range(4) for s in range(5)]
+    image = rng.uniform(0, 1, (len(trials), 10))
+    assert reactivation(trials, image, image) > 0
+    same = np.tile(rng.uniform(0, 1, 10), (len(trials), 1))
+    assert reactivation(trials, same, image) == pytest.approx(0, abs=1e-12)
+    name = rng.uniform(0, 1, (len(trials), 10))
+    expected = []
+    for task in range(2):
+
+        def mean(states, o, task=task):
+            return np.mean([states[i] for i, t in enumerate(trials) if t[:2] == (task, o)],
+                           axis=0)  # fmt: skip
+
+        for o in range(4):
+            own = np.linalg.norm(mean(name, o) - mean(image, o))
+            others = [np.linalg.norm(mean(name, o) - mean(image, q)) for q in range(4) if q != o]
+            expected.append(np.mean(others) - own)
+    assert reactivation(trials, name, image) == pytest.approx(np.mean(expected), rel=1e-12)
+
+
+def test_the_reactivation_tests_are_per_cue_over_replications():
+    declaration = load_config()["words"]
+    rng = np.random.default_rng(4)
+    rows = [
+        {"cue": cue, "seed": seed, "network": net, "contrast": rng.normal(0.1, 0.05)}
+        for cue in declaration["cues"] for seed in SEEDS for net in range(12)
+    ]  # fmt: skip
+    contrasts = pd.DataFrame(rows)
+    table = reactivation_tests(contrasts, declaration)
+    for row in table.itertuples():
+        per_seed = contrasts[contrasts["cue"] == row.cue].groupby("seed")["contrast"].mean()
+        assert row.p == pytest.approx(stats.ttest_1samp(per_seed, 0).pvalue, rel=1e-9)
+    assert (table["direction"] == Outcome.PAPER).all()
