@@ -62,6 +62,13 @@ def test_through_the_object_map_every_name_lights_a_cluster_of_one_width():
     assert len({active_units(act) for act in maps.object_act}) > 1  # the images' differ
     # the image form is the map's response to the image alone
     np.testing.assert_array_equal(maps.object_act, maps.object_act_forms[FORMS.index("image")])
+    # the Task map knows nothing of names: its patterns and response are the paper's model's
+    without = train_soms(
+        m.visual.reshape(4, 10, 10), som_config(iterations=300, keep_whole=True), 5
+    )
+    np.testing.assert_array_equal(maps.task_patterns, without.task_patterns)
+    np.testing.assert_array_equal(maps.task_act, without.task_act)
+    np.testing.assert_array_equal(maps.name_patterns, name_patterns(4, 10))
 
 
 def test_each_form_shows_what_it_says():

@@ -181,10 +181,10 @@ def train_soms(
     n_obj, n_task = len(object_act), len(task_act)
     extra = {}
     if names is not None:
-        patterns = name_patterns(n_obj, names.units_per_name)
+        spoken = name_patterns(n_obj, names.units_per_name)
         extra = {
-            "name_patterns": patterns,
-            "name_input": patterns if "network" in names.routes else patterns[:, :0],
+            "name_patterns": spoken,
+            "name_input": spoken if "network" in names.routes else spoken[:, :0],
             "object_act_forms": np.array([object_forms[f] for f in FORMS]),
             "goal_act_forms": np.array(
                 [[goal_activation(goal_som, g, config) for g in goal_forms[f]] for f in FORMS]
