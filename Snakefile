@@ -102,7 +102,10 @@ DEFAULT_TARGET = list(
         [
             *rules.book.output,
             *rules.manifest.output,
-            *(f for f in DEFAULT_OUTPUTS if f not in _READ or not os.path.exists(f)),
+            # a file in a measured group's folder: that folder (common.smk: measured_inputs)
+            *measured_inputs(
+                f for f in DEFAULT_OUTPUTS if f not in _READ or not os.path.exists(f)
+            ),
         ]
     )
 )

@@ -575,5 +575,5 @@ def test_the_headline_reads_the_declared_family_and_nothing_else(built, tmp_path
     fewer = load_test_config()["confirmation"] | {"measures": ["rmse"]}
     out = dry_run("data/claims/summary.csv", confirmation=fewer)
     assert re.search(r"rule claims:\n(?:    .*\n)*?    output: data/claims/replications\.csv", out)
-    assert "measured_" not in out and "rule train" not in out
+    assert "rule measured:" not in out and "rule train" not in out
     assert "Nothing to be done" in dry_run("data/eval/anova.json", confirmation=fewer)

@@ -745,19 +745,19 @@ def test_readings_reuse_runs_whose_settings_coincide(tmp_path, robustness):
     plan = plan_runs(load_config() | {"robustness": robustness})
     runs = {row["run"] for row in plan.readings}
     assert len(plan.readings) == n_readings * n_reps
-    # every replication measured by exactly one job: its seed's measured_seed<n> (with its
-    # training and maps), or rule measures for a run the book also tests in full
-    measured = [path for paths in made.values() for path in paths if path.endswith("measures.json")]
-    assert sorted(measured) == sorted(set(measured))
-    assert {plan.path(run, "eval/measures.json") for run in runs} <= set(measured)
+    # every replication measured by exactly one job: its seed's job of rule measured (with its
+    # training and maps, all in its group's folder: RunPlan.container), or rule measures for a
+    # run the book also tests in full
+    outputs = [path for paths in made.values() for path in paths]
+    assert sorted(outputs) == sorted(set(outputs))
+    assert {plan.container(plan.path(run, "eval/measures.json")) for run in runs} <= set(outputs)
     assert counts.get("measures", 0) + sum(
         run in runs for group in plan.measured_groups.values() for run in group
     ) == len(runs)
     # the Goal response changes the SOMs only: one set per seed and response, demos per seed
     # (whichever job makes them: rule soms, or a seed's measured job)
-    soms = {path for paths in made.values() for path in paths if path.endswith("soms/soms.npz")}
     readings_soms = {plan.path(plan.stage_run(run, "soms"), "soms/soms.npz") for run in runs}
-    assert readings_soms <= soms
+    assert {plan.container(path) for path in readings_soms} <= set(outputs)
     assert len(readings_soms) == n_reps * len(readings["goal_response"])
     assert counts["demos"] == n_reps  # a job per replication (its seed)
 
@@ -840,7 +840,9 @@ def test_paired_readings_share_each_networks_seed(built):
     other = {"first_step": "all_steps", "all_steps": "first_step"}[cue]
     groups = [[built / "data", built / "data" / "runs" / f"cue_{other}"]]
     for seed in yaml.safe_load(TEST_CONFIG.read_text())["confirmation"]["seeds"]:
-        groups.append(sorted((built / "data" / "runs").glob(f"reading_*_seed{seed}")))
+        # a seed's readings: trained in its group's folder (rule measured, RunPlan.path)
+        group = built / "data" / "measured" / f"seed{seed}"
+        groups.append(sorted(group.glob(f"reading_*_seed{seed}")))
     assert all(len(runs) >= 2 for runs in groups) and len(groups) >= 3
     networks = yaml.safe_load(TEST_CONFIG.read_text())["network"]["networks"]
     columns = ["iteration", "task", "object", "sequence"]

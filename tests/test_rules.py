@@ -31,7 +31,7 @@ def _rules(*config: str) -> set[str]:
 
 @pytest.mark.dryrun  # runs Snakemake (twice: the default config and the full scale)
 def test_docs_pipeline_names_every_rule_the_snakefile_defines():
-    # a rule made per group of runs is named as `measured_seed{n}`
+    # a name written with a wildcard (`name_{w}`) stands for every name it matches
     names = re.findall(r"`(\w+(?:\{\w+\}\w*)?)`", (REPO / "docs" / "pipeline.md").read_text())
     documented = [re.compile(re.sub(r"\\\{\w+\\\}", r"\\w+", re.escape(n))) for n in names]
     rules = _rules() | _rules("robustness=True")

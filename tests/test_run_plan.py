@@ -174,10 +174,28 @@ def test_the_readings_and_size_study_runs_are_measured_in_one_job_per_seed(plan,
     assert set(grouped) == expected
     for name, runs in groups.items():
         assert {f"seed{plan.config(run)['seed']}" for run in runs} == {name}
+        assert {plan.group(run) for run in runs} == {name}
     # the readings at the confirmation's seeds; the size study at its own seeds
     crossed = config["size_dose"]["crossed"]
     seeds = {*config["confirmation"]["seeds"], *crossed["seeds"][: crossed["replications"]]}
     assert set(groups) == {f"seed{seed}" for seed in seeds}
+
+
+def test_a_measured_runs_files_live_in_its_groups_folder(plan):
+    """Rule measured makes its group's folder whole: a measured run's SOMs, networks and
+    measures live in it (a rule that reads one names the folder, RunPlan.container); its other
+    files (demonstrations, size-free maps) in its own folder; any other run's where they were."""
+    for group, runs in plan.measured_groups.items():
+        for run in runs:
+            for relative in ("soms/soms.npz", "train/all/weights.npz", "eval/measures.json"):
+                path = plan.path(run, relative)
+                assert path == f"data/measured/{group}/{run}/{relative}"
+                assert plan.container(path) == f"data/measured/{group}"
+            demos = plan.path(run, "demos/demos.npz")
+            assert demos == f"data/runs/{run}/demos/demos.npz" and plan.container(demos) == demos
+    assert plan.group(MAIN) is None
+    assert plan.path(MAIN, "train/net00/weights.npz") == "data/train/net00/weights.npz"
+    assert plan.path(plan.ablation, "eval/measures.json").startswith("data/runs/")
 
 
 @pytest.mark.parametrize("robustness", [False, True])
@@ -474,8 +492,8 @@ def test_the_default_build_trains_the_own_networks_a_job_each_and_each_other_run
     # own seed's too; the SOMs of the config's own run alone by rule soms
     crossed = config["size_dose"]["crossed"]
     seeds = [*config["confirmation"]["seeds"], *crossed["seeds"][: crossed["replications"]]]
-    assert {r for r in counts if r.startswith("measured_")} == {f"measured_seed{s}" for s in seeds}
-    assert all(counts[f"measured_seed{s}"] == 1 for s in seeds)
+    assert counts["measured"] == len(set(seeds))  # rule measured: a job per seed's group
+    assert not [r for r in counts if r.startswith("measured_")]
     assert counts["demos"] == len({config["seed"], *seeds})
     assert counts["soms"] == 1 and counts["measures"] == 1  # the config's own: the book reads it
     assert counts["size_free_maps"] == int(config["size_dose"]["removal"])

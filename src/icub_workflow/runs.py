@@ -6,7 +6,7 @@ of config ``runs``, the cue ablation (the other cue timing), the sweep's points,
 replications, the robot test's variants and their confirmations. Each is the config with a few
 settings laid over it. :func:`plan_runs` names them, finds which of them are one and the same run
 (a reading at the config's own settings *is* the config's run), and records which earlier run's
-demonstrations and maps each one reuses. The rules ask the plan; only :meth:`RunPlan.folder`
+demonstrations and maps each one reuses. The rules ask the plan; only :meth:`RunPlan.path`
 knows where a run's files live.
 """
 
@@ -27,6 +27,10 @@ from icub_workflow.parts import part_names
 
 #: The config's own run: its name in the tables (column ``run``).
 MAIN = "main"
+
+#: A measured run's files that its seed's one job makes (rule ``measured``: the steps soms,
+#: train and measures), by their path in the run's folder: they live in the job's folder.
+MEASURED_FILES = ("soms/", "train/", "eval/measures.")
 
 #: What asked for a run (``Run.origin``), in words for a refusal.
 ORIGIN_WORDS = {"main": "config's own run", "configured": "run of config `runs`",
@@ -92,8 +96,36 @@ class RunPlan:
         return "" if self.runs[run].origin == "main" else f"runs/{run}/"
 
     def path(self, run: str, relative: str) -> str:
-        """A run's file: ``relative`` in its folder under ``data/``."""
+        """A run's file: ``relative`` in its folder under ``data/``; a measured run's files of
+        the steps its seed's job makes (``MEASURED_FILES``) in that job's folder instead
+        (``group_folder``: ``measured/seed<n>/{run}/``)."""
+        group = self.group(run)
+        if group is not None and relative.startswith(MEASURED_FILES):
+            return f"data/{self.group_folder(group)}{run}/{relative}"
         return f"data/{self.folder(run)}{relative}"
+
+    def group(self, run: str) -> str | None:
+        """The seed's group (``measured_groups``) whose one job trains and measures this run,
+        or None (the run's steps have their own rules)."""
+        run_config = self.runs[run]
+        if run_config.origin not in ("reading", "size_dose"):
+            return None
+        return f"seed{run_config.config['seed']}"
+
+    @staticmethod
+    def group_folder(group: str) -> str:
+        """The folder under ``data/`` that a measured group's job makes whole (rule
+        ``measured``'s one output, a directory): each of its runs' files in ``{run}/``."""
+        return f"measured/{group}/"
+
+    def container(self, path: str) -> str:
+        """What a rule names to read ``path``: the file, or, for a file that a measured
+        group's job makes, that job's folder (an input cannot name a file inside a folder
+        that another rule makes whole)."""
+        prefix = "data/measured/"
+        if path.startswith(prefix):
+            return prefix + path[len(prefix) :].split("/", 1)[0]
+        return path
 
     def run_in(self, folder: str) -> str:
         """The run whose folder is ``folder`` (the inverse of :meth:`folder`)."""
@@ -174,7 +206,7 @@ class RunPlan:
         """
         if step not in ("soms", "train", "measures", "robot_test"):
             raise ValueError(f"no rule is named for the step {step!r}")
-        measured = self.runs[run].origin in ("reading", "size_dose")
+        measured = self.group(run) is not None
         return "measured" if measured and step != "robot_test" else step
 
     def served_by(self, rule: str, step: str) -> list[str]:
@@ -279,9 +311,10 @@ class RunPlan:
         and the size study's own runs), grouped by seed (``seed<n>``): one process trains and
         measures a group, so a dozen short runs pay one start-up."""
         groups: dict[str, list[str]] = {}
-        for name, run in self.runs.items():
-            if run.origin in ("reading", "size_dose"):
-                groups.setdefault(f"seed{run.config['seed']}", []).append(name)
+        for name in self.runs:
+            group = self.group(name)
+            if group is not None:
+                groups.setdefault(group, []).append(name)
         return groups
 
     # ---- what the default target makes (the rules and the tests read it here) ------------------
@@ -337,17 +370,18 @@ class RunPlan:
     def job_counts(self) -> dict[str, int]:
         """How many jobs each rule that serves runs has in the default target, from the plan
         alone: a job per step of each built run, per part for the networks and the robot test
-        (``parts``), and one per seed for the measured runs (``measured_groups``: their rule
-        ``measured_seed<n>``). The tests hold a dry run's job stats to these numbers."""
+        (``parts``), and one per seed for the measured runs (``measured_groups``: rule
+        ``measured``, a job per group). The tests hold a dry run's job stats to these numbers."""
         counts: dict[str, int] = {}
-        groups = {run: group for group, runs in self.measured_groups.items() for run in runs}
+        groups: set[str] = set()
         for run in self.built():
             for step in self.built_steps(run):
                 rule = step
                 if step in ("soms", "train", "measures", "robot_test"):
                     rule = self.rule_for(run, step)
                 if rule == "measured":
-                    counts[f"measured_{groups[run]}"] = 1
+                    groups.add(str(self.group(run)))
+                    counts["measured"] = len(groups)
                     continue
                 jobs = len(self.parts(run, step)) if step in ("train", "robot_test") else 1
                 counts[rule] = counts.get(rule, 0) + jobs

@@ -164,7 +164,8 @@ rule other_scale:
 rule findings:
     """Every number, verdict, sentence and table the book shows, from the run's outputs."""
     input:
-        data=[BOOK_DATA[name] for name in FINDINGS_READS],
+        # a file in a measured group's folder: the folder (common.smk: measured_inputs)
+        data=measured_inputs(BOOK_DATA[name] for name in FINDINGS_READS),
         # what the other scale would train and test (the reproduce page)
         other_scale=rules.other_scale.output[0],
         # the sweep's jobs' benchmark files (none without robustness): its cost
@@ -181,6 +182,7 @@ rule findings:
         # what this build trains and tests (the reproduce page; the other scale's: other_scale)
         scale=PLAN.scale(),
         names=FINDINGS_READS,
+        data=[BOOK_DATA[name] for name in FINDINGS_READS],  # the files, by name
         sweep_jobs=sweep_job_records,
     resources:
         mem_mb=1000,
@@ -196,7 +198,8 @@ rule book:
     """Stage the outputs the book shows and the findings, record the run's provenance, build the
     book strictly."""
     input:
-        data=list(BOOK_DATA.values()),
+        # a file in a measured group's folder: the folder (common.smk: measured_inputs)
+        data=measured_inputs(BOOK_DATA.values()),
         findings=list(BOOK_FINDINGS.values()),
         # the build's results manifest and the tracked one (the first page's provenance)
         manifest="data/results.sha256",
@@ -221,6 +224,7 @@ rule book:
         # nothing of the main run's)
         config=settings({key: value for key, value in config.items() if key != "runs"}),
         names=list(BOOK_DATA) + list(BOOK_FINDINGS),
+        data=list(BOOK_DATA.values()),  # the files, by name
     threads: 2  # pages execute side by side (src/icub_workflow/book_build/notebooks.py)
     resources:
         mem_mb=2000,

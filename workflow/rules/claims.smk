@@ -1,8 +1,13 @@
 # The paper's claims confirmed on fresh replications (config `confirmation`; the front page):
 # the readings' replications at the config's Goal response are the confirmation's runs (one per
-# declared cue timing and seed), each scored on the declared measures (rule measured_seed*);
+# declared cue timing and seed), each scored on the declared measures (rule measured);
 # rule `claims` tests each declared claim over them, Holm over the family, with the design's
 # power from the declared pilot. The forest plot is a plot rule.
+
+
+CLAIM_MEASURES = [PLAN.path(row["run"], "eval/measures.json") for row in CLAIM_ROWS]
+CLAIM_TRIALS = [PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS]
+CLAIM_CURVES = [path for row in OWN_READING_ROWS for path in curve_files(row["run"])]
 
 
 rule claims:
@@ -10,8 +15,7 @@ rule claims:
     (data/claims/summary.csv, contract), each replication's estimates, the design's power and
     the replications' training RMSE."""
     input:
-        measures=[PLAN.path(row["run"], "eval/measures.json") for row in CLAIM_ROWS],
-        curves=[path for row in OWN_READING_ROWS for path in curve_files(row["run"])],
+        measured=measured_inputs([*CLAIM_MEASURES, *CLAIM_CURVES]),
         pilot=config["confirmation"]["pilot"],
         code=script_code("claims"),
     output:
@@ -20,6 +24,9 @@ rule claims:
         power="data/claims/power.csv",
         learning="data/claims/learning.csv",
     params:
+        # the files in the folders named above (measured_inputs)
+        analyses=CLAIM_MEASURES,
+        curves=CLAIM_CURVES,
         rows=CLAIM_ROWS,
         declaration=settings(config["confirmation"]),
         seeds=[row["seed"] for row in OWN_READING_ROWS],
@@ -39,12 +46,13 @@ rule claims_errors:
     correct trial) and the part of its correct trials, which add up to the effect, with each
     congruency x size cell's rates, RMSEs and grips' distance (icub_affordance.analysis.error_split)."""
     input:
-        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
+        trials=measured_inputs(CLAIM_TRIALS),
         code=script_code("claims_errors"),
     output:
         cells="data/claims/error_cells.csv",
         split="data/claims/error_split.csv",
     params:
+        trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
         cues=[row["cue"] for row in CLAIM_ROWS],
     log:
         "data/logs/claims/errors.log",
@@ -63,12 +71,13 @@ rule claims_correct:
     intercept per network, t on replications - 1 df, Holm
     (correct_sensitivity.csv; icub_affordance.analysis.correct_sensitivity)."""
     input:
-        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS],
+        trials=measured_inputs(CLAIM_TRIALS),
         code=script_code("claims_correct"),
     output:
         cells="data/claims/correct_cells.csv",
         sensitivity="data/claims/correct_sensitivity.csv",
     params:
+        trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
         cues=[row["cue"] for row in CLAIM_ROWS],
         seeds=[row["seed"] for row in CLAIM_ROWS],
     log:

@@ -67,6 +67,13 @@ NETWORKS = PLAN.networks(MAIN)
 MEASURED_GROUPS = PLAN.measured_groups
 
 
+def measured_inputs(files):
+    """Inputs for `files`, each once: a file, or, for one in a measured group's folder (rule
+    measured, RunPlan.container), that folder. The rule passes the files themselves to its
+    script as a parameter."""
+    return list(dict.fromkeys(PLAN.container(path) for path in files))
+
+
 def served_by(rule, step):
     """A wildcard constraint: the folders of the runs whose `step` the rule `rule` makes."""
     return folders_pattern(PLAN.served_by(rule, step))
@@ -192,11 +199,60 @@ def robot_test_files(run, name, nets=None):
 def step_files(run, step):
     """The files a step of a run makes (RunPlan.steps): its rule's outputs in the run's folder,
     part by part for the networks and the robot test."""
+    if step in _RULED_STEPS and PLAN.rule_for(run, step) == "measured":
+        return measured_files(run, step)
     if step == "train":
         return outputs("train", run, part=PLAN.parts(run))
     if step == "robot_test":
         return outputs("robot_test", run, part=PLAN.parts(run, "robot_test"))
     return outputs(step, run)
+
+
+_RULED_STEPS = ("soms", "train", "measures", "robot_test")
+
+
+def measured_files(run, step):
+    """The files of a measured run's step (soms, train, measures) in its group's folder, each
+    noted as made by its group's job (_MADE_BY, for job_records)."""
+    relative = {
+        "soms": ["soms/soms.npz"],
+        "train": [f"train/{part}/{name}" for part in PLAN.parts(run) for name in
+                  ("curve.csv", "weights.npz")],
+        "measures": ["eval/measures.csv", "eval/measures.json"],
+    }[step]  # fmt: skip
+    files = [PLAN.path(run, path) for path in relative]
+    for path in files:
+        _MADE_BY[path] = ("measured", {"group": PLAN.group(run)})
+    return files
+
+
+def measured_table(wildcards):
+    """Each run of the job's group as its script reads it: its settings and its files."""
+    return [
+        {
+            "run": run,
+            "network": settings(PLAN.config(run)["network"]),
+            "grip_distance": PLAN.config(run)["grip_distance"],
+            "seed": PLAN.config(run)["seed"],
+            **model_inputs({"folder": PLAN.folder(run)}),
+            "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
+            "som_settings": settings(PLAN.config(run)["soms"]),
+            "names": settings(PLAN.config(run)["names"]),
+            "curves": curve_files(run),  # its part `all`: one file each
+            "weights": weights_files(run),
+            "trials": PLAN.path(run, "eval/measures.csv"),
+            "json": PLAN.path(run, "eval/measures.json"),
+        }
+        for run in MEASURED_GROUPS[wildcards.group]
+    ]
+
+
+def measured_models(wildcards):
+    """An input: the maps, SOMs and demonstrations the group's runs learn from, but the SOMs
+    the job makes itself."""
+    table = measured_table(wildcards)
+    made = {row["soms"] for row in table if row["makes_soms"]}
+    return sorted({row[key] for row in table for key in ("maps", "soms", "demos")} - made)
 
 
 def run_files(run, tests=True):

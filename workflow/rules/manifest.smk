@@ -14,10 +14,12 @@ RESULT_FILES = result_files(f for f in DEFAULT_OUTPUTS if f not in _USER_RUN_FIL
 rule manifest:
     """The build's results manifest: one `<sha256>  <path>` line per result file."""
     input:
-        results=RESULT_FILES,
+        results=measured_inputs(RESULT_FILES),
         code=script_code("manifest"),
     output:
         "data/results.sha256",
+    params:
+        results=RESULT_FILES,  # the files, those in the folders named above too
     log:
         "data/logs/manifest.log",
     benchmark:

@@ -35,58 +35,35 @@ rule measures:
 
 # The measured runs of a seed (RunPlan.measured_groups) trained and measured in one job: the
 # steps of rules soms (for a run that makes its own maps), train and measures, the same
-# files. A rule's outputs are fixed when the rules are read, so each group has its rule.
-for _group, _runs in MEASURED_GROUPS.items():
-    # each run as the job's script reads it: its settings and its files
-    _table = [
-        {
-            "run": run,
-            "network": settings(PLAN.config(run)["network"]),
-            "grip_distance": PLAN.config(run)["grip_distance"],
-            "seed": PLAN.config(run)["seed"],
-            **model_inputs({"folder": PLAN.folder(run)}),
-            "makes_soms": PLAN.makes(run, "soms"),  # else it reads an earlier run's (same seed)
-            "som_settings": settings(PLAN.config(run)["soms"]),
-            "names": settings(PLAN.config(run)["names"]),
-            "curves": curve_files(run),  # its part `all`: one file each
-            "weights": weights_files(run),
-            "trials": PLAN.path(run, "eval/measures.csv"),
-            "json": PLAN.path(run, "eval/measures.json"),
-        }
-        for run in _runs
-    ]
+# files. A group's set of runs varies, so its job makes one folder (RunPlan.group_folder), each
+# run's files in it where RunPlan.path puts them; a rule that reads one names the folder
+# (measured_inputs). Its runs, as the job's script reads them: common.smk, measured_table.
 
-    rule:
-        """A seed's measured runs (readings, size study): each run's networks trained, then
-        every test trial scored on the declared measures."""
-        name:
-            f"measured_{_group}"
-        input:
-            models=sorted(
-                {row[key] for row in _table for key in ("maps", "soms", "demos")}
-                - {row["soms"] for row in _table if row["makes_soms"]}
-            ),
-            code=script_code("measured_runs"),
-        output:
-            soms=[row["soms"] for row in _table if row["makes_soms"]],
-            curves=[path for row in _table for path in row["curves"]],
-            weights=[path for row in _table for path in row["weights"]],
-            trials=[row["trials"] for row in _table],
-            json=[row["json"] for row in _table],
-        params:
-            runs=_table,
-            objects=settings(config["objects"]),
-            measures=config["readings"]["measures"],
-        priority: 1  # before the figures: the size study's and the readings' tables wait on it
-        resources:
-            mem_mb=1000,
-            runtime=30,
-        log:
-            f"data/logs/measured/{_group}.log",
-        benchmark:
-            f"data/benchmarks/measured/{_group}.tsv"
-        script:
-            "../scripts/measured_runs.py"
+
+rule measured:
+    """A seed's measured runs (readings, size study): each run's networks trained, then every
+    test trial scored on the declared measures, in the group's folder."""
+    input:
+        models=measured_models,
+        code=script_code("measured_runs"),
+    output:
+        directory("data/measured/{group}"),
+    params:
+        runs=measured_table,
+        objects=settings(config["objects"]),
+        measures=config["readings"]["measures"],
+    wildcard_constraints:
+        group="|".join(MEASURED_GROUPS) or "(?!)",
+    priority: 1  # before the figures: the size study's and the readings' tables wait on it
+    resources:
+        mem_mb=1000,
+        runtime=30,
+    log:
+        "data/logs/measured/{group}.log",
+    benchmark:
+        "data/benchmarks/measured/{group}.tsv"
+    script:
+        "../scripts/measured_runs.py"
 
 
 rule readings:
@@ -94,8 +71,11 @@ rule readings:
     each effect's t-test and Holm's p; and the tests of the differences between the cue timings
     and between the Goal responses, paired by network (data/readings/differences.csv)."""
     input:
-        measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.readings],
-        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.readings],
+        measured=measured_inputs(
+            PLAN.path(row["run"], f"eval/measures.{kind}")
+            for kind in ("json", "csv")
+            for row in PLAN.readings
+        ),
         code=script_code("readings"),
     output:
         summary="data/readings/summary.csv",
@@ -103,6 +83,9 @@ rule readings:
         differences="data/readings/differences.csv",
     params:
         table=PLAN.readings,
+        # the files in the folders named above (measured_inputs)
+        analyses=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.readings],
+        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.readings],
         measures=config["readings"]["measures"],
         margins=settings(config["readings"]["equivalence_margin"]),
     log:

@@ -11,10 +11,15 @@ rule signatures:
     """Every signature's condition on every replication's networks: the noisy trials, each
     signature's tests and verdict (data/signatures/summary.csv, contract), the errors apart."""
     input:
-        models=sorted(
-            {rep[key] for rep in SIGNATURE_REPLICATIONS for key in ("maps", "soms", "demos")}
+        # the files in a measured group's folder: the folder (measured_inputs)
+        models=measured_inputs(
+            sorted(
+                {rep[key] for rep in SIGNATURE_REPLICATIONS for key in ("maps", "soms", "demos")}
+            )
         ),
-        weights=[path for rep in SIGNATURE_REPLICATIONS for path in rep["weights"]],
+        weights=measured_inputs(
+            path for rep in SIGNATURE_REPLICATIONS for path in rep["weights"]
+        ),
         code=script_code("signatures"),
     output:
         trials="data/signatures/trials.csv",

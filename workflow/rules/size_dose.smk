@@ -21,22 +21,25 @@ rule size_free_maps:
         "../scripts/size_free_maps.py"
 
 
+SIZE_MEASURES = [PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose]
+SIZE_SOMS = [
+    PLAN.path(PLAN.stage_run(row["run"], "soms"), "soms/soms.npz") for row in PLAN.size_dose
+]
+SIZE_TRIALS = [PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.size_dose]
+SIZE_DEMOS = [
+    PLAN.path(PLAN.stage_run(row["run"], "demos"), "demos/demos.npz") for row in PLAN.size_dose
+]
+
+
 rule size_dose:
     """The size study: per dose, grip arrangement, cue timing and measure, the size effect over
     whole replications with the manipulation check's ratios and the delivered dose; size and
     the grips' distance separated per replication, the declared tests and their power; and,
     per condition, whether the demonstrations' geometry accounts for each object's error."""
     input:
-        measures=[PLAN.path(row["run"], "eval/measures.json") for row in PLAN.size_dose],
-        soms=[
-            PLAN.path(PLAN.stage_run(row["run"], "soms"), "soms/soms.npz")
-            for row in PLAN.size_dose
-        ],
-        trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.size_dose],
-        demos=[
-            PLAN.path(PLAN.stage_run(row["run"], "demos"), "demos/demos.npz")
-            for row in PLAN.size_dose
-        ],
+        measured=measured_inputs(
+            [*SIZE_MEASURES, *SIZE_SOMS, *SIZE_TRIALS, *SIZE_DEMOS]
+        ),
         code=script_code("size_dose"),
     output:
         summary="data/size_dose/summary.csv",
@@ -49,6 +52,11 @@ rule size_dose:
         geometry="data/size_dose/geometry.csv",
         motor="data/size_dose/motor.csv",
     params:
+        # the files in the folders named above (measured_inputs)
+        analyses=SIZE_MEASURES,
+        soms=SIZE_SOMS,
+        trials=SIZE_TRIALS,
+        demos=SIZE_DEMOS,
         table=PLAN.size_dose,
         measures=config["readings"]["measures"],
         crossed=settings(config["size_dose"]["crossed"]),

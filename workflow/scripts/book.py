@@ -21,7 +21,7 @@ from icub_workflow.book_build.run import provenance, results_provenance, stage
 with redirect_log(snakemake.log[0]):
     book = Path("book")
     data_dir = book / "_data"
-    files = [*snakemake.input.data, *snakemake.input.findings]
+    files = [*snakemake.params.data, *snakemake.input.findings]
     stage(dict(zip(snakemake.params.names, files, strict=True)), data_dir)
     run = provenance(dict(snakemake.params.config), Path.cwd())
     run["results"] = results_provenance(snakemake.input.manifest, snakemake.input.tracked_manifest)

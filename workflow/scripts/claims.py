@@ -20,12 +20,12 @@ from icub_workflow.parts import load_curves
 with redirect_log(snakemake.log[0]):
     declaration = dict(snakemake.params.declaration)
     rows = list(snakemake.params.rows)
-    analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
+    analyses = [json.loads(Path(path).read_text()) for path in snakemake.params.analyses]
     estimates = replication_estimates(rows, analyses, declaration)
     summary = confirm(estimates, declaration)
     summary["direction"] = direction_codes(summary["direction"])
     power = pilot_power(read_pilot(snakemake.input.pilot), declaration, len(snakemake.params.seeds))
-    curves = [curve for _, curve in load_curves(list(snakemake.input.curves))]
+    curves = [curve for _, curve in load_curves(list(snakemake.params.curves))]
     trained = learning(curves, snakemake.params.seeds, snakemake.params.networks,
                        snakemake.params.phase1_iterations)  # fmt: skip
     write_tables(

@@ -12,7 +12,7 @@ with redirect_log(snakemake.log[0]):
     trials = pd.concat(
         pd.read_csv(path).assign(cue=cue, seed=seed)
         for path, cue, seed in zip(
-            snakemake.input.trials, snakemake.params.cues, snakemake.params.seeds, strict=True
+            snakemake.params.trials, snakemake.params.cues, snakemake.params.seeds, strict=True
         )
     )
     counts = cells(trials)

@@ -10,7 +10,7 @@ from icub_affordance.files import redirect_log, write_tables
 with redirect_log(snakemake.log[0]):
     trials = pd.concat(
         pd.read_csv(path).assign(cue=cue)
-        for path, cue in zip(snakemake.input.trials, snakemake.params.cues, strict=True)
+        for path, cue in zip(snakemake.params.trials, snakemake.params.cues, strict=True)
     )
     cell_tables, split_tables = [], []
     for (cue, mode), chosen in trials.groupby(["cue", "mode"], sort=False):

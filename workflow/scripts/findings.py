@@ -8,7 +8,7 @@ from icub_affordance.files import atomic_path, redirect_log, write_text
 from icub_workflow.book.pages import page_findings
 
 with redirect_log(snakemake.log[0]):
-    inputs = dict(zip(snakemake.params.names, snakemake.input.data, strict=True))
+    inputs = dict(zip(snakemake.params.names, snakemake.params.data, strict=True))
     pages, tables = page_findings(
         inputs,
         dict(snakemake.params.config),

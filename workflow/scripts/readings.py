@@ -19,11 +19,11 @@ from icub_affordance.files import redirect_log, write_tables
 with redirect_log(snakemake.log[0]):
     table = list(snakemake.params.table)
     measures = list(snakemake.params.measures)
-    analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
+    analyses = [json.loads(Path(path).read_text()) for path in snakemake.params.analyses]
     replications = replication_rows(table, analyses, measures)
     trials = {
         row["run"]: pd.read_csv(path, keep_default_na=False)
-        for row, path in zip(table, snakemake.input.trials, strict=True)
+        for row, path in zip(table, snakemake.params.trials, strict=True)
     }
     diffs = differences(
         difference_replications(table, trials, measures), dict(snakemake.params.margins)

@@ -29,12 +29,12 @@ with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]
     crossed = snakemake.params.crossed
     measures = list(snakemake.params.measures)
-    analyses = [json.loads(Path(path).read_text()) for path in snakemake.input.measures]
+    analyses = [json.loads(Path(path).read_text()) for path in snakemake.params.analyses]
     replications = replication_rows(table, analyses, measures)
-    checks = manipulation(table, [load_npz(path) for path in snakemake.input.soms])
+    checks = manipulation(table, [load_npz(path) for path in snakemake.params.soms])
     geometries, trials = [], []
     for row, trials_path, demos_path in zip(
-        table, snakemake.input.trials, snakemake.input.demos, strict=True
+        table, snakemake.params.trials, snakemake.params.demos, strict=True
     ):
         demos = load_npz(demos_path, required=("angles", "objects", "grips"))
         objects, grips = [str(o) for o in demos["objects"]], [str(g) for g in demos["grips"]]
