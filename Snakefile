@@ -62,6 +62,7 @@ include: "workflow/rules/size_dose.smk"
 include: "workflow/rules/robot.smk"
 include: "workflow/rules/statistics.smk"
 include: "workflow/rules/signatures.smk"
+include: "workflow/rules/words.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 

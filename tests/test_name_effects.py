@@ -149,3 +149,38 @@ def test_the_reactivation_tests_are_per_cue_over_replications():
         per_seed = contrasts[contrasts["cue"] == row.cue].groupby("seed")["contrast"].mean()
         assert row.p == pytest.approx(stats.ttest_1samp(per_seed, 0).pvalue, rel=1e-9)
     assert (table["direction"] == Outcome.PAPER).all()
+
+
+def test_the_chapter_says_each_tests_verdict_in_its_own_words(tmp_path):
+    """The book's words page: the name-alone tests in the confirmation's words, the equivalence
+    in its own (equivalent / not shown equivalent), each count over the conditions, and every
+    verdict resting on the numbers it came from."""
+    from icub_workflow.book.names_page import score_rows, words_page
+    from icub_workflow.book.pages import traced
+    from icub_workflow.book.words import direction_codes
+
+    config = load_config()
+
+    def effects(form, effect, rng):
+        return (0.03 if effect == "congruency" else 0.0) + rng.normal(0, 0.002, len(SEEDS))
+
+    table = word_tests(estimates_of(effects), config["words"])
+    table["direction"] = direction_codes(table["direction"])
+    contrasts = pd.DataFrame([{"cue": cue, "seed": s, "network": 0, "contrast": 0.1 + s / 1e4}
+                              for cue in config["words"]["cues"] for s in SEEDS])  # fmt: skip
+    react = reactivation_tests(contrasts, config["words"])
+    react["direction"] = direction_codes(react["direction"])
+    table.to_csv(tmp_path / "s.csv", index=False)
+    react.to_csv(tmp_path / "r.csv", index=False)
+    inputs = {"words_summary.csv": tmp_path / "s.csv", "words_reactivation.csv": tmp_path / "r.csv"}
+    values, tables = words_page(inputs, config)
+    assert values["congruency_count"].text == "confirmed in 8 of 8"
+    assert values["equivalence_count"].text == "equivalent in 8 of 8"
+    assert values["react_first_step_verdict"].text == "nearest its own object's image state"
+    assert values["react_verdict"].text == (
+        "nearest its own object's image state under both cue timings"
+    )
+    assert len(tables["words"]) == 24
+    said, rows = score_rows(values)
+    assert [r["chapter"] for r in rows] == ["words"] * 3
+    traced({"words": values, "index": said})  # every claim rests on values the page has

@@ -156,7 +156,8 @@ def test_a_configured_run_is_planned_and_its_name_kept(config):
 
 def test_the_test_config_plans_few_runs():
     plan = plan_runs(load_test_config() | {"robustness": False})
-    assert len(plan.runs) < 25  # two replications of 4 readings and of 4 size runs, and the rest
+    # two replications of 4 readings, of 4 size runs and of the words study, and the rest
+    assert len(plan.runs) < 27
     assert all(plan.networks(run) for run in plan.runs)
 
 
@@ -481,8 +482,10 @@ def test_the_default_build_trains_the_own_networks_a_job_each_and_each_other_run
     n = config["network"]["networks"]
     confirmed = len(config["robot"]["confirmation"]["variants"])
     # the config's own networks a job each; the cue ablation's in one job, each confirmation's
-    # fresh ones in one job (their part `all`)
-    assert counts["train"] == n + 1 + confirmed
+    # fresh ones in one job (their part `all`), each words replication's in one job
+    words = config["words"]
+    n_words = len(words["seeds"]) * len(words["cues"])
+    assert counts["train"] == n + 1 + confirmed + n_words
     # on the robot likewise: the config's own a job each, each confirmation's in one
     assert counts["robot_test"] == n + confirmed
     # tested in silico: the config's own run and the cue ablation
@@ -494,8 +497,10 @@ def test_the_default_build_trains_the_own_networks_a_job_each_and_each_other_run
     seeds = [*config["confirmation"]["seeds"], *crossed["seeds"][: crossed["replications"]]]
     assert counts["measured"] == len(set(seeds))  # rule measured: a job per seed's group
     assert not [r for r in counts if r.startswith("measured_")]
-    assert counts["demos"] == len({config["seed"], *seeds})
-    assert counts["soms"] == 1 and counts["measures"] == 1  # the config's own: the book reads it
+    # the words study's: a replication's cue timings share them
+    assert counts["demos"] == len({config["seed"], *seeds, *words["seeds"]})
+    assert counts["soms"] == 1 + len(words["seeds"])
+    assert counts["measures"] == 1  # the config's own: the book reads it
     assert counts["size_free_maps"] == int(config["size_dose"]["removal"])
     assert "phase1" not in counts  # no two long trainings share a phase 1 in this build
 
@@ -537,7 +542,38 @@ def test_with_robustness_the_plan_adds_the_sweep_and_the_robot_grid_in_one_job_e
     # the config's own networks a job each, every other variant's in one, the confirmation's
     assert counts["robot_test"] == n + variants - own + 1
     # and trained: the cue ablation, the sweep points (but those that are a reading's
-    # replication, trained with its seed's measured runs) and the robot variants
-    assert counts["train"] == n + 1 + len(points) - shared + variants - own + 1
+    # replication, trained with its seed's measured runs), the robot variants and the words
+    # study's replications
+    words = config["words"]
+    n_words = len(words["cues"]) * len(words["seeds"] + words["robustness_seeds"])
+    assert counts["train"] == n + 1 + len(points) - shared + variants - own + 1 + n_words
     # the main run, the cue ablation and the sweep points are tested in silico
     assert counts["evaluate"] - 2 == counts["stats"] - 2 == len(points)
+
+
+@pytest.mark.parametrize("robustness", [False, True])
+def test_the_words_study_is_the_whole_model_with_names_at_each_seed_and_cue(config, robustness):
+    """A run per declared seed and cue timing, names on and nothing else changed, its own
+    demonstrations and maps shared by its two cue timings only, trained in one job, then tested
+    in every form (rule word_trials); the paper's tests (evaluate) it does not run."""
+    config = config | {"robustness": robustness}
+    plan = plan_runs(config)
+    words = config["words"]
+    seeds = words["seeds"] + (words["robustness_seeds"] if robustness else [])
+    assert [(r["cue"], r["seed"]) for r in plan.words] == [
+        (cue, seed) for cue in words["cues"] for seed in seeds
+    ]
+    for row in plan.words:
+        run = plan.runs[row["run"]]
+        assert run.origin == "words" and run.config["names"]["use"] is True
+        assert run.config["seed"] == row["seed"]
+        assert run.config["network"]["categorisation_cue"] == row["cue"]
+        assert merged(config, run.overrides) == run.config
+        assert set(run.overrides) == {"seed", "names", "network"}
+        for stage in ("demos", "soms"):
+            owner = plan.stage_run(row["run"], stage)
+            assert plan.runs[owner].origin == "words" and plan.config(owner)["seed"] == row["seed"]
+        assert plan.built_steps(row["run"])[-2:] == ["train", "word_trials"]
+        assert plan.parts(row["run"]) == ["all"]
+    counts = plan.job_counts()
+    assert counts["word_trials"] == len(plan.words) == len(words["cues"]) * len(seeds)

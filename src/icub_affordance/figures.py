@@ -695,3 +695,49 @@ def claims_forest(summary, path, legend: dict) -> None:
     fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     save(fig, path)
+
+
+def words_effects(by_form, replications, path) -> None:
+    """The congruency and size effects by what a trial shows (image, name, both): for each
+    measure and test mode (rows) and effect (columns), each cue timing's and form's mean over
+    the replications with its 95% interval (positive: the paper's direction), and each
+    replication's estimate as a small dot."""
+    from icub_affordance.vocabulary import FORMS
+
+    panels = list(dict.fromkeys(zip(by_form["measure"], by_form["mode"], strict=True)))
+    cues = list(dict.fromkeys(by_form["cue"]))
+    labels = [f"{cue.replace('_', ' ')}: {form}" for cue in cues for form in FORMS]
+    y = np.arange(len(labels))
+    fig, axes = plt.subplots(
+        len(panels), 2, figsize=(10, 1.0 + 0.32 * len(labels) * len(panels)), squeeze=False
+    )
+    for i, (measure, mode) in enumerate(panels):
+        for j, effect in enumerate(("congruency", "size")):
+            ax = axes[i, j]
+            for k, (cue, form) in enumerate((c, f) for c in cues for f in FORMS):
+                keys = {"cue": cue, "mode": mode, "measure": measure, "form": form,
+                        "effect": effect}  # fmt: skip
+                row = by_form[np.logical_and.reduce([by_form[c] == v for c, v in keys.items()])]
+                reps = replications[
+                    np.logical_and.reduce([replications[c] == v for c, v in keys.items()])
+                ]
+                colour = f"C{FORMS.index(form)}"
+                if len(row):
+                    mean = float(row["estimate"].iloc[0])
+                    low, high = float(row["ci_low"].iloc[0]), float(row["ci_high"].iloc[0])
+                    if np.isfinite(low):
+                        ax.errorbar(mean, k, xerr=[[mean - low], [high - mean]], fmt="none",
+                                    ecolor=colour, capsize=3)  # fmt: skip
+                    ax.scatter(mean, k, c=colour, zorder=3)
+                ax.scatter(reps["estimate"], np.full(len(reps), k + 0.25), s=6, c="0.4", zorder=2)
+            ax.axvline(0, color="k", lw=0.8)
+            ax.set_yticks(y)
+            ax.set_yticklabels(labels if j == 0 else [])
+            ax.invert_yaxis()
+            ax.set_title(f"{effect}: {measure.replace('_', ' ')}, {mode.replace('_', ' ')}",
+                         fontsize=9)  # fmt: skip
+            ax.tick_params(labelsize=8)
+    for ax in axes[-1]:
+        ax.set_xlabel("effect (positive: the paper's direction)")
+    fig.tight_layout()
+    save(fig, path)

@@ -36,7 +36,7 @@ MEASURED_FILES = ("soms/", "train/", "eval/measures.")
 ORIGIN_WORDS = {"main": "config's own run", "configured": "run of config `runs`",
                 "ablation": "cue ablation", "sweep": "sweep point", "reading": "reading",
                 "robot": "robot variant", "confirmation": "robot variant's confirmation",
-                "size_dose": "size study's run"}  # fmt: skip
+                "size_dose": "size study's run", "words": "words study's run"}  # fmt: skip
 
 #: The settings each shared stage depends on: a run reuses the stage of the first run (in the
 #: plan's order) whose settings for it are equal, so a run that changes only the network reuses
@@ -87,6 +87,8 @@ class RunPlan:
     #: one row per dose (or "removed"), cue timing and replication: dose, cue, seed, run
     size_dose: list[dict[str, Any]]
     robustness: bool
+    #: one row per words replication (config ``words``: names on): cue, seed, run
+    words: list[dict[str, Any]]
 
     # ---- where a run's files live (the one place that knows) ----------------------------------
 
@@ -331,6 +333,7 @@ class RunPlan:
             *(row["run"] for row in self.readings),
             *(row["run"] for row in self.size_dose),
             *(self.sweep if self.robustness else []),
+            *(row["run"] for row in self.words),
         ]
         return list(dict.fromkeys(runs))
 
@@ -359,10 +362,13 @@ class RunPlan:
         only, not tested in silico), its measures (the config's own too: the book reads them),
         and its robot test."""
         sweep_point = self.robustness and run in self.sweep
-        tested = run in self.whole or sweep_point or not self.measured(run)
+        words = self.runs[run].origin == "words"
+        tested = run in self.whole or sweep_point or not (self.measured(run) or words)
         steps = self.steps(run, tests=tested)
         if self.measured(run) or run == MAIN:
             steps.append("measures")
+        if words:
+            steps.append("word_trials")  # tested in every form: image, name, both
         if run in self.robot_tested_runs:
             steps.append("robot_test")
         return steps
@@ -445,6 +451,7 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
     readings = _readings(config, planner)
     variants = _robot_variants(config, planner)
     confirmation = _confirmation(config, planner, variants)
+    words = _words(config, planner)
     return RunPlan(
         runs=planner.runs,
         configured=[*config["runs"], ablation],
@@ -455,6 +462,7 @@ def plan_runs(config: Mapping[str, Any]) -> RunPlan:
         confirmation=confirmation,
         size_dose=size_dose,
         robustness=bool(config["robustness"]),
+        words=words,
     )
 
 
@@ -610,4 +618,19 @@ def _size_dose(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, A
         run = planner.find_or_add(name, overrides, "size_dose")
         table.append({"dose": dose, "arrangement": arrangement, "cue": cue, "seed": seed,
                       "run": run})  # fmt: skip
+    return table
+
+
+def _words(config: Mapping[str, Any], planner: _Planner) -> list[dict[str, Any]]:
+    """The words study (config ``words``): the whole model with names on (config ``names``),
+    at each of its seeds (with robustness its further seeds too) and under each of its cue
+    timings; seeds no other study runs (config_checks), so each is a run of its own."""
+    words = config["words"]
+    table = []
+    for cue, seed in itertools.product(
+        words["cues"], dict.fromkeys(claim_seeds(words, bool(config["robustness"])))
+    ):
+        overrides = {"seed": seed, "names": {"use": True}, "network": {"categorisation_cue": cue}}
+        run = planner.add(f"words_{cue}_seed{seed}", overrides, "words")
+        table.append({"cue": cue, "seed": seed, "run": run})
     return table

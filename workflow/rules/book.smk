@@ -57,6 +57,10 @@ BOOK_DATA = {
     "signatures_summary.csv": "data/signatures/summary.csv",
     "signatures_errors.csv": "data/signatures/errors.csv",
     "signatures.png": "data/signatures/signatures.png",
+    "words_summary.csv": "data/words/summary.csv",
+    "words_by_form.csv": "data/words/by_form.csv",
+    "words_reactivation.csv": "data/words/reactivation.csv",
+    "words_effects.png": "data/words/effects.png",
     "claims_summary.csv": "data/claims/summary.csv",
     "claims_replications.csv": "data/claims/replications.csv",
     "claims_power.csv": "data/claims/power.csv",
@@ -98,7 +102,7 @@ FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif
 FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if config["robustness"] else ())]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
-    "robot", "size_dose", "signatures", "confirmation",
+    "robot", "size_dose", "signatures", "confirmation", "names", "words",
 ]
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES

@@ -186,3 +186,22 @@ def reactivation_tests(contrasts: pd.DataFrame, declaration: Mapping[str, Any]) 
         direction(e, p, alpha) for e, p in zip(table["estimate"], table["p_holm"], strict=True)
     ]
     return table
+
+
+def form_summary(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
+    """Every form's congruency and size effects over the replications (a figure's points, each
+    a one-sample t, unadjusted: beside the family, not in it), per cue timing, mode and
+    measure."""
+    least = int(declaration["min_replications"])
+    rows = []
+    keys = ("cue", "mode", "measure", "form", "effect")
+    for values, group in estimates.groupby(list(keys), sort=False):
+        defined = group["estimate"].to_numpy(dtype=float)
+        defined = defined[np.isfinite(defined)]
+        term = over_replications(defined, least)
+        rows.append(
+            dict(zip(keys, values, strict=True))
+            | {"replications": len(group), "estimable": len(defined)}
+            | {k: term[k] for k in ("estimate", "ci_low", "ci_high", "p")}
+        )
+    return pd.DataFrame(rows)

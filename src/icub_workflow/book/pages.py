@@ -29,6 +29,7 @@ from icub_affordance.vocabulary import MODES
 from icub_workflow.runs import MAIN
 
 from . import text, words
+from .names_page import score_rows, words_page
 from .scorecard import claims_values, scorecard, signature_result, signature_scale
 
 
@@ -744,9 +745,12 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
     for page, (values, shown) in {
         "beyond": beyond(inputs, config, ablation_cue), "readings": readings(inputs, config),
         "robot_test": robot_test(inputs, config), "size": size_study(inputs, config),
-        "signatures": signatures(inputs, config),
+        "signatures": signatures(inputs, config), "words": words_page(inputs, config),
     }.items():  # fmt: skip
         pages[page], tables = values, tables | shown
+    said, rows = score_rows(pages["words"])
+    score_values |= said
+    score_table = pd.concat([score_table, pd.DataFrame(rows)], ignore_index=True)
     pages["robustness"], sweep = robustness(inputs, config, sweep_jobs)
     pages |= {
         "tests": main_tests(anova, curve, load_npz(inputs["demos.npz"]), cue),

@@ -77,6 +77,17 @@ DIRECTION_OUTCOMES = {code: outcome for outcome, code in DIRECTION_CODES.items()
 #: A declared test's verdict word for each code of its table (``DIRECTION_CODES``).
 CLAIM_WORDS = {"paper": "confirmed", "reversed": "reversed", "none": "not shown",
                "not assessable": "not assessable"}  # fmt: skip
+#: The words study's equivalence test (``name_effects.word_tests``), for each code of its table:
+#: ``paper`` is the name's effect shown within the margin of the image's.
+EQUIVALENCE_WORDS = {"paper": "equivalent", "none": "not shown equivalent",
+                     "not assessable": "not assessable"}  # fmt: skip
+#: The words study's reactivation test (``name_effects.reactivation_tests``), for each code.
+REACTIVATION_WORDS = {
+    "paper": "nearest its own object's image state",
+    "reversed": "farther from its own object's image state than from the others'",
+    "none": "not shown nearer its own object's image state than the others'",
+    "not assessable": "not assessable",
+}
 #: The same words by ``Outcome`` (the forest plot's legend).
 CLAIM_OUTCOME_WORDS = {o: CLAIM_WORDS[code] for o, code in DIRECTION_CODES.items()}
 #: A confirmatory test's direction and the exploration's verdict word that says the same.

@@ -19,5 +19,6 @@ TABLES = (
     "robot_cells",
     "size_tests",
     "signatures",
+    "words",
 )
 FULL_SCALE_TABLES = ("sweep",)

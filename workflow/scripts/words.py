@@ -1,0 +1,46 @@
+"""Names against images over the words study's replications: the declared family
+(data/words/summary.csv), the replications' estimates (replications.csv), every form's effects
+(by_form.csv, a figure's points) and the reactivation tests (reactivation.csv, over each
+network's contrast: contrasts.csv)."""
+
+import json
+from pathlib import Path
+
+import pandas as pd
+
+from icub_affordance.analysis.name_effects import (
+    form_summary,
+    reactivation_tests,
+    replication_estimates,
+    word_tests,
+)
+from icub_affordance.files import redirect_log, write_tables
+from icub_workflow.book.words import direction_codes
+
+with redirect_log(snakemake.log[0]):
+    table = list(snakemake.params.table)
+    declaration = dict(snakemake.params.declaration)
+    results = [json.loads(Path(path).read_text()) for path in snakemake.input.json]
+    estimates = replication_estimates(table, [r["forms"] for r in results], declaration)
+    contrasts = pd.DataFrame(
+        [
+            {"cue": row["cue"], "seed": row["seed"], "run": row["run"]} | network
+            for row, result in zip(table, results, strict=True)
+            for network in result["reactivation"]
+        ]
+    )
+    tests = word_tests(estimates, declaration)
+    tests["direction"] = direction_codes(tests["direction"])
+    reactivation = reactivation_tests(contrasts, declaration)
+    reactivation["direction"] = direction_codes(reactivation["direction"])
+    write_tables(
+        [
+            (snakemake.output.summary, tests),
+            (snakemake.output.replications, estimates),
+            (snakemake.output.by_form, form_summary(estimates, declaration)),
+            (snakemake.output.reactivation, reactivation),
+            (snakemake.output.contrasts, contrasts),
+        ]
+    )
+    print(tests.to_string())
+    print(reactivation.to_string())
