@@ -86,18 +86,65 @@ def scratch_workflow(path: Path) -> Path:
     return path
 
 
-def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
-    """Snakemake on the test config (by default) in `workdir`. A run that hangs fails its test
-    after 20 minutes rather than holding CI until its own limit."""
+class _Forks:
+    """This process's Snakemake server (tests/snakemake_forks.py), started at its first run."""
+
+    server = None
+
+
+def _snakemake_server():
     import subprocess
 
-    return subprocess.run(
-        [sys.executable, "-m", "snakemake", *args, "--configfile", str(config)],
-        cwd=workdir,
-        capture_output=True,
-        text=True,
-        timeout=1200,
-    )
+    if _Forks.server is None or _Forks.server.poll() is not None:
+        _Forks.server = subprocess.Popen(
+            [sys.executable, str(Path(__file__).with_name("snakemake_forks.py"))],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            text=True,
+        )
+    return _Forks.server
+
+
+def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
+    """Snakemake on the test config (by default) in `workdir`: `python -m snakemake ARGS
+    --configfile CONFIG`, forked from a process that imported Snakemake once
+    (tests/snakemake_forks.py). A run that hangs fails its test after 20 minutes rather than
+    holding CI until its own limit."""
+    import json
+    import os
+    import select
+    import signal
+    import subprocess
+    import tempfile
+    from importlib.util import find_spec
+
+    args = [*args, "--configfile", str(config)]
+    server = _snakemake_server()
+    with tempfile.TemporaryDirectory() as folder:
+        out, err = Path(folder) / "stdout", Path(folder) / "stderr"
+        request = {
+            "args": args,
+            "argv0": str(Path(find_spec("snakemake").origin).with_name("__main__.py")),
+            "cwd": str(workdir),
+            "env": dict(os.environ),
+            "out": str(out),
+            "err": str(err),
+        }
+        server.stdin.write(json.dumps(request) + "\n")
+        server.stdin.flush()
+        pid = json.loads(server.stdout.readline())["pid"]
+        if not select.select([server.stdout], [], [], 1200)[0]:
+            os.killpg(pid, signal.SIGKILL)
+            server.kill()
+            _Forks.server = None
+            raise subprocess.TimeoutExpired(["snakemake", *args], 1200)
+        returncode = json.loads(server.stdout.readline())["returncode"]
+        return subprocess.CompletedProcess(
+            [sys.executable, "-m", "snakemake", *args],
+            returncode,
+            out.read_text(errors="replace"),
+            err.read_text(errors="replace"),
+        )
 
 
 @pytest.fixture(scope="session")

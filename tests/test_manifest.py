@@ -11,7 +11,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import CONFIG, REPO, scratch_workflow
+from conftest import CONFIG, REPO, run_snakemake, scratch_workflow
 
 from icub_workflow.manifest import (
     arithmetic_environment,
@@ -158,22 +158,7 @@ def test_openblas_is_held_at_haswell_only_on_a_cpu_that_has_it(tmp_path):
 
 
 def _verify(workdir: Path, config: Path) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "snakemake",
-            "-c1",
-            "--nolock",
-            "verify",
-            "--configfile",
-            str(config),
-        ],
-        cwd=workdir,
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
+    return run_snakemake(workdir, "-c1", "--nolock", "verify", config=config)
 
 
 def _machine() -> str:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import copy
 import csv
 import subprocess
-import sys
 from pathlib import Path
 
 import cv2
@@ -63,12 +62,7 @@ def test_bad_config_stops_the_run_before_any_job(workdir, tmp_path):
     bad["seed"] = -5
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(bad))
-    result = subprocess.run(
-        [sys.executable, "-m", "snakemake", "-n", "--configfile", str(path)],
-        cwd=workdir,
-        capture_output=True,
-        text=True,
-    )
+    result = run_snakemake(workdir, "-n", config=path)
     assert result.returncode != 0
     assert "seed" in result.stderr + result.stdout
     assert not (workdir / "data").exists()

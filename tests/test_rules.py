@@ -4,12 +4,10 @@ the resources it needs beyond the profiles' defaults."""
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 
 import pytest
 import yaml
-from conftest import REPO
+from conftest import REPO, run_snakemake
 
 RULE_FILES = [REPO / "Snakefile", *sorted((REPO / "workflow" / "rules").glob("*.smk"))]
 PROFILES = sorted((REPO / "workflow" / "profiles").glob("*/config.yaml"))
@@ -18,13 +16,8 @@ PROFILES = sorted((REPO / "workflow" / "profiles").glob("*/config.yaml"))
 def _rules(*config: str) -> set[str]:
     """The rules Snakemake defines for the default config, with `config` laid over it."""
     args = ["--config", *config] if config else []
-    result = subprocess.run(
-        [sys.executable, "-m", "snakemake", "--list-rules", *args],
-        cwd=REPO,
-        capture_output=True,
-        text=True,
-        check=True,
-    )
+    result = run_snakemake(REPO, "--list-rules", *args, config=REPO / "config" / "config.yaml")
+    assert result.returncode == 0, result.stderr[-3000:]
     # a rule's line starts at the margin; its docstring's wrapped lines are indented
     return {line.split()[0] for line in result.stdout.splitlines() if line[:1].strip()}
 
