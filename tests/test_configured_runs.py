@@ -71,7 +71,8 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
             load_test_config() | {"runs": {"half_lr": {"network": {"learning_rate": 0.0375}}}}
         )
     )
-    jobs = planned(run_snakemake(built, "-n", config=path))
+    result = run_snakemake(built, "-n", config=path)
+    jobs = planned(result)
     assert jobs == {
         "train": 1,  # the run's networks in one job (its part `all`)
         "evaluate": 1,  # the rules of every run
@@ -79,8 +80,7 @@ def test_a_run_in_config_runs_alone_and_reruns_nothing_of_the_main_run(built, tm
         "figure5": 1,
         "all": 1,
     }
-    plan = run_snakemake(built, "-n", config=path).stdout
-    assert "data/runs/half_lr/eval/anova.json" in plan
+    assert "data/runs/half_lr/eval/anova.json" in result.stdout
 
 
 @pytest.mark.dryrun
