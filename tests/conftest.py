@@ -105,6 +105,14 @@ def _snakemake_server():
     return _Forks.server
 
 
+def pytest_sessionfinish(session) -> None:
+    """The Snakemake server ends with its process, which waits for it (its CPU is the tests')."""
+    if _Forks.server is not None:
+        _Forks.server.stdin.close()
+        _Forks.server.wait()
+        _Forks.server = None
+
+
 def run_snakemake(workdir: Path, *args: str, config: Path = TEST_CONFIG):
     """Snakemake on the test config (by default) in `workdir`: `python -m snakemake ARGS
     --configfile CONFIG`, forked from a process that imported Snakemake once
