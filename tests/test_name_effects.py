@@ -14,6 +14,8 @@ from scipy import stats
 
 from icub_affordance.analysis.name_effects import (
     declared_tests,
+    error_cells,
+    form_summary,
     reactivation,
     reactivation_tests,
     word_tests,
@@ -164,7 +166,12 @@ def test_the_chapter_says_each_tests_verdict_in_its_own_words(tmp_path):
     def effects(form, effect, rng):
         return (0.03 if effect == "congruency" else 0.0) + rng.normal(0, 0.002, len(SEEDS))
 
-    table = word_tests(estimates_of(effects), config["words"])
+    estimates = estimates_of(effects)
+    table = word_tests(estimates, config["words"])
+    form_summary(estimates, config["words"]).to_csv(tmp_path / "f.csv", index=False)
+    pd.DataFrame([{"mode": "closed_loop", "form": "name", "congruent": "False", "size": "small",
+                   "wrong_grip": 0.5, "cue": "first_step", "seed": 141}]).to_csv(
+        tmp_path / "c.csv", index=False)  # fmt: skip
     table["direction"] = direction_codes(table["direction"])
     contrasts = pd.DataFrame([{"cue": cue, "seed": s, "network": 0, "contrast": 0.1 + s / 1e4}
                               for cue in config["words"]["cues"] for s in SEEDS])  # fmt: skip
@@ -172,15 +179,39 @@ def test_the_chapter_says_each_tests_verdict_in_its_own_words(tmp_path):
     react["direction"] = direction_codes(react["direction"])
     table.to_csv(tmp_path / "s.csv", index=False)
     react.to_csv(tmp_path / "r.csv", index=False)
-    inputs = {"words_summary.csv": tmp_path / "s.csv", "words_reactivation.csv": tmp_path / "r.csv"}
+    saved = {"summary": "s", "reactivation": "r", "by_form": "f", "error_cells": "c"}
+    inputs = {f"words_{name}.csv": tmp_path / f"{short}.csv" for name, short in saved.items()}
     values, tables = words_page(inputs, config)
     assert values["congruency_count"].text == "confirmed in 8 of 8"
     assert values["equivalence_count"].text == "equivalent in 8 of 8"
-    assert values["react_first_step_verdict"].text == "nearest its own object's image state"
+    assert values["react_first_step_verdict"].text == (
+        "nearer its own object's image state than the others'"
+    )
     assert values["react_verdict"].text == (
-        "nearest its own object's image state under both cue timings"
+        "nearer its own object's image state than the others' under both cue timings"
     )
     assert len(tables["words"]) == 24
     said, rows = score_rows(values)
     assert [r["chapter"] for r in rows] == ["words"] * 3
     traced({"words": values, "index": said})  # every claim rests on values the page has
+
+
+def test_the_error_cells_count_each_network_and_object_once():
+    """A cell's wrong-grip rate: each network x object's mean over its trials, then the mean
+    over networks; grasping trials left out."""
+    rows = []
+    for network, obj, size, congruent, wrong in [
+        (0, "small_ball", "small", "False", [1, 1, 0, 0]),
+        (1, "small_ball", "small", "False", [1, 1, 1, 1]),
+        (0, "big_ball", "large", "True", [0, 0, 0, 0]),
+    ]:
+        rows += [{"task": "categorisation", "mode": "closed_loop", "form": "name",
+                  "network": network, "object": obj, "size": size, "congruent": congruent,
+                  "wrong_grip": w} for w in wrong]  # fmt: skip
+    rows.append({"task": "grasping", "mode": "closed_loop", "form": "name", "network": 0,
+                 "object": "small_ball", "size": "small", "congruent": "",
+                 "wrong_grip": 1})  # fmt: skip
+    cells = error_cells(pd.DataFrame(rows)).set_index(["congruent", "size"])["wrong_grip"]
+    assert cells[("False", "small")] == pytest.approx((0.5 + 1.0) / 2)
+    assert cells[("True", "large")] == 0
+    assert len(cells) == 2

@@ -1,6 +1,7 @@
 """What a training or measuring job does, for the scripts that run it: one run's part or run
 per job (rules train, measures) or several runs in one process (the measured runs of a seed, rule
-``measured_<group>``: one start-up, one load of the compiled trainer, for a dozen runs).
+``measured``, a job per seed's group: one start-up, one load of the compiled trainer, for a
+dozen runs).
 
 Plain functions of paths and settings, without Snakemake, so that every rule that runs a step
 runs the same code, and a run's files are the same bytes whichever rule made them.
@@ -238,36 +239,3 @@ def signature_tables(
     }.items():
         with atomic_path(outputs[name]) as tmp:
             table.to_csv(tmp, index=False, float_format="%.6g")
-
-
-def word_trials(
-    materials: Materials,
-    network: Mapping,
-    weights_files: Sequence[str],
-    measures: Sequence[str],
-    step: int,
-    trials_path: str,
-    json_path: str,
-) -> None:
-    """A words replication (config ``words``): every test trial of its networks in every form,
-    scored on each declared measure (``trials_path``); each form's contrasts over its networks
-    and each network's reactivation contrast at ``step`` (``json_path``)."""
-    from icub_affordance.analysis.name_effects import reactivation
-    from icub_affordance.analysis.reading_tests import analyse_measures
-    from icub_affordance.trials.forms import form_states, measure_forms
-
-    n_networks = network["networks"]
-    cue, target = network["categorisation_cue"], network["target"]
-    rows, contrasts = [], []
-    for net, weights in load_weights(weights_files):
-        mapping = mapping_of(net, n_networks)
-        rows += measure_forms(materials, weights, net, mapping, cue, target)
-        trials, states = form_states(materials, weights, mapping, cue, target, step)
-        contrast = reactivation(trials, states["name"], states["image"])
-        contrasts.append({"network": net, "contrast": contrast})
-    with atomic_path(trials_path) as tmp:
-        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.6f")
-    table = pd.read_csv(trials_path, keep_default_na=False)  # as readers see it
-    forms = {form: analyse_measures(table[table["form"] == form], list(measures)) for form in FORMS}
-    result = {"forms": forms, "reactivation": contrasts}
-    write_text(json_path, json.dumps(result, indent=2, sort_keys=True) + "\n")

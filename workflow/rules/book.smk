@@ -60,6 +60,7 @@ BOOK_DATA = {
     "words_summary.csv": "data/words/summary.csv",
     "words_by_form.csv": "data/words/by_form.csv",
     "words_reactivation.csv": "data/words/reactivation.csv",
+    "words_error_cells.csv": "data/words/error_cells.csv",
     "words_effects.png": "data/words/effects.png",
     "claims_summary.csv": "data/claims/summary.csv",
     "claims_replications.csv": "data/claims/replications.csv",

@@ -35,9 +35,11 @@ rule word_trials:
 
 rule words:
     """The declared family over the replications (data/words/summary.csv), their estimates,
-    every form's effects, and the reactivation tests over each network's contrast."""
+    every form's effects, the reactivation tests over each network's contrast, and each
+    replication's wrong-grip rate per congruency x size cell."""
     input:
         json=[PLAN.path(row["run"], "eval/words.json") for row in PLAN.words],
+        trials=[PLAN.path(row["run"], "eval/words.csv") for row in PLAN.words],
         code=script_code("words"),
     output:
         summary="data/words/summary.csv",
@@ -45,6 +47,7 @@ rule words:
         by_form="data/words/by_form.csv",
         reactivation="data/words/reactivation.csv",
         contrasts="data/words/contrasts.csv",
+        error_cells="data/words/error_cells.csv",
     params:
         table=PLAN.words,
         declaration=settings(config["words"]),

@@ -4,7 +4,7 @@
 
 from icub_affordance.files import redirect_log
 from icub_affordance.learning.materials import load_materials
-from icub_workflow.steps import word_trials
+from icub_workflow.name_trials import word_trials
 
 with redirect_log(snakemake.log[0]):
     word_trials(

@@ -1,7 +1,8 @@
 """Names against images over the words study's replications: the declared family
 (data/words/summary.csv), the replications' estimates (replications.csv), every form's effects
-(by_form.csv, a figure's points) and the reactivation tests (reactivation.csv, over each
-network's contrast: contrasts.csv)."""
+(by_form.csv, a figure's points), the reactivation tests (reactivation.csv, over each
+network's contrast: contrasts.csv) and each replication's wrong-grip rate per congruency x size
+cell (error_cells.csv)."""
 
 import json
 from pathlib import Path
@@ -9,6 +10,7 @@ from pathlib import Path
 import pandas as pd
 
 from icub_affordance.analysis.name_effects import (
+    error_cells,
     form_summary,
     reactivation_tests,
     replication_estimates,
@@ -29,6 +31,14 @@ with redirect_log(snakemake.log[0]):
             for network in result["reactivation"]
         ]
     )
+    cells = pd.concat(
+        [
+            error_cells(pd.read_csv(path, keep_default_na=False)).assign(
+                cue=row["cue"], seed=row["seed"]
+            )
+            for row, path in zip(table, snakemake.input.trials, strict=True)
+        ]
+    )
     tests = word_tests(estimates, declaration)
     tests["direction"] = direction_codes(tests["direction"])
     reactivation = reactivation_tests(contrasts, declaration)
@@ -40,6 +50,7 @@ with redirect_log(snakemake.log[0]):
             (snakemake.output.by_form, form_summary(estimates, declaration)),
             (snakemake.output.reactivation, reactivation),
             (snakemake.output.contrasts, contrasts),
+            (snakemake.output.error_cells, cells),
         ]
     )
     print(tests.to_string())

@@ -205,3 +205,16 @@ def form_summary(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.
             | {k: term[k] for k in ("estimate", "ci_low", "ci_high", "p")}
         )
     return pd.DataFrame(rows)
+
+
+def error_cells(trials: pd.DataFrame) -> pd.DataFrame:
+    """Each congruency x size cell's wrong-grip rate in one replication's categorisation trials
+    (``trials``: its words.csv), per test mode and form: each network x object's rate once,
+    then the mean over networks. Where the two effects coincide, these say which cell carries
+    them (with four objects each cell is one object)."""
+    cat = trials[trials["task"] == "categorisation"]
+    per_object = cat.groupby(["mode", "form", "congruent", "size", "network", "object"])[
+        "wrong_grip"
+    ].mean()
+    cells = per_object.groupby(["mode", "form", "congruent", "size"]).mean()
+    return cells.rename("wrong_grip").reset_index()

@@ -1,5 +1,7 @@
 """The chapter "Words" (config ``words``): the declared family's values and verdicts, the
-reactivation's, the table of the tests, and the front page's scorecard rows."""
+reactivation's, what qualifies them (an equivalence where the image's own effect is inside the
+margin; two effects that read the same errors), the table of the tests, and the front page's
+scorecard rows."""
 
 from __future__ import annotations
 
@@ -13,12 +15,14 @@ from . import text, words
 #: What each declared test asks, in the tables.
 QUESTIONS = {
     "congruency": "The name alone: congruent lower (incongruent − congruent)",
-    "equivalence": "The name's congruency effect as the image's (within the margin)",
+    "equivalence": "The name's congruency effect minus the image's, within the margin",
     "size": "The name alone: large lower (small − large)",
 }
 #: The order the verdict words are counted in, per kind of test.
 ORDER = {"congruency": words.CLAIM_WORDS, "size": words.CLAIM_WORDS,
          "equivalence": words.EQUIVALENCE_WORDS}  # fmt: skip
+#: Two estimates this close are one number (the same cells read by two contrasts).
+SAME = 1e-12
 
 
 def word_key(row) -> str:
@@ -34,18 +38,97 @@ def _count(said: list[str], order: Mapping[str, str]) -> str:
     return ", ".join(parts)
 
 
+def _measure(name: str) -> str:
+    return text.CLAIM_PARTS.get(name, name.replace("_", " "))
+
+
+def _interval(row) -> str:
+    if not np.isfinite(row["estimate"]):
+        return "–"
+    if not np.isfinite(row["ci_low"]):
+        return f"{row['estimate']:+.4f} (no test)"
+    return f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]"
+
+
+def _equivalence_notes(summary: pd.DataFrame, by_form: pd.DataFrame, alpha: float) -> dict:
+    """Of the conditions whose name-image difference is shown within the margin: in how many
+    the image's own congruency effect lies inside the margin too (a name with no effect would
+    pass there as well), and in how many the difference itself has p below alpha (unadjusted,
+    exploration)."""
+    image = by_form[(by_form["form"] == "image") & (by_form["effect"] == "congruency")]
+    image = image.set_index(["cue", "mode", "measure"])["estimate"]
+    shown = summary[(summary["test"] == "equivalence") & (summary["direction"] == "paper")]
+    inside = [
+        r
+        for _, r in shown.iterrows()
+        if abs(image[(r["cue"], r["mode"], r["measure"])]) < r["margin"]
+    ]
+    differing = [r for _, r in shown.iterrows() if r["p_difference"] < alpha]
+    rests = tuple(f"words.{word_key(r)}_p_holm" for _, r in shown.iterrows())
+    note = ""
+    if inside:
+        note += (f"; in {len(inside)} of these the image's own effect lies inside the margin, "
+                 "where a name with no effect would pass too")  # fmt: skip
+    if differing:
+        note += (f"; in {len(differing)} the difference itself has p below {alpha:g} before "
+                 "adjustment (exploration)")  # fmt: skip
+    return {
+        "equivalence_note": text.Claim(note, rests or ("words.alpha",)),
+        "equivalent_inside_margin": len(inside),
+        "equivalent_differing": len(differing),
+    }
+
+
+def _same_errors(summary: pd.DataFrame, cells: pd.DataFrame) -> dict:
+    """On the wrong-grip rate, the conditions where the name's size and congruency effects
+    are one number, and the congruency x size cells that hold the name's wrong grips there
+    (``error_cells.csv``, the mean over replications)."""
+    wrong = summary[summary["measure"] == "wrong_grip"].set_index(["cue", "mode", "test"])
+    conditions = list(dict.fromkeys(zip(wrong.index.get_level_values(0),
+                                        wrong.index.get_level_values(1), strict=True)))  # fmt: skip
+    same = [(cue, mode) for cue, mode in conditions
+            if abs(wrong.loc[(cue, mode, "congruency"), "estimate"]
+                   - wrong.loc[(cue, mode, "size"), "estimate"]) < SAME]  # fmt: skip
+    named = cells[cells["form"] == "name"]
+    carrying = set()
+    for cue, mode in same:
+        rates = named[(named["cue"] == cue) & (named["mode"] == mode)]
+        rates = rates.groupby(["congruent", "size"])["wrong_grip"].mean()
+        carrying |= {cell for cell, rate in rates.items() if rate > 0}
+    rests = tuple(f"words.{word_key({'cue': c, 'mode': m, 'measure': 'wrong_grip', 'test': t})}"
+                  f"_estimate" for c, m in same for t in ("congruency", "size"))  # fmt: skip
+    if not same:
+        return {"size_note": text.Claim("", ("words.size_count",)), "same_errors": ""}
+    where = ("every wrong grip fell on a small object asked for the grip it does not afford "
+             "(incongruent and small), the one cell both contrasts read"
+             if carrying == {("False", "small")}
+             else "their wrong grips fall in cells both contrasts read alike")  # fmt: skip
+    said = (f"on the wrong-grip rate the name's size effect is its congruency effect's number "
+            f"in {len(same)} of {len(conditions)} conditions: {where}, so these are one finding "
+            "read twice")  # fmt: skip
+    return {
+        "size_note": text.Claim(f" ({said})", rests),
+        "same_errors": text.Claim(said[0].upper() + said[1:] + ".", rests),
+    }
+
+
 def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter's values (each test's numbers and ``text.Claim`` verdict, per kind of test
-    the count of verdicts over its conditions, the reactivation per cue timing) and its table,
-    a row per declared test."""
+    the count of verdicts over its conditions and what qualifies them, the reactivation per cue
+    timing) and its table, a row per declared test."""
     summary = pd.read_csv(inputs["words_summary.csv"], keep_default_na=False, na_values=[""])
     reactivation = pd.read_csv(inputs["words_reactivation.csv"])
+    by_form = pd.read_csv(inputs["words_by_form.csv"])
+    cells = pd.read_csv(inputs["words_error_cells.csv"], dtype={"congruent": str})
     declaration = config["words"]
+    alpha = float(declaration["alpha"])
     values: dict = {
         "replications": int(summary["replications"].max()),
+        "fewest_estimable": int(summary["estimable"].min()),
         "networks": int(config["network"]["networks"]),
+        "family_declared": len(summary),
         "family_size": int(summary["family_size"].iloc[0]),
-        "alpha": float(declaration["alpha"]),
+        "alpha": alpha,
         "seeds": f"{min(declaration['seeds'])}-{max(declaration['seeds'])}",
         "units_per_name": int(config["names"]["units_per_name"]),
         "step": int(declaration["reactivation"]["step"]),
@@ -56,21 +139,12 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         word = ORDER[row["test"]][row["direction"]]
         values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p",
                                                          "p_holm")}  # fmt: skip
-        values[f"{key}_verdict"] = text.Claim(
-            word, (f"words.{key}_estimate", f"words.{key}_p_holm")
-        )
-        interval = "–"
-        if np.isfinite(row["estimate"]):
-            interval = f"{row['estimate']:+.4f}" + (
-                f" [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]"
-                if np.isfinite(row["ci_low"])
-                else " (no test)"
-            )
+        rests = (f"words.{key}_estimate", f"words.{key}_p_holm")
+        values[f"{key}_verdict"] = text.Claim(word, rests)
         rows.append({
-            "question": QUESTIONS[row["test"]], "measure": text.CLAIM_PARTS[row["measure"]]
-            if row["measure"] in text.CLAIM_PARTS else row["measure"].replace("_", " "),
-            "cue": text.CLAIM_PARTS[row["cue"]], "test": text.CLAIM_PARTS[row["mode"]],
-            "estimate [95% interval]": interval,
+            "test": QUESTIONS[row["test"]], "measure": _measure(row["measure"]),
+            "cue": text.CLAIM_PARTS[row["cue"]], "test mode": text.CLAIM_PARTS[row["mode"]],
+            "estimate [95% interval]": _interval(row),
             "margin": "–" if not np.isfinite(row["margin"]) else f"±{row['margin']:g}",
             "replications with an estimate": f"{int(row['estimable'])} of "
                                              f"{int(row['replications'])}",
@@ -80,6 +154,7 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         said = [ORDER[test][d] for d in group["direction"]]
         rests = tuple(f"words.{word_key(r)}_p_holm" for _, r in group.iterrows())
         values[f"{test}_count"] = text.Claim(_count(said, ORDER[test]), rests)
+    values |= _equivalence_notes(summary, by_form, alpha) | _same_errors(summary, cells)
     for _, row in reactivation.iterrows():
         key = f"react_{row['cue']}"
         values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p",
@@ -96,31 +171,43 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     return values, {"words": pd.DataFrame(rows)}
 
 
+def _ranges(values: Mapping, test: str, what: str) -> str:
+    """A test's estimates over its conditions, measure by measure (their units differ)."""
+    said = []
+    for measure in ("rmse_correct", "wrong_grip"):
+        keys = [k for k in values if k.startswith("w_") and k.endswith(f"_{test}_estimate")
+                and f"_{measure}_" in k]  # fmt: skip
+        found = [float(values[k]) for k in keys if np.isfinite(values[k])]
+        if found:
+            said.append(f"{_measure(measure)} {min(found):+.4f} to {max(found):+.4f}")
+    return f"{what}: " + "; ".join(said) if said else "no estimate"
+
+
 def score_rows(values: Mapping) -> tuple[dict, list[dict]]:
     """The front page's rows for the words study: the name's congruency effect, its
     equivalence with the image's and the reactivation, each a count of verdicts (``index``'s
     ``score_words_*``) resting on the chapter's tests."""
-    scale = f"{values['replications']} replications × {values['networks']} networks per condition"
+    scale = (f"{values['replications']} replications × {values['networks']} networks per "
+             f"condition ({values['fewest_estimable']} or more with an estimate)")  # fmt: skip
     said, rows = {}, []
-    asked = {"congruency": "A name alone gives the congruency effect",
-             "equivalence": "A name's effect equals the image's (within the margin)"}  # fmt: skip
-    for test, claim in asked.items():
+    asked = {"congruency": ("A name alone gives the congruency effect", "name alone"),
+             "equivalence": ("A name's effect is within a margin of the image's",
+                             "name − image")}  # fmt: skip
+    for test, (claim, what) in asked.items():
         count = values[f"{test}_count"]
-        said[f"score_words_{test}_verdict"] = text.Claim(count.text, count.rests_on)
-        keys = [k for k in values if k.startswith("w_") and k.endswith(f"_{test}_estimate")]
-        found = [float(values[k]) for k in keys if np.isfinite(values[k])]
-        what = "name − image" if test == "equivalence" else "name alone"
-        numbers = (f"{what}: {min(found):+.4f} to {max(found):+.4f} over the {len(found)} "
-                   "conditions with an estimate" if found else "no estimate")  # fmt: skip
+        note = values["equivalence_note"].text if test == "equivalence" else ""
+        said[f"score_words_{test}_verdict"] = text.Claim(count.text + note, count.rests_on)
         rows.append({"claim or question": claim,
                      "paper": "proposed as its next step, not run",
-                     "this build": numbers,
-                     "verdict": count.text, "measured at": scale, "chapter": "words"})  # fmt: skip
+                     "this build": _ranges(values, test, what),
+                     "verdict": count.text + note, "measured at": scale,
+                     "chapter": "words"})  # fmt: skip
     cues = [k.removeprefix("react_").removesuffix("_estimate") for k in values
             if k.startswith("react_") and k.endswith("_estimate")]  # fmt: skip
     word = values["react_verdict"]
     said["score_words_reactivation_verdict"] = text.Claim(word.text, word.rests_on)
-    rows.append({"claim or question": "A name's hidden state is nearest its own object's image's",
+    rows.append({"claim or question": "A name's hidden state is nearer its own object's image "
+                                      "state than the others'",
                  "paper": "not asked",
                  "this build": "; ".join(
                      f"{text.CLAIM_PARTS[cue]}: {values[f'react_{cue}_estimate']:+.3f}, "

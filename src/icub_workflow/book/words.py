@@ -83,7 +83,7 @@ EQUIVALENCE_WORDS = {"paper": "equivalent", "none": "not shown equivalent",
                      "not assessable": "not assessable"}  # fmt: skip
 #: The words study's reactivation test (``name_effects.reactivation_tests``), for each code.
 REACTIVATION_WORDS = {
-    "paper": "nearest its own object's image state",
+    "paper": "nearer its own object's image state than the others'",
     "reversed": "farther from its own object's image state than from the others'",
     "none": "not shown nearer its own object's image state than the others'",
     "not assessable": "not assessable",
