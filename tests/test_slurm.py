@@ -19,7 +19,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import REPO, TEST_CONFIG, scratch_workflow
+from conftest import REPO, TEST_CONFIG, load_test_config, scratch_workflow
 
 pytestmark = pytest.mark.reruns
 
@@ -137,10 +137,17 @@ def test_the_test_config_on_slurm_is_the_local_build_and_survives_a_failed_job(
 
     # the replication group: a run trained in one job (part `all`: the cue ablation; the test
     # config, like the default, explores no robot variant) went as one job with its evaluation
-    # and statistics; the confirmation's training, which only the robot test reads, alone
+    # and statistics, each words replication with its tests in every form; the confirmation's
+    # training, which only the robot test reads, alone
     kinds = [Path(p).parent.name for p in submitted.values()]
     trained = sorted(k for k in kinds if k.startswith("group_") and "train" in k)
-    assert trained == ["group_replication_evaluate_stats_train", "group_replication_train"], kinds
+    study = load_test_config()["words"]
+    words = len(study["seeds"]) * len(study["cues"])
+    assert trained == [
+        "group_replication_evaluate_stats_train",
+        "group_replication_train",
+        *["group_replication_train_word_trials"] * words,
+    ], kinds
 
     # the book says where its build ran
     timeline = json.loads((work / "book/_data/timeline.json").read_text())

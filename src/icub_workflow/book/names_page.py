@@ -67,13 +67,14 @@ def _equivalence_notes(summary: pd.DataFrame, by_form: pd.DataFrame, alpha: floa
     rests = tuple(f"words.{word_key(r)}_p_holm" for _, r in shown.iterrows())
     note = ""
     if inside:
-        note += (f"; in {len(inside)} of these the image's own effect lies inside the margin, "
-                 "where a name with no effect would pass too")  # fmt: skip
+        note = f" (in {len(inside)} the image's own effect is inside the margin too)"
+    differs = ""
     if differing:
-        note += (f"; in {len(differing)} the difference itself has p below {alpha:g} before "
-                 "adjustment (exploration)")  # fmt: skip
+        differs = (f"; of the conditions shown equivalent, in {len(differing)} the difference "
+                   f"itself has p below {alpha:g} before adjustment (exploration)")  # fmt: skip
     return {
         "equivalence_note": text.Claim(note, rests or ("words.alpha",)),
+        "differing_note": text.Claim(differs, rests or ("words.alpha",)),
         "equivalent_inside_margin": len(inside),
         "equivalent_differing": len(differing),
     }
@@ -106,8 +107,10 @@ def _same_errors(summary: pd.DataFrame, cells: pd.DataFrame) -> dict:
     said = (f"on the wrong-grip rate the name's size effect is its congruency effect's number "
             f"in {len(same)} of {len(conditions)} conditions: {where}, so these are one finding "
             "read twice")  # fmt: skip
+    short = (f" (on the wrong-grip rate, in {len(same)} of {len(conditions)} conditions the "
+             "same errors as the congruency effect's)")  # fmt: skip
     return {
-        "size_note": text.Claim(f" ({said})", rests),
+        "size_note": text.Claim(short, rests),
         "same_errors": text.Claim(said[0].upper() + said[1:] + ".", rests),
     }
 
