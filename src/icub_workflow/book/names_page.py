@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from . import text, words
+from .scorecard import interval
 
 #: What each declared test asks, in the tables.
 QUESTIONS = {
@@ -40,14 +41,6 @@ def _count(said: list[str], order: Mapping[str, str]) -> str:
 
 def _measure(name: str) -> str:
     return text.CLAIM_PARTS.get(name, name.replace("_", " "))
-
-
-def _interval(row) -> str:
-    if not np.isfinite(row["estimate"]):
-        return "–"
-    if not np.isfinite(row["ci_low"]):
-        return f"{row['estimate']:+.4f} (no test)"
-    return f"{row['estimate']:+.4f} [{row['ci_low']:+.4f}, {row['ci_high']:+.4f}]"
 
 
 def _equivalence_notes(summary: pd.DataFrame, by_form: pd.DataFrame, alpha: float) -> dict:
@@ -147,7 +140,7 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         rows.append({
             "test": QUESTIONS[row["test"]], "measure": _measure(row["measure"]),
             "cue": text.CLAIM_PARTS[row["cue"]], "test mode": text.CLAIM_PARTS[row["mode"]],
-            "estimate [95% interval]": _interval(row),
+            "estimate [95% interval]": interval(row),
             "margin": "–" if not np.isfinite(row["margin"]) else f"±{row['margin']:g}",
             "replications with an estimate": f"{int(row['estimable'])} of "
                                              f"{int(row['replications'])}",

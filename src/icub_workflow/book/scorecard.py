@@ -69,7 +69,7 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.Da
         rows.append({
             "claim": text.CLAIM_PARTS[row["effect"]], "measure": text.CLAIM_PARTS[row["measure"]],
             "cue": text.CLAIM_PARTS[row["cue"]], "test": text.CLAIM_PARTS[row["mode"]],
-            "estimate [95% interval]": _interval(row),
+            "estimate [95% interval]": interval(row),
             "replications with an estimate": f"{int(row['estimable'])} of "
                                              f"{int(row['replications'])}",
             "Holm p": row["p_holm"], "verdict": word,
@@ -176,7 +176,8 @@ def by_condition(summary: pd.DataFrame) -> dict[str, text.Claim]:
     return values
 
 
-def _interval(row) -> str:
+def interval(row) -> str:
+    """A test's estimate and 95% interval as the tables show them ("no test" without one)."""
     if not np.isfinite(row["estimate"]):
         return "–"
     if not np.isfinite(row["ci_low"]):
