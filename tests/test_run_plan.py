@@ -66,6 +66,36 @@ def test_each_reading_is_a_run_of_its_settings_at_each_confirmation_seed(plan, c
         assert len(demos) == 1
 
 
+def test_the_confirmation_and_the_signatures_read_the_plans_rows_of_the_declared_readings(
+    plan, config
+):
+    """The plan says which replications back the declared tests (no rule filters the readings
+    itself): the confirmation's are the readings at the config's Goal response under each
+    declared cue, one per seed; the signatures' and the learning curves' those of the config's
+    own cue among them; the readings chapter's other Goal map is the first seed's."""
+    goal, cues = config["soms"]["goal_response"], config["confirmation"]["cues"]
+    own_cue = config["network"]["categorisation_cue"]
+    seeds = config["confirmation"]["seeds"]
+    claims = plan.claim_rows
+    assert sorted((row["cue"], row["seed"]) for row in claims) == sorted(
+        (cue, seed) for cue in cues for seed in seeds
+    )
+    for row in claims:
+        run = plan.config(row["run"])
+        assert (run["network"]["categorisation_cue"], run["soms"]["goal_response"]) == (
+            row["cue"],
+            goal,
+        )
+    own = plan.own_reading_rows
+    assert [row["seed"] for row in own] == seeds
+    assert {plan.config(row["run"])["network"]["categorisation_cue"] for row in own} == {own_cue}
+    other_goal = next(g for g in config["readings"]["goal_response"] if g != goal)
+    first = plan.first_reading_run(other_goal)
+    assert plan.config(first)["seed"] == seeds[0]
+    assert plan.config(first)["soms"]["goal_response"] == other_goal
+    assert plan.first_reading_run("no_such_response") is None
+
+
 def test_runs_share_demonstrations_and_maps_exactly_when_their_settings_are_equal(plan, config):
     for run in plan.runs:
         for stage in ("demos", "soms"):

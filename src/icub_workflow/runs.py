@@ -337,6 +337,34 @@ class RunPlan:
         ]
         return list(dict.fromkeys(runs))
 
+    @property
+    def claim_rows(self) -> list[dict[str, Any]]:
+        """The confirmation's replications: the readings' rows at the config's Goal response
+        under each declared cue timing (config ``confirmation.cues``), one per seed."""
+        own = self.own.config
+        goal, cues = own["soms"]["goal_response"], own["confirmation"]["cues"]
+        return [r for r in self.readings if r["goal_response"] == goal and r["cue"] in cues]
+
+    @property
+    def own_reading_rows(self) -> list[dict[str, Any]]:
+        """The replications of the config's own reading (its cue timing and Goal response),
+        among the confirmation's: the signatures' networks and the learning curves' row."""
+        cue = self.own.config["network"]["categorisation_cue"]
+        return [row for row in self.claim_rows if row["cue"] == cue]
+
+    def first_reading_run(self, goal_response: str) -> str | None:
+        """The run of the first replication (the readings' first seed) of a reading under this
+        Goal response, or None (no reading uses it)."""
+        first_seed = self.readings[0]["seed"] if self.readings else None
+        return next(
+            (
+                row["run"]
+                for row in self.readings
+                if row["goal_response"] == goal_response and row["seed"] == first_seed
+            ),
+            None,
+        )
+
     def measured(self, run: str) -> bool:
         """A run of the readings or the size study: its trials scored on the declared measures."""
         return run in {row["run"] for row in [*self.readings, *self.size_dose]}

@@ -76,19 +76,13 @@ BOOK_DATA = {
 }
 # the Goal map under the other response, if a reading uses it (the readings chapter): its first
 # replication's
-_GROWS = [
-    r["run"]
-    for r in PLAN.readings
-    if r["goal_response"] == "grows" and r["seed"] == PLAN.readings[0]["seed"]
-]
-if _GROWS and config["soms"]["goal_response"] != "grows":
-    BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(
-        PLAN.stage_run(_GROWS[0], "soms"), "soms/soms.npz"
-    )
+_GROWS = PLAN.first_reading_run("grows")
+if _GROWS is not None and config["soms"]["goal_response"] != "grows":
+    BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(PLAN.stage_run(_GROWS, "soms"), "soms/soms.npz")
 
 # With `--config robustness=True` the book also shows the sweep and its cost (robustness.md);
 # without, that page says that this build did not run them.
-if config["robustness"]:
+if PLAN.robustness:
     BOOK_DATA |= {
         "sweep_points.csv": "data/sweep/points.csv",
         "sweep_summary.csv": "data/sweep/summary.csv",
@@ -100,7 +94,7 @@ if config["robustness"]:
 # sentence and table the pages show (data/book/findings.json, data/book/tables/), from every
 # data file the book stages (BOOK_DATA); the pages only glue and display them. It reads no figure.
 FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif"))]
-FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if config["robustness"] else ())]
+FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if PLAN.robustness else ())]
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
     "robot", "size_dose", "signatures", "confirmation", "names", "words",

@@ -5,9 +5,9 @@
 # power from the declared pilot. The forest plot is a plot rule.
 
 
-CLAIM_MEASURES = [PLAN.path(row["run"], "eval/measures.json") for row in CLAIM_ROWS]
-CLAIM_TRIALS = [PLAN.path(row["run"], "eval/measures.csv") for row in CLAIM_ROWS]
-CLAIM_CURVES = [path for row in OWN_READING_ROWS for path in curve_files(row["run"])]
+CLAIM_MEASURES = [PLAN.path(row["run"], "eval/measures.json") for row in PLAN.claim_rows]
+CLAIM_TRIALS = [PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.claim_rows]
+CLAIM_CURVES = [path for row in PLAN.own_reading_rows for path in curve_files(row["run"])]
 
 
 rule claims:
@@ -27,9 +27,9 @@ rule claims:
         # the files in the folders named above (measured_inputs)
         analyses=CLAIM_MEASURES,
         curves=CLAIM_CURVES,
-        rows=CLAIM_ROWS,
+        rows=PLAN.claim_rows,
         declaration=settings(config["confirmation"]),
-        seeds=[row["seed"] for row in OWN_READING_ROWS],
+        seeds=[row["seed"] for row in PLAN.own_reading_rows],
         networks=config["network"]["networks"],
         phase1_iterations=config["network"]["phase1_iterations"],
     log:
@@ -53,7 +53,7 @@ rule claims_errors:
         split="data/claims/error_split.csv",
     params:
         trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
-        cues=[row["cue"] for row in CLAIM_ROWS],
+        cues=[row["cue"] for row in PLAN.claim_rows],
     log:
         "data/logs/claims/errors.log",
     benchmark:
@@ -78,8 +78,8 @@ rule claims_correct:
         sensitivity="data/claims/correct_sensitivity.csv",
     params:
         trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
-        cues=[row["cue"] for row in CLAIM_ROWS],
-        seeds=[row["seed"] for row in CLAIM_ROWS],
+        cues=[row["cue"] for row in PLAN.claim_rows],
+        seeds=[row["seed"] for row in PLAN.claim_rows],
     log:
         "data/logs/claims/correct.log",
     benchmark:

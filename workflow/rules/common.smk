@@ -332,7 +332,7 @@ def sweep_job_records(wildcards=None):
     """The sweep's cost (robustness.md), with robustness: the engine's record of each job that
     made a file of a sweep point (common.smk: job_records, run_files), with the seed of the
     replication it served, {benchmark file: seed}. Without robustness, none."""
-    if not config["robustness"]:
+    if not PLAN.robustness:
         return {}
     return {
         record: PLAN.sweep[run]["seed"]
@@ -343,10 +343,8 @@ def sweep_job_records(wildcards=None):
 
 def signature_replications():
     """Each replication of the config's own reading (its cue timing and Goal response) that
-    this build makes: its run's seed, model inputs, settings and weights."""
-    cue = config["network"]["categorisation_cue"]
-    goal = config["soms"]["goal_response"]
-    rows = [r for r in PLAN.readings if r["cue"] == cue and r["goal_response"] == goal]
+    this build makes (RunPlan.own_reading_rows): its run's seed, model inputs, settings and
+    weights."""
     return [
         {
             "seed": PLAN.config(row["run"])["seed"],
@@ -355,18 +353,5 @@ def signature_replications():
             "network": settings(PLAN.config(row["run"])["network"]),
             "weights": weights_files(row["run"]),
         }
-        for row in rows
+        for row in PLAN.own_reading_rows
     ]
-
-
-def _claim_rows():
-    """The confirmation's replications: the readings' rows at the config's Goal response under
-    each declared cue timing, one per seed (config `confirmation`)."""
-    goal, cues = config["soms"]["goal_response"], config["confirmation"]["cues"]
-    return [r for r in PLAN.readings if r["goal_response"] == goal and r["cue"] in cues]
-
-
-CLAIM_ROWS = _claim_rows()
-# the replications of the config's own reading (its cue timing too): the signatures' networks
-# and the training curves the scorecard's learning row reads
-OWN_READING_ROWS = [r for r in CLAIM_ROWS if r["cue"] == config["network"]["categorisation_cue"]]
