@@ -1,7 +1,12 @@
 """The longest chain of jobs of a configuration, and the wall time its job records allow on N cores.
 
-    python benchmarks/critical_path.py [data/benchmarks] [--cores 2] [-- SNAKEMAKE ARGS]
-    python benchmarks/critical_path.py data/benchmarks -- --config robustness=True  # full scale
+    python benchmarks/critical_path.py [data/benchmarks] [--cores 2 [8 ...]] [--record FILE]
+        [-- SNAKEMAKE ARGS]
+    python benchmarks/critical_path.py --cores 2 8 32 \\
+        --record benchmarks/full_scale_critical_path.json -- --config robustness=True
+
+The second, after a full-scale build, writes the record the book's robustness page states
+(icub_workflow.critical_path.load_record reads it).
 
 The DAG is Snakemake's own, from a dry run of every job (`snakemake -n --forceall --cores N`,
 plus the arguments after `--`); nothing runs. Each job is weighed by its wall time on record
@@ -17,26 +22,32 @@ rule keeps no benchmark (the target `all`) counts 0 s too. Snakemake's own time 
 the dry run's wall time, and its work between jobs, `--overhead` s a job) is not in the
 records: the first is printed apart, the second added to each job if given.
 
-Prints the critical path (each job, its rule and seconds), then the figures; the last line is
-JSON: jobs, missing, critical_path_s, sum_of_job_seconds, cores, lower_bound_s, predicted_s.
+Prints the critical path (each job, its rule and seconds), then the figures per number of
+cores; the last line is JSON: jobs, missing, critical_path_s, sum_of_job_seconds, and for the
+first number of cores, cores, lower_bound_s, predicted_s. ``--record`` writes these, the wall
+times on every number of cores, the chain, the commit, the date and the CPU (refused if a job
+has no record).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import subprocess
 import sys
 import time
 from pathlib import Path
 
+from icub_affordance.files import write_text
 from icub_workflow.benchmark_tables import job_seconds
 from icub_workflow.critical_path import (
     critical_path,
     dependencies,
+    load_record,
     parse_dry_run,
     record_path,
-    simulate,
+    wall_times,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -60,7 +71,10 @@ def main() -> None:
         epilog="more Snakemake arguments after --, e.g. -- --config robustness=True",
     )
     parser.add_argument("directory", nargs="?", default="data/benchmarks", type=Path)
-    parser.add_argument("--cores", type=int, default=2)
+    parser.add_argument("--cores", type=int, nargs="+", default=[2], help="one or more")
+    parser.add_argument(
+        "--record", type=Path, help="also write the figures, the chain and their provenance here"
+    )
     parser.add_argument("--overhead", type=float, default=0.0, help="seconds added to each job")
     parser.add_argument("--strict", action="store_true", help="refuse jobs with no record")
     argv = sys.argv[1:]
@@ -68,7 +82,7 @@ def main() -> None:
         (argv[: argv.index("--")], argv[argv.index("--") + 1 :]) if "--" in argv else (argv, [])
     )
     args = parser.parse_args(ours)
-    text, dry_s = dry_run(args.cores, extra)
+    text, dry_s = dry_run(max(args.cores), extra)
     jobs = parse_dry_run(text)
     seconds, missing = {}, []
     for job in jobs.values():
@@ -92,11 +106,10 @@ def main() -> None:
     depends = dependencies(jobs)
     chain = critical_path(depends, seconds)
     threads = {j: job.threads for j, job in jobs.items()}
-    predicted = simulate(depends, seconds, args.cores, {j: jobs[j].priority for j in jobs}, threads)
+    priority = {j: jobs[j].priority for j in jobs}
+    on_cores = wall_times(depends, seconds, args.cores, priority, threads)
     path_s = sum(seconds[j] for j in chain)
     work = sum(seconds.values())
-    core_s = sum(seconds[j] * min(threads[j], args.cores) for j in jobs)
-    bound = max(path_s, core_s / args.cores)
     total = 0.0
     print(f"{'s':>8} {'total':>8}  rule: benchmark file")
     for j in chain:
@@ -107,25 +120,61 @@ def main() -> None:
     label = f" ({kept - len(missing)} on record, {len(missing)} counted 0 s)" if missing else ""
     print(
         f"\n{len(jobs)} jobs{label}; critical path {path_s:.1f} s over {len(chain)} jobs; "
-        f"summed job time {work:.1f} s; on {args.cores} cores at least {bound:.1f} s, "
-        f"greedy schedule {predicted:.1f} s; Snakemake's start (the dry run) {dry_s:.1f} s, "
+        f"summed job time {work:.1f} s; Snakemake's start (the dry run) {dry_s:.1f} s, "
         "not included"
     )
-    print(
-        json.dumps(
-            {
-                "jobs": len(jobs),
-                "missing": len(missing),
-                "critical_path_s": round(path_s, 1),
-                "critical_path_jobs": len(chain),
-                "sum_of_job_seconds": round(work, 1),
-                "cores": args.cores,
-                "lower_bound_s": round(bound, 1),
-                "predicted_s": round(predicted, 1),
-                "dry_run_s": round(dry_s, 1),
-            }
+    for row in on_cores:
+        print(
+            f"on {row['cores']} cores: at least {row['lower_bound_s']:.1f} s, "
+            f"greedy schedule {row['predicted_s']:.1f} s"
         )
+    first = on_cores[0]
+    figures = {
+        "jobs": len(jobs),
+        "missing": len(missing),
+        "critical_path_s": round(path_s, 1),
+        "critical_path_jobs": len(chain),
+        "sum_of_job_seconds": round(work, 1),
+        "cores": first["cores"],
+        "lower_bound_s": first["lower_bound_s"],
+        "predicted_s": first["predicted_s"],
+        "dry_run_s": round(dry_s, 1),
+    }
+    if args.record is not None:
+        if missing:
+            sys.exit(f"not recorded: {len(missing)} jobs have no record (the book states none)")
+        record = figures | {
+            "on_cores": on_cores,
+            "chain": [
+                {"rule": jobs[j].rule, "s": round(seconds[j], 1), "benchmark": jobs[j].benchmark}
+                for j in chain
+            ],
+            **provenance(),
+            "snakemake_args": extra,
+        }
+        write_text(args.record, json.dumps(record, indent=2) + "\n")
+        load_record(args.record)  # as the book reads it
+        print(f"recorded in {args.record}")
+    print(json.dumps(figures))
+
+
+def provenance() -> dict[str, str]:
+    """Which code and which machine the records come from: the checkout's commit (``+`` if its
+    tracked files differ from it), the date and the CPU as lscpu names it."""
+    git = lambda *a: subprocess.run(  # noqa: E731
+        ["git", *a], cwd=ROOT, capture_output=True, text=True
+    ).stdout.strip()
+    commit = git("rev-parse", "--short", "HEAD") + (
+        "+" if git("status", "--porcelain", "-uno") else ""
     )
+    cpu = "unknown"
+    info = Path("/proc/cpuinfo")
+    if info.exists():
+        fields = dict(line.split(":", 1) for line in info.read_text().splitlines() if ":" in line)
+        strip = {k.strip(): v.strip() for k, v in fields.items()}
+        cpu = (f"{strip.get('model name', 'unknown')} (family {strip.get('cpu family', '?')}, "
+               f"model {strip.get('model', '?')}, {os.cpu_count()} cores)")  # fmt: skip
+    return {"commit": commit, "date": time.strftime("%Y-%m-%d", time.gmtime()), "cpu": cpu}
 
 
 if __name__ == "__main__":

@@ -190,3 +190,53 @@ def test_the_schedule_follows_snakemakes_priority_and_a_jobs_threads():
     assert simulate(pair, {p: 2.0, q: 2.0}, cores=2) == 2.0
     assert simulate(pair, {p: 2.0, q: 2.0}, cores=2, threads={p: 2}) == 4.0
     assert simulate(pair, {p: 2.0, q: 2.0}, cores=1, threads={p: 2}) == 4.0
+
+
+def test_the_wall_time_per_number_of_cores_is_bounded_by_the_chain_and_the_cores_share():
+    """The small DAG above (chain b-d-e 9 s, 16 s of jobs): on one core at least 16 s and 16 s
+    scheduled; on two at least 9 s (the chain beats 16/2) and 9 s scheduled; a job of two
+    threads holds both cores, so the cores' share on two is (16 + 2) / 2 = 9 s."""
+    from icub_workflow.critical_path import wall_times
+
+    a, b, c, d, e = range(5)
+    depends = {a: set(), b: set(), c: {a, b}, d: {b}, e: {c, d}}
+    seconds = {a: 3.0, b: 2.0, c: 4.0, d: 6.0, e: 1.0}
+    assert wall_times(depends, seconds, [1, 2]) == [
+        {"cores": 1, "lower_bound_s": 16.0, "predicted_s": 16.0},
+        {"cores": 2, "lower_bound_s": 9.0, "predicted_s": 9.0},
+    ]
+    heavy = wall_times(depends, seconds, [2], threads={b: 2})[0]
+    assert heavy["lower_bound_s"] == 9.0 and heavy["predicted_s"] >= 9.0
+
+
+def test_a_critical_path_record_that_is_missing_or_incomplete_is_refused(tmp_path):
+    """The book states the full scale's record: a missing, unreadable or incomplete one is
+    refused naming the file and the command that writes it again; a whole one is read."""
+    import json
+
+    import pytest
+
+    from icub_workflow.critical_path import load_record
+
+    path = tmp_path / "record.json"
+    with pytest.raises(ValueError, match="record.json.*--record"):
+        load_record(path)
+    path.write_text("{not json")
+    with pytest.raises(ValueError, match="not a readable"):
+        load_record(path)
+    whole = {
+        "jobs": 3, "missing": 0, "critical_path_s": 9.0, "critical_path_jobs": 3,
+        "sum_of_job_seconds": 16.0, "chain": [{"rule": "train", "s": 9.0, "benchmark": "x"}],
+        "on_cores": [{"cores": 2, "lower_bound_s": 9.0, "predicted_s": 9.0}],
+        "commit": "abc1234", "date": "2026-12-07", "cpu": "a CPU", "snakemake_args": [],
+    }  # fmt: skip
+    path.write_text(json.dumps(whole))
+    assert load_record(path) == whole
+    for broken, words in (
+        ({"critical_path_s": None}, "critical_path_s"),
+        ({"on_cores": []}, "no wall time"),
+        ({"missing": 2}, "2 jobs had no record"),
+    ):
+        path.write_text(json.dumps(whole | broken))
+        with pytest.raises(ValueError, match=words):
+            load_record(path)

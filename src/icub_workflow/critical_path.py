@@ -183,3 +183,66 @@ def record_path(benchmark: str, directory: Path, default: str = "data/benchmarks
         return Path(directory) / path.relative_to(default)
     except ValueError:
         return path
+
+
+# ---- the record the book quotes (benchmarks/full_scale_critical_path.json) ---------------------
+
+#: What a record must hold, each key's type: the robustness page states these.
+RECORD_KEYS = {
+    "jobs": int, "missing": int, "critical_path_s": float, "critical_path_jobs": int,
+    "sum_of_job_seconds": float, "on_cores": list, "chain": list, "commit": str, "date": str,
+    "cpu": str, "snakemake_args": list,
+}  # fmt: skip
+
+
+def wall_times(
+    depends: dict[int, set[int]],
+    seconds: dict[int, float],
+    cores: list[int],
+    priority: dict[int, int] | None = None,
+    threads: dict[int, int] | None = None,
+) -> list[dict[str, float]]:
+    """Per number of cores: the wall time at least (the critical path, or the cores' share of
+    the job time, each job on min(threads, cores) of them, whichever is longer) and the greedy
+    schedule's (``simulate``)."""
+    threads = threads or {}
+    path_s = sum(seconds[j] for j in critical_path(depends, seconds))
+    rows = []
+    for n in cores:
+        core_s = sum(seconds[j] * min(max(threads.get(j, 1), 1), n) for j in depends)
+        rows.append(
+            {
+                "cores": n,
+                "lower_bound_s": round(max(path_s, core_s / n), 1),
+                "predicted_s": round(simulate(depends, seconds, n, priority, threads), 1),
+            }
+        )
+    return rows
+
+
+def load_record(path: str | Path) -> dict:
+    """A critical-path record written by ``benchmarks/critical_path.py --record``, checked: a
+    missing or incomplete one is refused, naming the file and how to make it again."""
+    import json
+
+    fix = (
+        "Fix: after a full-scale build (snakemake -c2 --config robustness=True), run "
+        "python benchmarks/critical_path.py --cores 2 8 32 --record "
+        f"{path} -- --config robustness=True"
+    )
+    try:
+        record = json.loads(Path(path).read_text())
+    except (OSError, ValueError) as error:
+        raise ValueError(f"{path}: not a readable critical-path record ({error}). {fix}") from None
+    wrong = [
+        key
+        for key, kind in RECORD_KEYS.items()
+        if not isinstance(record.get(key), kind if kind is not float else (int, float))
+    ]
+    if wrong or not record["on_cores"] or record["missing"]:
+        problem = f"keys missing or of the wrong type: {wrong}" if wrong else (
+            "no wall time on any number of cores" if not record["on_cores"]
+            else f"{record['missing']} jobs had no record"
+        )  # fmt: skip
+        raise ValueError(f"{path}: {problem}. {fix}")
+    return record
