@@ -53,6 +53,27 @@ def test_the_drawing_shows_the_direct_needs_in_columns(tmp_path):
     assert paths[0].read_bytes() == paths[1].read_bytes()
 
 
+def test_no_two_boxes_of_the_drawing_overlap():
+    """Columns of boxes of different widths: boxes of one column a row apart, columns side by
+    side without touching, every box inside the drawing."""
+    from icub_workflow.rulegraph_figure import placed
+
+    columns = [["a", "bb"], ["ccc", "d", "e"], ["f"]]
+    box = {"a": 0.5, "bb": 1.2, "ccc": 2.0, "d": 0.4, "e": 0.9, "f": 0.7}
+    centre, (width, height) = placed(columns, box, row=0.3, gap=0.2)
+    names = list(box)
+    for i, m in enumerate(names):
+        for n in names[i + 1 :]:
+            (xm, ym), (xn, yn) = centre[m], centre[n]
+            apart_x = abs(xm - xn) >= (box[m] + box[n]) / 2 + 0.2 - 1e-9
+            apart_y = abs(ym - yn) >= 0.3 - 1e-9
+            assert apart_x or apart_y, (m, n)
+    for name, (x, y) in centre.items():
+        assert 0 < x - box[name] / 2 and x + box[name] / 2 < width, name
+        assert 0 < y - 0.15 and y + 0.15 < height, name
+    assert centre["f"][1] == centre["d"][1] == height / 2  # a column is centred
+
+
 def test_a_text_that_is_no_rule_graph_is_refused():
     with pytest.raises(ValueError, match="no rules"):
         canonical_dot("Building DAG of jobs...\n")

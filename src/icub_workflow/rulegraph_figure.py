@@ -51,21 +51,54 @@ def layers(graph: nx.DiGraph, sweeps: int = 3) -> list[list[str]]:
     return columns
 
 
+def placed(
+    columns: list[list[str]], box: dict[str, float], row: float = 0.27, gap: float = 0.32
+) -> tuple[dict[str, tuple[float, float]], tuple[float, float]]:
+    """Each rule's box centre (inches) and the drawing's size: the columns left to right, each
+    as wide as its widest box (``box``: a rule's box width) and ``gap`` apart, each column's
+    rules ``row`` apart and centred on the middle, so that no two boxes overlap."""
+    widths = [max(box[name] for name in column) for column in columns]
+    size = (sum(widths) + gap * (len(columns) - 1) + 0.1, max(map(len, columns)) * row + 0.1)
+    centre, left = {}, 0.05
+    for column, width in zip(columns, widths, strict=True):
+        top = size[1] / 2 + (len(column) - 1) * row / 2
+        for k, name in enumerate(column):
+            centre[name] = (left + width / 2, top - k * row)
+        left += width + gap
+    return centre, size
+
+
 def draw_rulegraph(dot: str, path: str | os.PathLike[str]) -> None:
-    """The rule graph ``dot``, drawn left to right to ``path`` (PNG)."""
+    """The rule graph ``dot``, drawn left to right to ``path`` (PNG): one box per rule, none
+    overlapping another (``placed``), and each arrow from the right edge of a rule's box to the
+    left edge of the box of the rule that needs it."""
     graph = rule_graph(dot)
-    pos = nx.multipartite_layout(
-        graph, subset_key=dict(enumerate(layers(graph))), align="vertical", scale=2.0
-    )
-    fig, ax = plt.subplots(figsize=(10, 4.2))
-    nx.draw_networkx_edges(
-        graph, pos, ax=ax, arrows=True, arrowsize=12, edge_color="0.55", node_size=3000,
-        connectionstyle="arc3,rad=0.05",
-    )  # fmt: skip
-    nx.draw_networkx_labels(
-        graph, pos, ax=ax, font_size=8,
-        bbox=dict(boxstyle="round,pad=0.3", fc="#e8f0f8", ec="0.5"),
-    )  # fmt: skip
+    columns = layers(graph)
+    font = 7.5  # points
+    fig = plt.figure(figsize=(1, 1))
+    renderer = fig.canvas.get_renderer()
+    probe = fig.text(0, 0, "", fontsize=font)
+    box = {}  # each box's width in inches, its padding included, as the name is drawn
+    for name in graph.nodes:
+        probe.set_text(name)
+        box[name] = probe.get_window_extent(renderer).width / fig.dpi + 0.12
+    probe.remove()
+    centre, size = placed(columns, box)
+    fig.set_size_inches(*size)
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, size[0])
+    ax.set_ylim(0, size[1])
     ax.axis("off")
-    fig.tight_layout()
+    for a, b in graph.edges:
+        (xa, ya), (xb, yb) = centre[a], centre[b]
+        ax.annotate(
+            "", xy=(xb - box[b] / 2, yb), xytext=(xa + box[a] / 2, ya),
+            arrowprops=dict(arrowstyle="-|>", color="0.6", lw=0.6, shrinkA=0, shrinkB=0,
+                            mutation_scale=7),
+        )  # fmt: skip
+    for name, (x, y) in centre.items():
+        ax.text(
+            x, y, name, fontsize=font, ha="center", va="center",
+            bbox=dict(boxstyle="round,pad=0.25", fc="#e8f0f8", ec="0.5", lw=0.6),
+        )  # fmt: skip
     save(fig, path)
