@@ -16,6 +16,7 @@ from icub_affordance.analysis.name_effects import (
     declared_tests,
     error_cells,
     form_summary,
+    qualifiers,
     reactivation,
     reactivation_tests,
     word_tests,
@@ -168,18 +169,19 @@ def test_the_chapter_says_each_tests_verdict_in_its_own_words(tmp_path):
 
     estimates = estimates_of(effects)
     table = word_tests(estimates, config["words"])
-    form_summary(estimates, config["words"]).to_csv(tmp_path / "f.csv", index=False)
-    pd.DataFrame([{"mode": "closed_loop", "form": "name", "congruent": "False", "size": "small",
-                   "wrong_grip": 0.5, "cue": "first_step", "seed": 141}]).to_csv(
-        tmp_path / "c.csv", index=False)  # fmt: skip
+    forms = form_summary(estimates, config["words"])
+    cells = pd.DataFrame([{"mode": "closed_loop", "form": "name", "congruent": "False",
+                           "size": "small", "wrong_grip": 0.5, "cue": "first_step",
+                           "seed": 141}])  # fmt: skip
     table["direction"] = direction_codes(table["direction"])
+    table = qualifiers(table, forms, cells, float(config["words"]["alpha"]))
     contrasts = pd.DataFrame([{"cue": cue, "seed": s, "network": 0, "contrast": 0.1 + s / 1e4}
                               for cue in config["words"]["cues"] for s in SEEDS])  # fmt: skip
     react = reactivation_tests(contrasts, config["words"])
     react["direction"] = direction_codes(react["direction"])
     table.to_csv(tmp_path / "s.csv", index=False)
     react.to_csv(tmp_path / "r.csv", index=False)
-    saved = {"summary": "s", "reactivation": "r", "by_form": "f", "error_cells": "c"}
+    saved = {"summary": "s", "reactivation": "r"}
     inputs = {f"words_{name}.csv": tmp_path / f"{short}.csv" for name, short in saved.items()}
     values, tables = words_page(inputs, config)
     assert values["congruency_count"].text == "confirmed in 8 of 8"
@@ -215,3 +217,47 @@ def test_the_error_cells_count_each_network_and_object_once():
     assert cells[("False", "small")] == pytest.approx((0.5 + 1.0) / 2)
     assert cells[("True", "large")] == 0
     assert len(cells) == 2
+
+
+def test_what_qualifies_a_verdict_is_recomputed_beside_each_test():
+    """name_effects.qualifiers, recomputed: an equivalence row carries the image's own
+    congruency effect (the mean over replications) and whether it lies inside the margin, and
+    whether the difference's unadjusted p is below alpha; a size row whether its estimate is the
+    congruency test's number and whether the name's wrong grips all fall in the incongruent
+    small cell. Here the image's effect is 0.002 (inside every margin), the name's size and
+    congruency estimates are one number (both 0.03 + the same draws), and one cue timing's
+    closed loop has a wrong grip in a congruent cell."""
+    declaration = load_config()["words"]
+    alpha = float(declaration["alpha"])
+    draws = np.random.default_rng(7).normal(0, 0.002, len(SEEDS))
+
+    def effects(form, effect, rng):
+        return (0.002 if form == "image" else 0.03) + draws
+
+    estimates = estimates_of(effects)
+    forms = form_summary(estimates, declaration)
+    cells = pd.DataFrame([
+        {"mode": "closed_loop", "form": "name", "congruent": "False", "size": "small",
+         "wrong_grip": 0.4, "cue": "first_step", "seed": 141},
+        {"mode": "closed_loop", "form": "name", "congruent": "True", "size": "large",
+         "wrong_grip": 0.1, "cue": "first_step", "seed": 141},
+        {"mode": "closed_loop", "form": "image", "congruent": "True", "size": "small",
+         "wrong_grip": 0.3, "cue": "all_steps", "seed": 141},
+    ])  # fmt: skip
+    tests = word_tests(estimates, declaration)
+    table = qualifiers(tests, forms, cells, alpha)
+    assert list(table.columns[: len(tests.columns)]) == list(tests.columns)
+    image_mean = float(np.mean(0.002 + draws))
+    for _, row in table.iterrows():
+        if row["test"] == "equivalence":
+            assert row["image_effect"] == pytest.approx(image_mean, abs=1e-12)
+            assert row["image_inside_margin"] == (abs(image_mean) < row["margin"])
+            assert row["difference_below_alpha"] == (row["p_difference"] < alpha)
+            assert pd.isna(row["same_as_congruency"])
+        elif row["test"] == "size":
+            assert row["same_as_congruency"] is True
+            congruent_error = row["cue"] == "first_step" and row["mode"] == "closed_loop"
+            assert row["only_incongruent_small"] is (not congruent_error)
+            assert pd.isna(row["image_effect"])
+        else:
+            assert table.loc[[_], list(table.columns[len(tests.columns) :])].isna().all(axis=None)

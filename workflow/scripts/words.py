@@ -12,6 +12,7 @@ import pandas as pd
 from icub_affordance.analysis.name_effects import (
     error_cells,
     form_summary,
+    qualifiers,
     reactivation_tests,
     replication_estimates,
     word_tests,
@@ -39,15 +40,17 @@ with redirect_log(snakemake.log[0]):
             for row, path in zip(table, snakemake.input.trials, strict=True)
         ]
     )
+    forms = form_summary(estimates, declaration)
     tests = word_tests(estimates, declaration)
     tests["direction"] = direction_codes(tests["direction"])
+    tests = qualifiers(tests, forms, cells, float(declaration["alpha"]))
     reactivation = reactivation_tests(contrasts, declaration)
     reactivation["direction"] = direction_codes(reactivation["direction"])
     write_tables(
         [
             (snakemake.output.summary, tests),
             (snakemake.output.replications, estimates),
-            (snakemake.output.by_form, form_summary(estimates, declaration)),
+            (snakemake.output.by_form, forms),
             (snakemake.output.reactivation, reactivation),
             (snakemake.output.contrasts, contrasts),
             (snakemake.output.error_cells, cells),

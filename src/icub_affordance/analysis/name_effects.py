@@ -188,6 +188,56 @@ def reactivation_tests(contrasts: pd.DataFrame, declaration: Mapping[str, Any]) 
     return table
 
 
+#: Two estimates this close are one number (the same cells read by two contrasts).
+SAME = 1e-12
+
+#: The columns ``qualifiers`` adds to the family's rows.
+QUALIFIER_COLUMNS: tuple[str, ...] = (
+    "image_effect", "image_inside_margin", "difference_below_alpha", "same_as_congruency",
+    "only_incongruent_small",
+)  # fmt: skip
+
+
+def qualifiers(
+    tests: pd.DataFrame, forms: pd.DataFrame, cells: pd.DataFrame, alpha: float
+) -> pd.DataFrame:
+    """What qualifies each declared test's verdict, as columns beside it (none is a test; each
+    is a plain comparison, exploration):
+
+    - an equivalence row: the image's own congruency effect over the replications
+      (``image_effect``, from ``form_summary``), whether it lies inside the margin too
+      (``image_inside_margin``: a name with no effect would then pass as well), and whether
+      the difference's own unadjusted p is below ``alpha`` (``difference_below_alpha``);
+    - a size row: whether its estimate is the congruency test's number (``same_as_congruency``:
+      the same cells read by both contrasts) and whether every wrong grip of the name alone in
+      its cue timing and mode, if any, fell in the incongruent small cell
+      (``only_incongruent_small``, from ``error_cells``, the mean over replications).
+
+    Empty where a column does not apply."""
+    out = tests.copy()
+    for column in QUALIFIER_COLUMNS:
+        out[column] = pd.Series([pd.NA] * len(out), dtype="object")
+    image = forms[(forms["form"] == "image") & (forms["effect"] == "congruency")]
+    image = image.set_index(["cue", "mode", "measure"])["estimate"]
+    by_test = tests.set_index([*TEST_KEYS])["estimate"]
+    named = cells[cells["form"] == "name"]
+    for i, row in out.iterrows():
+        cell = (row["cue"], row["mode"], row["measure"])
+        if row["test"] == "equivalence":
+            effect = float(image[cell])
+            out.at[i, "image_effect"] = effect
+            out.at[i, "image_inside_margin"] = bool(abs(effect) < row["margin"])
+            out.at[i, "difference_below_alpha"] = bool(row["p_difference"] < alpha)
+        elif row["test"] == "size":
+            congruency = by_test.get((*cell, "congruency"), np.nan)
+            out.at[i, "same_as_congruency"] = bool(abs(row["estimate"] - congruency) < SAME)
+            mine = named[(named["cue"] == row["cue"]) & (named["mode"] == row["mode"])]
+            rates = mine.groupby(["congruent", "size"])["wrong_grip"].mean()
+            carrying = {(str(c), str(z)) for (c, z), rate in rates.items() if rate > 0}
+            out.at[i, "only_incongruent_small"] = carrying <= {("False", "small")}
+    return out
+
+
 def form_summary(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataFrame:
     """Every form's congruency and size effects over the replications (a figure's points, each
     a one-sample t, unadjusted: beside the family, not in it), per cue timing, mode and

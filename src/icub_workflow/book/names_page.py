@@ -22,8 +22,6 @@ QUESTIONS = {
 #: The order the verdict words are counted in, per kind of test.
 ORDER = {"congruency": words.CLAIM_WORDS, "size": words.CLAIM_WORDS,
          "equivalence": words.EQUIVALENCE_WORDS}  # fmt: skip
-#: Two estimates this close are one number (the same cells read by two contrasts).
-SAME = 1e-12
 
 
 def word_key(row) -> str:
@@ -43,64 +41,46 @@ def _measure(name: str) -> str:
     return text.CLAIM_PARTS.get(name, name.replace("_", " "))
 
 
-def _equivalence_notes(summary: pd.DataFrame, by_form: pd.DataFrame, alpha: float) -> dict:
+def _equivalence_notes(summary: pd.DataFrame, alpha: float) -> dict:
     """Of the conditions whose name-image difference is shown within the margin: in how many
-    the image's own congruency effect lies inside the margin too (a name with no effect would
-    pass there as well), and in how many the difference itself has p below alpha (unadjusted,
-    exploration)."""
-    image = by_form[(by_form["form"] == "image") & (by_form["effect"] == "congruency")]
-    image = image.set_index(["cue", "mode", "measure"])["estimate"]
+    the image's own congruency effect lies inside the margin too, and in how many the
+    difference itself has p below alpha, unadjusted (the family's columns
+    ``image_inside_margin`` and ``difference_below_alpha``, name_effects.qualifiers)."""
     shown = summary[(summary["test"] == "equivalence") & (summary["direction"] == "paper")]
-    inside = [
-        r
-        for _, r in shown.iterrows()
-        if abs(image[(r["cue"], r["mode"], r["measure"])]) < r["margin"]
-    ]
-    differing = [r for _, r in shown.iterrows() if r["p_difference"] < alpha]
+    inside = int(shown["image_inside_margin"].sum())
+    differing = int(shown["difference_below_alpha"].sum())
     rests = tuple(f"words.{word_key(r)}_p_holm" for _, r in shown.iterrows())
-    note = ""
-    if inside:
-        note = f" (in {len(inside)} the image's own effect is inside the margin too)"
+    note = f" (in {inside} the image's own effect is inside the margin too)" if inside else ""
     differs = ""
     if differing:
-        differs = (f"; of the conditions shown equivalent, in {len(differing)} the difference "
+        differs = (f"; of the conditions shown equivalent, in {differing} the difference "
                    f"itself has p below {alpha:g} before adjustment (exploration)")  # fmt: skip
     return {
         "equivalence_note": text.Claim(note, rests or ("words.alpha",)),
         "differing_note": text.Claim(differs, rests or ("words.alpha",)),
-        "equivalent_inside_margin": len(inside),
-        "equivalent_differing": len(differing),
+        "equivalent_inside_margin": inside,
+        "equivalent_differing": differing,
     }
 
 
-def _same_errors(summary: pd.DataFrame, cells: pd.DataFrame) -> dict:
+def _same_errors(summary: pd.DataFrame) -> dict:
     """On the wrong-grip rate, the conditions where the name's size and congruency effects
-    are one number, and the congruency x size cells that hold the name's wrong grips there
-    (``error_cells.csv``, the mean over replications)."""
-    wrong = summary[summary["measure"] == "wrong_grip"].set_index(["cue", "mode", "test"])
-    conditions = list(dict.fromkeys(zip(wrong.index.get_level_values(0),
-                                        wrong.index.get_level_values(1), strict=True)))  # fmt: skip
-    same = [(cue, mode) for cue, mode in conditions
-            if abs(wrong.loc[(cue, mode, "congruency"), "estimate"]
-                   - wrong.loc[(cue, mode, "size"), "estimate"]) < SAME]  # fmt: skip
-    named = cells[cells["form"] == "name"]
-    carrying = set()
-    for cue, mode in same:
-        rates = named[(named["cue"] == cue) & (named["mode"] == mode)]
-        rates = rates.groupby(["congruent", "size"])["wrong_grip"].mean()
-        carrying |= {cell for cell, rate in rates.items() if rate > 0}
-    rests = tuple(f"words.{word_key({'cue': c, 'mode': m, 'measure': 'wrong_grip', 'test': t})}"
-                  f"_estimate" for c, m in same for t in ("congruency", "size"))  # fmt: skip
-    if not same:
+    are one number, and whether their wrong grips all fall in the incongruent small cell (the
+    family's columns ``same_as_congruency`` and ``only_incongruent_small``)."""
+    sizes = summary[(summary["measure"] == "wrong_grip") & (summary["test"] == "size")]
+    same = sizes[sizes["same_as_congruency"].astype(bool)]
+    rests = tuple(f"words.{word_key({**r.to_dict(), 'test': t})}_estimate"
+                  for _, r in same.iterrows() for t in ("congruency", "size"))  # fmt: skip
+    if same.empty:
         return {"size_note": text.Claim("", ("words.size_count",)), "same_errors": ""}
     where = ("every wrong grip fell on a small object asked for the grip it does not afford "
              "(incongruent and small), the one cell both contrasts read"
-             if carrying == {("False", "small")}
+             if same["only_incongruent_small"].astype(bool).all()
              else "their wrong grips fall in cells both contrasts read alike")  # fmt: skip
     said = (f"on the wrong-grip rate the name's size effect is its congruency effect's number "
-            f"in {len(same)} of {len(conditions)} conditions: {where}, so these are one finding "
+            f"in {len(same)} of {len(sizes)} conditions: {where}, so these are one finding "
             "read twice")  # fmt: skip
-    short = (f" (on the wrong-grip rate, in {len(same)} of {len(conditions)} conditions the "
+    short = (f" (on the wrong-grip rate, in {len(same)} of {len(sizes)} conditions the "
              "same errors as the congruency effect's)")  # fmt: skip
     return {
         "size_note": text.Claim(short, rests),
@@ -114,8 +94,6 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     timing) and its table, a row per declared test."""
     summary = pd.read_csv(inputs["words_summary.csv"], keep_default_na=False, na_values=[""])
     reactivation = pd.read_csv(inputs["words_reactivation.csv"])
-    by_form = pd.read_csv(inputs["words_by_form.csv"])
-    cells = pd.read_csv(inputs["words_error_cells.csv"], dtype={"congruent": str})
     declaration = config["words"]
     alpha = float(declaration["alpha"])
     values: dict = {
@@ -150,7 +128,7 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         said = [ORDER[test][d] for d in group["direction"]]
         rests = tuple(f"words.{word_key(r)}_p_holm" for _, r in group.iterrows())
         values[f"{test}_count"] = text.Claim(_count(said, ORDER[test]), rests)
-    values |= _equivalence_notes(summary, by_form, alpha) | _same_errors(summary, cells)
+    values |= _equivalence_notes(summary, alpha) | _same_errors(summary)
     for _, row in reactivation.iterrows():
         key = f"react_{row['cue']}"
         values |= {f"{key}_{k}": float(row[k]) for k in ("estimate", "ci_low", "ci_high", "p",
