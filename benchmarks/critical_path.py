@@ -158,15 +158,16 @@ def main() -> None:
     print(json.dumps(figures))
 
 
-def provenance() -> dict[str, str]:
-    """Which code and which machine the records come from: the checkout's commit (``+`` if its
-    tracked files differ from it), the date and the CPU as lscpu names it."""
-    git = lambda *a: subprocess.run(  # noqa: E731
-        ["git", *a], cwd=ROOT, capture_output=True, text=True
-    ).stdout.strip()
-    commit = git("rev-parse", "--short", "HEAD") + (
-        "+" if git("status", "--porcelain", "-uno") else ""
-    )
+def provenance() -> dict[str, object]:
+    """Which code and which machine the records come from: the checkout's commit, the tracked
+    files that differ from it (``changed``: the records' build ran on this code only if these
+    are files that do not run in a build, such as this script), the date and the CPU."""
+
+    def git(*args: str) -> str:
+        return subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True).stdout
+
+    changed = [line[3:] for line in git("status", "--porcelain", "-uno").splitlines()]
+    commit = git("rev-parse", "--short", "HEAD").strip()
     cpu = "unknown"
     info = Path("/proc/cpuinfo")
     if info.exists():
@@ -174,7 +175,8 @@ def provenance() -> dict[str, str]:
         strip = {k.strip(): v.strip() for k, v in fields.items()}
         cpu = (f"{strip.get('model name', 'unknown')} (family {strip.get('cpu family', '?')}, "
                f"model {strip.get('model', '?')}, {os.cpu_count()} cores)")  # fmt: skip
-    return {"commit": commit, "date": time.strftime("%Y-%m-%d", time.gmtime()), "cpu": cpu}
+    date = time.strftime("%Y-%m-%d", time.gmtime())
+    return {"commit": commit, "changed": changed, "date": date, "cpu": cpu}
 
 
 if __name__ == "__main__":

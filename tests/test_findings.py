@@ -482,6 +482,18 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
         }
     inputs = {"sweep_summary.csv": tmp_path / "summary.csv"}
     pd.DataFrame([row]).to_csv(inputs["sweep_summary.csv"], index=False)
+    # the full scale's critical path, as benchmarks/critical_path.py --record writes it
+    inputs["full_scale_critical_path.json"] = tmp_path / "critical_path.json"
+    inputs["full_scale_critical_path.json"].write_text(json.dumps({
+        "jobs": 500, "missing": 0, "critical_path_s": 1800.0, "critical_path_jobs": 3,
+        "sum_of_job_seconds": 7200.0, "commit": "abc1234", "date": "2026-12-07",
+        "cpu": "a test CPU", "snakemake_args": ["--config", "robustness=True"],
+        "chain": [{"rule": "demos", "s": 600.0, "benchmark": "a"},
+                  {"rule": "train", "s": 1200.0, "benchmark": "b"},
+                  {"rule": "all", "s": 0.0, "benchmark": None}],  # the target: not shown
+        "on_cores": [{"cores": 2, "lower_bound_s": 3600.0, "predicted_s": 3720.0},
+                     {"cores": 8, "lower_bound_s": 1800.0, "predicted_s": 1860.0}],
+    }))  # fmt: skip
     jobs = {}  # each seed's jobs, as the engine records them (column s: wall time)
     for seed, walls in {1: [60.0, 30.0], 2: [50.0], 3: [100.0, 20.0, 10.0]}.items():
         for k, wall in enumerate(walls):
@@ -525,10 +537,14 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     said = ("ran it: seeds 1, 2, 3, 1 setting(s)", "paper's way", "3 / 0 of 3", "0 / 2 of 3",
             "the sweep's 6 jobs took 90 s per replication on average, from 50 s to 130 s over "
             "its 3 replications, and 4.5 minutes in all", "the Slurm cluster hpc (partition short)",
-            "412")  # fmt: skip
+            "412", "At full scale the build has 500 jobs and 2.0 hours of job time; its "
+            "critical path is 30.0 minutes over 3 jobs. Scheduled on its records, it takes 62.0 "
+            "minutes on 2 cores and 31.0 minutes on 8 cores.", "demos 600 s → train 1200 s",
+            "a test CPU", "60.0 minutes on 2 cores, 30.0 minutes on 8 cores")  # fmt: skip
     for words in said:
         assert json.dumps(words)[1:-1] in shown, words
     assert "did not run it" not in shown
+    assert "all 0 s" not in shown  # the target is no step of the chain
 
 
 def test_the_package_is_the_science():

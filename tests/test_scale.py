@@ -158,7 +158,10 @@ def test_robustness_puts_the_sweep_and_its_cost_into_the_books_dag(dry_run):
     from icub_workflow.book.pages import robustness
 
     config = load_test_config()
-    values, _ = robustness({}, config | {"robustness": False})
+    tracked = {
+        "full_scale_critical_path.json": REPO / "benchmarks" / "full_scale_critical_path.json"
+    }
+    values, _ = robustness(tracked, config | {"robustness": False})
     points, networks = values["points"], values["networks"]
     plan = dry_run("--config", "robustness=True")
     counts, book_inputs = counts_and_inputs(plan)
@@ -272,7 +275,8 @@ def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers(
     from icub_workflow.book.pages import robustness
 
     config = load_config()
-    values, table = robustness({}, config)
+    tracked = REPO / "benchmarks" / "full_scale_critical_path.json"  # the full scale's record
+    values, table = robustness({"full_scale_critical_path.json": tracked}, config)
     assert values["ran"] is False and table is None
     assert "did not run" in values["sweep_ran"]
     assert (

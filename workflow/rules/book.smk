@@ -71,6 +71,9 @@ BOOK_DATA = {
     "claims_error_cells.csv": "data/claims/error_cells.csv",
     "claims_correct_sensitivity.csv": "data/claims/correct_sensitivity.csv",
     "claims_correct_cells.csv": "data/claims/correct_cells.csv",
+    # the full scale's critical path from its job records (benchmarks/critical_path.py --record,
+    # tracked: a default build cannot measure it), the robustness page
+    "full_scale_critical_path.json": "benchmarks/full_scale_critical_path.json",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
 }

@@ -504,6 +504,7 @@ def robustness(inputs: Mapping[str, str], config: dict,
         np.prod([len(sweep[k]) for k in ("seeds", "learning_rate", "hidden")]))  # fmt: skip
     values: dict = {"ran": bool(config["robustness"]), "points": points,
                     "networks": points * config["network"]["networks"]}  # fmt: skip
+    values |= full_scale_cost(inputs["full_scale_critical_path.json"])
     if not config["robustness"]:
         return values | {"sweep_ran": "did not run it (robustness is false, the default)"}, None
     from icub_workflow.benchmark_tables import replication_cost
@@ -517,6 +518,27 @@ def robustness(inputs: Mapping[str, str], config: dict,
             r["replications"], *(r[f"{e}_{k}"] for k in ("effect", "ci_low", "ci_high")))]
             for _, r in summary.iterrows()] for e in ("congruency", "size")}  # fmt: skip
     return values, summary.assign(**directions)
+
+
+def full_scale_cost(path: str) -> dict:
+    """The full scale's critical path and its wall time on each number of cores, from the record
+    ``benchmarks/critical_path.py --record`` wrote after a full-scale build (its job records):
+    minutes and hours for the robustness page, the chain's rules with their seconds, and where
+    the records come from."""
+    from icub_workflow.critical_path import load_record
+
+    record = load_record(path)
+    chain = " → ".join(f"{job['rule']} {job['s']:.0f} s" for job in record["chain"]
+                       if job["benchmark"] is not None)  # not the target `all`  # fmt: skip
+    return {
+        "full_jobs": record["jobs"], "full_job_h": record["sum_of_job_seconds"] / 3600,
+        "full_path_min": record["critical_path_s"] / 60,
+        "full_path_jobs": record["critical_path_jobs"], "full_chain": chain,
+        "full_on_cores": [{"cores": row["cores"], "at_least_min": row["lower_bound_s"] / 60,
+                           "predicted_min": row["predicted_s"] / 60}
+                          for row in record["on_cores"]],
+        "full_commit": record["commit"], "full_cpu": record["cpu"], "full_date": record["date"],
+    }  # fmt: skip
 
 
 #: The config sections the pages quote, each setting by its path (a reader changes it by that name).
