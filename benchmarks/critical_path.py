@@ -24,7 +24,8 @@ records: the first is printed apart, the second added to each job if given.
 
 Prints the critical path (each job, its rule and seconds), then the figures per number of
 cores; the last line is JSON: jobs, missing, critical_path_s, sum_of_job_seconds, and for the
-first number of cores, cores, lower_bound_s, predicted_s. ``--record`` writes these, the wall
+first number of cores, cores, lower_bound_s, predicted_s, and the records' span (``span_s``:
+the build's wall time, for a build from scratch). ``--record`` writes these, the wall
 times on every number of cores, the chain, the commit, the date and the CPU (refused if a job
 has no record).
 """
@@ -84,7 +85,7 @@ def main() -> None:
     args = parser.parse_args(ours)
     text, dry_s = dry_run(max(args.cores), extra)
     jobs = parse_dry_run(text)
-    seconds, missing = {}, []
+    seconds, missing, ran = {}, [], []  # ran: each recorded job's (start, end)
     for job in jobs.values():
         seconds[job.jobid] = args.overhead
         if job.benchmark is None:
@@ -94,9 +95,12 @@ def main() -> None:
             missing.append(job.benchmark)
             continue
         try:
-            seconds[job.jobid] += job_seconds(path)
+            wall = job_seconds(path)
         except ValueError as error:
             sys.exit(str(error))
+        seconds[job.jobid] += wall
+        end = path.stat().st_mtime  # Snakemake writes the record as the job ends
+        ran.append((end - wall, end))
     if missing:
         message = (f"{len(missing)} of {len(jobs)} jobs have no record under {args.directory} "
                    f"(counted 0 s), e.g. {', '.join(sorted(missing)[:3])}")  # fmt: skip
@@ -139,6 +143,9 @@ def main() -> None:
         "lower_bound_s": first["lower_bound_s"],
         "predicted_s": first["predicted_s"],
         "dry_run_s": round(dry_s, 1),
+        # from the first recorded job's start to the last one's end: the build's own wall time
+        # if it ran whole, from scratch (else it reaches back to older records)
+        "span_s": round(max(e for _, e in ran) - min(b for b, _ in ran), 1) if ran else 0.0,
     }
     if args.record is not None:
         if missing:

@@ -229,6 +229,7 @@ def test_a_critical_path_record_that_is_missing_or_incomplete_is_refused(tmp_pat
         "sum_of_job_seconds": 16.0, "chain": [{"rule": "train", "s": 9.0, "benchmark": "x"}],
         "on_cores": [{"cores": 2, "lower_bound_s": 9.0, "predicted_s": 9.0}],
         "commit": "abc1234", "date": "2026-12-07", "cpu": "a CPU", "snakemake_args": [],
+        "span_s": 12.0,
     }  # fmt: skip
     path.write_text(json.dumps(whole))
     assert load_record(path) == whole

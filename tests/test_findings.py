@@ -487,7 +487,7 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
     inputs["full_scale_critical_path.json"].write_text(json.dumps({
         "jobs": 500, "missing": 0, "critical_path_s": 1800.0, "critical_path_jobs": 3,
         "sum_of_job_seconds": 7200.0, "commit": "abc1234", "date": "2026-12-07",
-        "cpu": "a test CPU", "snakemake_args": ["--config", "robustness=True"],
+        "cpu": "a test CPU", "snakemake_args": ["--config", "robustness=True"], "span_s": 3810.0,
         "chain": [{"rule": "demos", "s": 600.0, "benchmark": "a"},
                   {"rule": "train", "s": 1200.0, "benchmark": "b"},
                   {"rule": "all", "s": 0.0, "benchmark": None}],  # the target: not shown
@@ -538,8 +538,10 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
             "the sweep's 6 jobs took 90 s per replication on average, from 50 s to 130 s over "
             "its 3 replications, and 4.5 minutes in all", "the Slurm cluster hpc (partition short)",
             "412", "At full scale the build has 500 jobs and 2.0 hours of job time; its "
-            "critical path is 30.0 minutes over 3 jobs. Scheduled on its records, it takes 62.0 "
-            "minutes on 2 cores and 31.0 minutes on 8 cores.", "demos 600 s → train 1200 s",
+            "critical path is 30.0 minutes over 2 jobs. A schedule of these jobs predicts 62.0 "
+            "minutes on 2 cores and 31.0 minutes on 8 cores; the build they come from ran 63.5 "
+            "minutes from its first job's start to its last one's end.",
+            "demos 600 s → train 1200 s",
             "a test CPU", "60.0 minutes on 2 cores, 30.0 minutes on 8 cores")  # fmt: skip
     for words in said:
         assert json.dumps(words)[1:-1] in shown, words

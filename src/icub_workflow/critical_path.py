@@ -191,7 +191,7 @@ def record_path(benchmark: str, directory: Path, default: str = "data/benchmarks
 RECORD_KEYS = {
     "jobs": int, "missing": int, "critical_path_s": float, "critical_path_jobs": int,
     "sum_of_job_seconds": float, "on_cores": list, "chain": list, "commit": str, "date": str,
-    "cpu": str, "snakemake_args": list,
+    "cpu": str, "snakemake_args": list, "span_s": float,
 }  # fmt: skip
 
 

@@ -533,7 +533,8 @@ def full_scale_cost(path: str) -> dict:
     return {
         "full_jobs": record["jobs"], "full_job_h": record["sum_of_job_seconds"] / 3600,
         "full_path_min": record["critical_path_s"] / 60,
-        "full_path_jobs": record["critical_path_jobs"], "full_chain": chain,
+        "full_path_jobs": sum(job["benchmark"] is not None for job in record["chain"]),
+        "full_chain": chain, "full_span_min": record["span_s"] / 60,
         "full_on_cores": [{"cores": row["cores"], "at_least_min": row["lower_bound_s"] / 60,
                            "predicted_min": row["predicted_s"] / 60}
                           for row in record["on_cores"]],
