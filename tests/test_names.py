@@ -87,6 +87,21 @@ def test_each_form_shows_what_it_says():
         synthetic_materials().shown("name")
 
 
+def test_names_that_reach_the_maps_alone_give_the_network_no_name_input():
+    """A run whose names reach the Object map but not the network (names.routes without
+    ``network``) has Goal activations per form and no name input: a form blanks the image or
+    not, takes its Goal activations, and adds no input unit."""
+    import dataclasses
+
+    m = dataclasses.replace(synthetic_materials(units_per_name=10), names=None)
+    for form in FORMS:
+        view = m.shown(form)
+        assert view.names is None and view.goal_forms is None
+        np.testing.assert_array_equal(view.visual, m.visual * (form != "name"))
+        np.testing.assert_array_equal(view.goal, m.goal_forms[FORMS.index(form)])
+        assert context(view, 2, 0, "first_step").shape == (9, 100 + 100)
+
+
 def test_training_shows_each_form_on_its_declared_share():
     m = synthetic_materials(units_per_name=10)
     names = names_on(training={"phase1": {"both": 1}, "phase2": {"image": 1, "name": 2}})

@@ -48,7 +48,8 @@ class Materials:
                     "set config names.use to true for a run with names"
                 )
             return self
-        names = np.zeros_like(self.visual) if self.names is None else self.names
+        # a run whose names reach the maps but not the network has no name input: none shown
+        names = np.zeros((len(self.visual), 0)) if self.names is None else self.names
         visual, names = shown(self.visual, names, form)
         return dataclasses.replace(
             self,
