@@ -45,9 +45,12 @@ check_scene(config)
 include: "workflow/rules/common.smk"
 
 
-# A run's folder (common.smk: PLAN.folder; names may hold dots, lr0.075) and a network's index.
+# A run's folder (RunPlan.folder: the config's own at the top of data/, any other in runs/{run}/;
+# names may hold dots, lr0.075), by its shape: a pattern listing every run's folder would be
+# compiled into every output's pattern, a second of every start (a job asked for a folder that
+# no run has is refused by its input functions, RunPlan.run_in); and a network's index.
 wildcard_constraints:
-    folder=folders_pattern(PLAN.runs),
+    folder=FOLDER_PATTERN,
     net=r"\d\d",
 
 

@@ -35,6 +35,23 @@ def test_the_configs_own_run_is_first_at_the_top_of_data(plan, config):
     assert all(plan.run_in(plan.folder(run)) == run for run in plan.runs)
     with pytest.raises(KeyError):
         plan.folder("no_such_run")
+    with pytest.raises(KeyError, match="no run of this config lives in data/runs/typo/"):
+        plan.run_in("runs/typo/")
+
+
+def test_every_runs_folder_has_the_shape_the_rules_match():
+    """The rules match a run's folder by its shape (FOLDER_PATTERN), not by a list of every
+    run's: each run's folder has it, whole, at either scale, and paths outside runs/ do not."""
+    import re
+
+    from icub_workflow.runs import FOLDER_PATTERN
+
+    shape = re.compile(FOLDER_PATTERN)
+    for robustness in (False, True):
+        plan = plan_runs(load_config() | {"robustness": robustness})
+        assert all(shape.fullmatch(plan.folder(run)) for run in plan.runs)
+    for other in ("measured/seed101/", "runs/a/b/", "words/", "runs//"):
+        assert not shape.fullmatch(other), other
 
 
 def test_the_ablation_is_the_other_cue_timing(plan, config):

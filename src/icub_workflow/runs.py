@@ -28,6 +28,9 @@ from icub_workflow.parts import part_names
 #: The config's own run: its name in the tables (column ``run``).
 MAIN = "main"
 
+#: The shape of every run's folder (``RunPlan.folder``): empty, or ``runs/{run}/``.
+FOLDER_PATTERN = r"(?:runs/[^/]+/)?"
+
 #: A measured run's files that its seed's one job makes (rule ``measured``: the steps soms,
 #: train and measures), by their path in the run's folder: they live in the job's folder.
 MEASURED_FILES = ("soms/", "train/", "eval/measures.")
@@ -130,8 +133,16 @@ class RunPlan:
         return path
 
     def run_in(self, folder: str) -> str:
-        """The run whose folder is ``folder`` (the inverse of :meth:`folder`)."""
-        return self._by_folder()[folder]
+        """The run whose folder is ``folder`` (the inverse of :meth:`folder`); a folder no run
+        of this config has is refused, naming it."""
+        try:
+            return self._by_folder()[folder]
+        except KeyError:
+            raise KeyError(
+                f"no run of this config lives in data/{folder}: a run's files are in data/ (the "
+                "config's own) or data/runs/{run}/ for a run the plan makes (RunPlan.runs); "
+                "check the path asked for, or the config that plans the run"
+            ) from None
 
     def folders(self, runs: list[str] | None = None) -> list[str]:
         return [self.folder(run) for run in (self.runs if runs is None else runs)]
@@ -193,9 +204,10 @@ class RunPlan:
 
     # ---- which rule makes a run's step (the rules ask; none decides) ---------------------------
     # One rule per step serves every run, through the wildcards `folder` (the run) and, for the
-    # networks, `part` (``parts``); only a measured run's steps go to its seed's one job. The
-    # plan says which rule serves each run's step; the rules take the runs it names
-    # (``served_by``).
+    # networks, `part` (``parts``); only a measured run's steps go to its seed's one job, whose
+    # folder holds their files (``path``), so no other rule's output matches them. The plan
+    # says which rule serves each run's step; a rule that serves a few runs takes the folders
+    # it names (``served_by``), the others any folder of the shape ``FOLDER_PATTERN``.
 
     def rule_for(self, run: str, step: str) -> str:
         """The rule that makes ``step`` (soms, train, measures, robot_test) for ``run``.

@@ -9,7 +9,7 @@ from icub_affordance.learning.variants import NetworkVariant
 from icub_workflow.code_deps import CodeGraph, page_code
 from icub_workflow.config_checks import check_runs
 from icub_workflow.parts import part_networks
-from icub_workflow.runs import MAIN, plan_runs
+from icub_workflow.runs import FOLDER_PATTERN, MAIN, plan_runs
 from icub_workflow.scene_files import scene_files
 
 
@@ -62,8 +62,11 @@ PLAN = plan_runs(config)
 check_runs(config, CONFIG_SCHEMA, taken=[run for run in PLAN.runs if run not in config["runs"]])
 NETWORKS = PLAN.networks(MAIN)
 # Which rule makes each run's maps, networks, measures and robot test is the plan's to say
-# (icub_workflow.runs: RunPlan.rule_for, tested in tests/test_run_plan.py); a rule serves the
-# runs the plan names for it (RunPlan.served_by).
+# (icub_workflow.runs: RunPlan.rule_for, tested in tests/test_run_plan.py), through where it
+# puts the files (RunPlan.path): a measured run's maps, networks and measures lie in its seed's
+# folder (rule measured), so `soms`, `train` and `measures` serve any folder of the shape
+# FOLDER_PATTERN; the few rules that serve a handful of runs (robot_test, phase1, word_trials)
+# name their folders (RunPlan.served_by).
 MEASURED_GROUPS = PLAN.measured_groups
 
 

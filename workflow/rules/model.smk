@@ -10,8 +10,6 @@ rule soms:
         code=script_code("soms"),
     output:
         "data/{folder}soms/soms.npz",
-    wildcard_constraints:
-        folder=served_by("soms", "soms"),
     params:
         soms=run_section("soms"),
         names=run_section("names"),
@@ -75,7 +73,6 @@ rule train:
         grip_distance=run_section("grip_distance"),
         seed=run_section("seed"),
     wildcard_constraints:
-        folder=served_by("train", "train"),
         part=r"net\d\d|all",
     # before the other rules' jobs when both are ready: the robot tests wait on these networks,
     # and theirs are the longest jobs that follow (see workflow/rules/robot.smk)

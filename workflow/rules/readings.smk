@@ -20,8 +20,6 @@ rule measures:
         network=run_section("network"),
         grip_distance=run_section("grip_distance"),
         measures=config["readings"]["measures"],
-    wildcard_constraints:
-        folder=served_by("measures", "measures"),
     resources:
         mem_mb=1000,
         runtime=10,
