@@ -224,9 +224,10 @@ def test_what_qualifies_a_verdict_is_recomputed_beside_each_test():
     congruency effect (the mean over replications) and whether it lies inside the margin, and
     whether the difference's unadjusted p is below alpha; a size row whether its estimate is the
     congruency test's number and whether the name's wrong grips all fall in the incongruent
-    small cell. Here the image's effect is 0.002 (inside every margin), the name's size and
-    congruency estimates are one number (both 0.03 + the same draws), and one cue timing's
-    closed loop has a wrong grip in a congruent cell."""
+    small cell (and made some). Here the image's effect is 0.002 (inside every margin), the
+    name's size and congruency estimates are one number (both 0.03 + the same draws), and one
+    cue timing's closed loop has a wrong grip in a congruent cell beside the incongruent small
+    one's."""
     declaration = load_config()["words"]
     alpha = float(declaration["alpha"])
     draws = np.random.default_rng(7).normal(0, 0.002, len(SEEDS))
@@ -247,6 +248,12 @@ def test_what_qualifies_a_verdict_is_recomputed_beside_each_test():
     tests = word_tests(estimates, declaration)
     table = qualifiers(tests, forms, cells, alpha)
     assert list(table.columns[: len(tests.columns)]) == list(tests.columns)
+    # the congruent cell's wrong grip removed: first_step's closed loop errs only where it should
+    alone = qualifiers(tests, forms, cells.drop(index=1), alpha)
+    alone = alone[alone["test"] == "size"].set_index(["cue", "mode", "measure"])
+    assert alone["only_incongruent_small"].tolist() == [
+        cue == "first_step" and mode == "closed_loop" for cue, mode, _ in alone.index
+    ]
     image_mean = float(np.mean(0.002 + draws))
     for _, row in table.iterrows():
         if row["test"] == "equivalence":
@@ -256,8 +263,9 @@ def test_what_qualifies_a_verdict_is_recomputed_beside_each_test():
             assert pd.isna(row["same_as_congruency"])
         elif row["test"] == "size":
             assert row["same_as_congruency"] is True
-            congruent_error = row["cue"] == "first_step" and row["mode"] == "closed_loop"
-            assert row["only_incongruent_small"] is (not congruent_error)
+            # wrong grips, all incongruent and small: nowhere (first_step's closed loop has one
+            # in a congruent cell too; the other conditions none at all)
+            assert row["only_incongruent_small"] is False
             assert pd.isna(row["image_effect"])
         else:
             assert table.loc[[_], list(table.columns[len(tests.columns) :])].isna().all(axis=None)

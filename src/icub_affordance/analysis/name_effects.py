@@ -209,8 +209,8 @@ def qualifiers(
       (``image_inside_margin``: a name with no effect would then pass as well), and whether
       the difference's own unadjusted p is below ``alpha`` (``difference_below_alpha``);
     - a size row: whether its estimate is the congruency test's number (``same_as_congruency``:
-      the same cells read by both contrasts) and whether every wrong grip of the name alone in
-      its cue timing and mode, if any, fell in the incongruent small cell
+      the same cells read by both contrasts) and whether the name alone, in its cue timing and
+      mode, made wrong grips, all of them in the incongruent small cell
       (``only_incongruent_small``, from ``error_cells``, the mean over replications).
 
     Empty where a column does not apply."""
@@ -234,7 +234,7 @@ def qualifiers(
             mine = named[(named["cue"] == row["cue"]) & (named["mode"] == row["mode"])]
             rates = mine.groupby(["congruent", "size"])["wrong_grip"].mean()
             carrying = {(str(c), str(z)) for (c, z), rate in rates.items() if rate > 0}
-            out.at[i, "only_incongruent_small"] = carrying <= {("False", "small")}
+            out.at[i, "only_incongruent_small"] = carrying == {("False", "small")}
     return out
 
 
