@@ -2,18 +2,28 @@
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 
-import numpy as np
-import pytest
-import yaml
+from icub_workflow.manifest import arithmetic_environment, arithmetic_problems, cpu_flags
 
-from icub_affordance.body.demonstrations import DemoConfig
-from icub_affordance.body.robot import Robot
-from icub_affordance.learning.maps import SOMConfig
-from icub_affordance.learning.training import TrainConfig
-from icub_workflow.configs import merged
+# The build's arithmetic (one thread; numpy and OpenBLAS at the AVX2 level where the CPU has it),
+# set as the Snakefile sets it for every job, before numpy is first imported: a bit recorded by a
+# test then holds on any x86-64 CPU with AVX2, as the build's bytes do. On an AVX-512 machine the
+# suite computes as an AVX2-only CPU would. xdist's workers and every subprocess inherit it.
+ARITHMETIC = arithmetic_environment(cpu_flags())
+os.environ.update(ARITHMETIC)
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+import yaml  # noqa: E402
+
+from icub_affordance.body.demonstrations import DemoConfig  # noqa: E402
+from icub_affordance.body.robot import Robot  # noqa: E402
+from icub_affordance.learning.maps import SOMConfig  # noqa: E402
+from icub_affordance.learning.training import TrainConfig  # noqa: E402
+from icub_workflow.configs import merged  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -103,6 +113,18 @@ def _snakemake_server():
             text=True,
         )
     return _Forks.server
+
+
+def pytest_configure(config) -> None:
+    """Refuse to run a suite whose numbers would not be the build's: numpy imported before this
+    file set the arithmetic (a plugin, or ``python -c 'import numpy; pytest.main()'``)."""
+    problems = arithmetic_problems(ARITHMETIC)
+    if problems:
+        raise pytest.UsageError(
+            "the tests must compute in the build's arithmetic (icub_workflow.manifest), but: "
+            + "; ".join(problems)
+            + ". Run `pytest` in a fresh process, with no plugin that imports numpy first."
+        )
 
 
 def pytest_sessionfinish(session) -> None:
@@ -235,3 +257,30 @@ def pytest_collection_modifyitems(config, items) -> None:
         costly = [item for item in items if any(item.get_closest_marker(m) for m in COSTLY)]
         config.hook.pytest_deselected(items=costly)
         items[:] = [item for item in items if item not in costly]
+
+
+#: The tests that need a program outside environment.lock, by the variable that asks for each:
+#: a plain `pytest` skips one whose program is missing (and installs nothing); asked for, as
+#: `.ci/run` asks for both, a missing program fails it. Every test a plain pytest may skip, and
+#: why: docs/pipeline.md, *Development*.
+TOOL_TESTS = {"chromium": "ICUB_CHROMIUM_TEST", "slurm": "ICUB_SLURM_TEST"}
+
+
+class _ToolOutcomes:
+    """The outcome of each test marked `tool`, for the run's last lines."""
+
+    seen: dict[str, str] = {}
+
+
+def pytest_runtest_logreport(report) -> None:
+    if "tool" in report.keywords and (report.when == "call" or report.outcome != "passed"):
+        _ToolOutcomes.seen[report.nodeid] = report.outcome
+
+
+def pytest_terminal_summary(terminalreporter) -> None:
+    """Say of each test that needs a program outside the lock whether it ran: a CI log shows the
+    book was looked at in Chromium, not only that nothing failed."""
+    if _ToolOutcomes.seen:
+        terminalreporter.section("tests that need a program outside environment.lock")
+        for nodeid, outcome in sorted(_ToolOutcomes.seen.items()):
+            terminalreporter.write_line(f"{outcome}: {nodeid}")

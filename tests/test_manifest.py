@@ -15,6 +15,7 @@ from conftest import CONFIG, REPO, run_snakemake, scratch_workflow
 
 from icub_workflow.manifest import (
     arithmetic_environment,
+    arithmetic_problems,
     compare,
     cpu_flags,
     digests,
@@ -140,6 +141,20 @@ def test_the_arithmetic_environment_holds_numpy_below_avx512():
     assert (
         "os.environ.update(arithmetic_environment(cpu_flags()))" in (REPO / "Snakefile").read_text()
     )
+
+
+def test_the_tests_compute_in_the_builds_arithmetic():
+    """tests/conftest.py sets the Snakefile's environment before numpy's first import, so a bit a
+    test records is the bit an AVX2-only CPU computes; and the check sees a process without it."""
+    assert arithmetic_problems(arithmetic_environment(cpu_flags())) == []
+    code = (
+        "from icub_workflow.manifest import arithmetic_environment, arithmetic_problems, "
+        "cpu_flags; print(len(arithmetic_problems(arithmetic_environment(cpu_flags()))))"
+    )
+    bare = {k: v for k, v in os.environ.items() if k not in arithmetic_environment(cpu_flags())}
+    out = subprocess.run([sys.executable, "-c", code], env=bare, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert int(out.stdout) >= len(arithmetic_environment(cpu_flags()))
 
 
 def test_openblas_is_held_at_haswell_only_on_a_cpu_that_has_it(tmp_path):

@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 from conftest import REPO, TEST_CONFIG, load_test_config, scratch_workflow
 
-pytestmark = pytest.mark.reruns
+pytestmark = [pytest.mark.reruns, pytest.mark.tool("slurm")]
 
 TOOLS = REPO / "tools" / "slurm-local"
 # the test cluster's own settings, beside the profile's: no accounting database, so job states

@@ -51,6 +51,44 @@ def arithmetic_environment(flags: set[str]) -> dict[str, str]:
     return ONE_THREAD | (AVX2_LEVEL if {"avx2", "fma"} <= flags else {})
 
 
+def arithmetic_problems(environment: Mapping[str, str]) -> list[str]:
+    """What of `environment` (:func:`arithmetic_environment`'s) this process does not compute
+    with: each variable it lacks, each numpy SIMD level it was to leave and still uses, and
+    OpenBLAS's kernels if they are not the ones named. Imports numpy, so only a process whose
+    environment was set before its first numpy import passes; none means it computes as the
+    build's jobs do."""
+    import ctypes
+
+    import numpy as np
+    from numpy._core import _multiarray_umath as umath
+
+    problems = [
+        f"{key}={os.environ.get(key)!r}, not {value!r}"
+        for key, value in environment.items()
+        if os.environ.get(key) != value
+    ]
+    dropped = environment.get("NPY_DISABLE_CPU_FEATURES", "").split()
+    problems += [
+        f"numpy uses {level}, which NPY_DISABLE_CPU_FEATURES leaves out: numpy was imported "
+        "before the variable was set"
+        for level in dropped
+        if umath.__cpu_features__.get(level)
+    ]
+    if "OPENBLAS_CORETYPE" in environment:
+        wanted = environment["OPENBLAS_CORETYPE"]
+        bundled = Path(np.__file__).parent.with_name("numpy.libs")
+        libraries = sorted(bundled.glob("libscipy_openblas*"))
+        if not libraries:
+            problems.append("numpy's OpenBLAS (numpy.libs/libscipy_openblas*) was not found")
+        else:
+            corename = ctypes.CDLL(str(libraries[0])).scipy_openblas_get_corename64_
+            corename.restype = ctypes.c_char_p
+            used = corename().decode()
+            if used.lower() != wanted.lower():
+                problems.append(f"OpenBLAS runs {used} kernels, not {wanted}")
+    return problems
+
+
 RESULT_SUFFIXES = (".csv", ".json", ".npz", ".md")
 NOT_RESULTS = ("data/logs/", "data/benchmarks/")
 _LINE = re.compile(r"^([0-9a-f]{64})  (\S.*)$")
