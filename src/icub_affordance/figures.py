@@ -741,3 +741,109 @@ def words_effects(by_form, replications, path) -> None:
         ax.set_xlabel("effect (positive: the paper's direction)")
     fig.tight_layout()
     save(fig, path)
+
+
+def claim_cells(cells, declared, cues, path) -> None:
+    """Where the paper's two effects live: for each cue timing x test mode (columns), the four
+    cells of object size x grip asked, the mean over replications with its 95% interval, on the
+    all-trial RMSE (top) and the wrong-grip rate (middle). The two congruent cells are joined by
+    a solid line, the two incongruent by a dashed one: congruency is how far the dashed line's
+    middle lies above the solid one's, size how far the small objects lie above the large. Each
+    RMSE panel names its declared estimates (``declared``: the claims' summary, measure
+    ``rmse``). Bottom: the closed-loop wrong-grip trials by object size, how far they travelled
+    towards the other grip (commitment) and what the error cost in RMSE beyond a correct trial.
+    ``cells``: ``analysis.cells.cell_summary``'s table; ``cues``: the cue timings in order."""
+    conditions = [(cue, mode) for cue in cues for mode in ("teacher_forced", "closed_loop")]
+    names = {
+        "closed_loop": "closed loop",
+        "teacher_forced": "teacher forced",
+        "first_step": "cue at the first step",
+        "all_steps": "cue at every step",
+    }
+    grips = {"power": "#1f77b4", "precision": "#d95f02"}
+    rows = {"rmse": "RMSE, all trials", "wrong_rate": "wrong-grip rate"}
+    fig = plt.figure(figsize=(12, 9))
+    grid = fig.add_gridspec(3, len(conditions), height_ratios=(1, 0.8, 0.8), hspace=0.6, wspace=0.4)
+    x = {"large": 0.0, "small": 1.0}
+    for j, (cue, mode) in enumerate(conditions):
+        for i, (value, label) in enumerate(rows.items()):
+            ax = fig.add_subplot(grid[i, j])
+            shown = cells[(cells["cue"] == cue) & (cells["mode"] == mode)]
+            shown = shown[shown["value"] == value]
+            for congruent, style in ((True, "-"), (False, "--")):
+                pair = shown[shown["congruent"] == congruent].sort_values("size")
+                ax.plot(pair["size"].map(x), pair["mean"], style, color="0.55", lw=1, zorder=1)
+            for grip, colour in grips.items():
+                for _, cell in shown[shown["grip_asked"] == grip].iterrows():
+                    xi = x[cell["size"]] + (-0.04 if grip == "power" else 0.04)
+                    err = [[cell["mean"] - cell["ci_low"]], [cell["ci_high"] - cell["mean"]]]
+                    ax.errorbar(
+                        xi,
+                        cell["mean"],
+                        yerr=err if np.isfinite(err).all() else None,
+                        fmt="o",
+                        color=colour,
+                        ms=6,
+                        capsize=2,
+                        mfc=colour if cell["congruent"] else "white",
+                        zorder=2,
+                    )
+            ax.set_xticks([0, 1], ["large", "small"], fontsize=9)
+            ax.set_xlim(-0.35, 1.35)
+            ax.tick_params(labelsize=9)
+            ax.grid(axis="y", alpha=0.3)
+            if value == "wrong_rate":
+                ax.set_ylim(-0.05, 1.05)
+            if j == 0:
+                ax.set_ylabel(label, fontsize=10)
+            if i == 0:
+                tests = declared[(declared["cue"] == cue) & (declared["mode"] == mode)]
+                tests = tests[tests["measure"] == "rmse"].set_index("effect")["estimate"]
+                said = ", ".join(f"{e} {tests[e]:+.4f}".replace("-", "−") for e in tests.index)
+                ax.set_title(f"{names[cue]}\n{names[mode]}\n{said}", fontsize=9)
+    wrong = cells[(cells["mode"] == "closed_loop") & (cells["congruent"] == False)]  # noqa: E712
+    for k, (value, label) in enumerate(
+        {
+            "wrong_commitment": "how far towards the other grip (0: the grip asked, 1: the other)",
+            "wrong_cost": "the RMSE a wrong grip adds to a correct trial's",
+        }.items()
+    ):
+        ax = fig.add_subplot(grid[2, 2 * k : 2 * k + 2])
+        for c, cue in enumerate(cues):
+            for _, cell in wrong[(wrong["cue"] == cue) & (wrong["value"] == value)].iterrows():
+                if not np.isfinite(cell["mean"]):
+                    continue
+                xi = x[cell["size"]] + (c - 0.5) * 0.3
+                err = [[cell["mean"] - cell["ci_low"]], [cell["ci_high"] - cell["mean"]]]
+                ax.bar(
+                    xi, cell["mean"], width=0.28, color=["#6a51a3", "#9e9ac8"][c], label=names[cue]
+                )
+                if np.isfinite(err).all():
+                    ax.errorbar(xi, cell["mean"], yerr=err, fmt="none", color="black", capsize=2)
+        ax.set_xticks([0, 1], ["large object", "small object"], fontsize=9)
+        ax.tick_params(labelsize=9)
+        ax.set_title(f"closed loop, wrong-grip trials:\n{label}", fontsize=9)
+        ax.grid(axis="y", alpha=0.3)
+        handles, labels = ax.get_legend_handles_labels()
+        unique = dict(zip(labels, handles, strict=True))
+        ax.legend(unique.values(), unique.keys(), fontsize=8, frameon=False)
+    from matplotlib.lines import Line2D
+
+    key = [
+        Line2D([], [], marker="o", color=c, ls="", label=f"{g} grip asked")
+        for g, c in grips.items()
+    ]
+    key += [
+        Line2D([], [], marker="o", color="0.3", mfc="white", ls="", label="incongruent"),
+        Line2D([], [], color="0.55", ls="-", label="congruent pair"),
+        Line2D([], [], color="0.55", ls="--", label="incongruent pair"),
+    ]
+    fig.legend(
+        handles=key,
+        loc="upper center",
+        ncol=5,
+        fontsize=9,
+        frameon=False,
+        bbox_to_anchor=(0.5, 1.0),
+    )
+    save(fig, path)

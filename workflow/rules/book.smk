@@ -67,6 +67,8 @@ BOOK_DATA = {
     "claims_power.csv": "data/claims/power.csv",
     "claims_learning.csv": "data/claims/learning.csv",
     "claims_forest.png": "data/claims/forest.png",
+    "claims_cells.png": "data/claims/cells.png",
+    "claims_cells.csv": "data/claims/cells.csv",
     "claims_error_split.csv": "data/claims/error_split.csv",
     "claims_error_cells.csv": "data/claims/error_cells.csv",
     "claims_correct_sensitivity.csv": "data/claims/correct_sensitivity.csv",

@@ -88,6 +88,49 @@ rule claims_correct:
         "../scripts/claims_correct.py"
 
 
+rule claims_cells:
+    """Where the paper's two effects live: per cue timing x test mode, the four cells of object
+    size x grip asked over the confirmation's replications (mean, 95% t interval): all-trial
+    RMSE, wrong-grip rate, and the wrong trials' way towards the other grip and their RMSE beyond
+    a correct trial's (icub_affordance.analysis.cells). Description: the declared tests are
+    `claims`'."""
+    input:
+        trials=measured_inputs(CLAIM_TRIALS),
+        code=script_code("claims_cells"),
+    output:
+        cells="data/claims/cells.csv",
+        replications="data/claims/cell_replications.csv",
+    params:
+        trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
+        cues=[row["cue"] for row in PLAN.claim_rows],
+        seeds=[row["seed"] for row in PLAN.claim_rows],
+    log:
+        "data/logs/claims/cells.log",
+    benchmark:
+        "data/benchmarks/claims/cells.tsv"
+    script:
+        "../scripts/claims_cells.py"
+
+
+rule claims_cells_figure:
+    """The cells drawn: each condition's four cells with the declared estimates above them, and
+    the closed-loop wrong grips by object size (plot only; the book's front page)."""
+    input:
+        cells=rules.claims_cells.output.cells,
+        summary=rules.claims.output.summary,
+        code=script_code("claims_cells_figure"),
+    output:
+        "data/claims/cells.png",
+    params:
+        cues=config["confirmation"]["cues"],
+    log:
+        "data/logs/claims/cells_figure.log",
+    benchmark:
+        "data/benchmarks/claims/cells_figure.tsv"
+    script:
+        "../scripts/claims_cells_figure.py"
+
+
 rule claims_figure:
     """The answer at a glance: every declared test's estimate with its 95% interval, the paper's
     direction marked, the verdict as its colour (plot only)."""

@@ -1,0 +1,85 @@
+"""Where the paper's two effects live: the four cells of object size x grip asked.
+
+With four objects and two category mappings, each categorisation trial falls in one of four
+cells: a large or a small object, asked for a power or a precision grip. Two are congruent (a
+power grip of a large object, a precision grip of a small one) and two incongruent. The paper's
+claims are contrasts of these cells: congruency is the incongruent cells' mean minus the
+congruent cells' (the two diagonals), size the small objects' mean minus the large ones'. Shown
+cell by cell, a contrast can be read for what carries it: one cell far from the other three
+moves both contrasts at once.
+
+Per replication (a whole model: its demonstrations, maps and networks), a cell's value is the
+mean over its trials: every network x object x sequence once, so each network counts equally
+(the same trials in every network). Over replications, the mean and its t interval
+(``statistics.mean_ci``). Description, not a test: the declared tests are the claims'
+(``paper_claims``); this says where their estimates come from.
+
+Beside the cells, for wrong-grip trials: how far they travel towards the other grip (the
+declared ``commitment`` measure, 0 on the required grip, 1 on the other; ``trials.scores``), and
+what a wrong grip costs in RMSE beyond a correct trial of the same cell, by object size.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from icub_affordance.analysis.statistics import mean_ci
+
+#: The cells' two factors, in the tables' order.
+SIZES = ("large", "small")
+GRIPS = ("power", "precision")
+#: What a replication's cell holds, and what of it the summary gives intervals for.
+VALUES = ("rmse", "wrong_rate", "wrong_commitment", "wrong_cost")
+KEYS = ["cue", "mode", "size", "grip_asked"]
+
+
+def replication_cells(trials: pd.DataFrame) -> pd.DataFrame:
+    """Per replication x cue x test mode x object size x grip asked, from the categorisation
+    trials of ``trials`` (columns ``replication``, ``cue``, ``mode``, ``task``, ``size``,
+    ``target_grip``, ``congruent``, ``rmse``, ``wrong_grip``, ``commitment``): the cell's trials
+    and networks, mean RMSE, wrong-grip rate, and its wrong trials' mean commitment and mean
+    RMSE beyond its correct trials' (NaN where the cell has no wrong, or no correct, trial)."""
+    chosen = trials[trials["task"] == "categorisation"].rename(
+        columns={"target_grip": "grip_asked"}
+    )
+    rows = []
+    for key, cell in chosen.groupby(["replication", *KEYS], sort=True):
+        wrong = cell["wrong_grip"].astype(bool)
+        cost = cell.loc[wrong, "rmse"].mean() - cell.loc[~wrong, "rmse"].mean()
+        rows.append(
+            dict(zip(["replication", *KEYS], key, strict=True))
+            | {
+                "congruent": bool(cell["congruent"].astype(bool).iloc[0]),
+                "trials": len(cell),
+                "rmse": float(cell["rmse"].mean()),
+                "wrong_rate": float(wrong.mean()),
+                "wrong_commitment": float(cell.loc[wrong, "commitment"].mean())
+                if wrong.any()
+                else np.nan,
+                "wrong_cost": float(cost) if wrong.any() and (~wrong).any() else np.nan,
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def cell_summary(per_replication: pd.DataFrame, level: float = 0.95) -> pd.DataFrame:
+    """Per cue x test mode x object size x grip asked and value (``VALUES``): the mean over the
+    replications that have it, its t interval and how many replications it rests on."""
+    rows = []
+    for key, cells in per_replication.groupby(KEYS, sort=True):
+        for value in VALUES:
+            defined = cells[value].dropna().to_numpy(dtype=float)
+            mean, low, high = mean_ci(defined, level) if len(defined) else (np.nan,) * 3
+            rows.append(
+                dict(zip(KEYS, key, strict=True))
+                | {
+                    "congruent": bool(cells["congruent"].iloc[0]),
+                    "value": value,
+                    "mean": mean,
+                    "ci_low": low,
+                    "ci_high": high,
+                    "replications": len(defined),
+                }
+            )
+    return pd.DataFrame(rows)

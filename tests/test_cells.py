@@ -1,0 +1,85 @@
+"""The four cells of object size x grip asked (analysis.cells): each replication's cell values
+recomputed by hand, their intervals by scipy, and the declared estimates as contrasts of them."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+from scipy import stats
+
+from icub_affordance.analysis.cells import cell_summary, replication_cells
+
+
+def _trials() -> pd.DataFrame:
+    """Two replications, one cue and mode; each cell two trials per replication."""
+    rows = []
+    for replication, shift in ((1, 0.0), (2, 0.01)):
+        for size, grip, congruent in (
+            ("large", "power", True),
+            ("large", "precision", False),
+            ("small", "power", False),
+            ("small", "precision", True),
+        ):
+            for k in range(2):
+                wrong = int(not congruent and size == "small" and k == 0)
+                rows.append(
+                    {
+                        "replication": replication,
+                        "cue": "first_step",
+                        "mode": "closed_loop",
+                        "task": "categorisation",
+                        "size": size,
+                        "target_grip": grip,
+                        "congruent": congruent,
+                        "rmse": 0.05 + shift + 0.1 * wrong + 0.01 * k,
+                        "wrong_grip": wrong,
+                        "commitment": 0.8 if wrong else 0.1,
+                    }
+                )
+    grasping = dict(rows[0], task="grasping", rmse=9.0)
+    return pd.DataFrame([*rows, grasping])
+
+
+def test_a_replications_cell_is_the_mean_of_its_categorisation_trials():
+    cells = replication_cells(_trials()).set_index(["replication", "size", "grip_asked"])
+    small_power = cells.loc[(1, "small", "power")]
+    assert small_power["trials"] == 2
+    assert small_power["rmse"] == pytest.approx(((0.05 + 0.1) + (0.05 + 0.01)) / 2)
+    assert small_power["wrong_rate"] == 0.5
+    assert small_power["wrong_commitment"] == 0.8
+    assert small_power["wrong_cost"] == pytest.approx(0.15 - 0.06)
+    large_power = cells.loc[(2, "large", "power")]
+    assert large_power["rmse"] == pytest.approx(0.06 + 0.005)
+    assert large_power["wrong_rate"] == 0 and np.isnan(large_power["wrong_commitment"])
+    assert np.isnan(large_power["wrong_cost"]) and bool(large_power["congruent"])
+
+
+def test_a_cells_interval_is_t_over_the_replications():
+    per = replication_cells(_trials())
+    summary = cell_summary(per).set_index(["size", "grip_asked", "value"])
+    values = per[(per["size"] == "small") & (per["grip_asked"] == "power")]["rmse"].to_numpy()
+    low, high = stats.t.interval(0.95, len(values) - 1, values.mean(), stats.sem(values))
+    row = summary.loc[("small", "power", "rmse")]
+    assert (row["mean"], row["ci_low"], row["ci_high"]) == pytest.approx((values.mean(), low, high))
+    assert row["replications"] == 2 and not row["congruent"]
+    none = summary.loc[("large", "power", "wrong_commitment")]
+    assert none["replications"] == 0 and np.isnan(none["mean"])
+
+
+def test_the_declared_rmse_estimates_are_contrasts_of_the_cells(built):
+    """The figure's numbers above each condition are the declared tests'; its cells carry them:
+    congruency is the incongruent cells' mean less the congruent cells', size small less large."""
+    data = built / "data" / "claims"
+    cells = pd.read_csv(data / "cells.csv")
+    declared = pd.read_csv(data / "summary.csv")
+    declared = declared[declared["measure"] == "rmse"].set_index(["cue", "mode", "effect"])
+    rmse = cells[cells["value"] == "rmse"]
+    assert len(rmse) == 4 * len(declared) // 2
+    for (cue, mode), four in rmse.groupby(["cue", "mode"]):
+        mean = four.set_index(["size", "grip_asked"])["mean"]
+        congruent = four.set_index(["size", "grip_asked"])["congruent"]
+        congruency = mean[~congruent].mean() - mean[congruent].mean()
+        size = mean.xs("small").mean() - mean.xs("large").mean()
+        assert congruency == pytest.approx(declared.loc[(cue, mode, "congruency"), "estimate"])
+        assert size == pytest.approx(declared.loc[(cue, mode, "size"), "estimate"])

@@ -1,0 +1,21 @@
+"""The four cells of object size x grip asked over the confirmation's replications, per cue
+timing and test mode (data/claims/cells.csv), and each replication's (cell_replications.csv)."""
+
+import pandas as pd
+
+from icub_affordance.analysis.cells import cell_summary, replication_cells
+from icub_affordance.files import redirect_log, write_tables
+
+with redirect_log(snakemake.log[0]):
+    trials = pd.concat(
+        pd.read_csv(path).assign(cue=cue, replication=seed)
+        for path, cue, seed in zip(
+            snakemake.params.trials, snakemake.params.cues, snakemake.params.seeds, strict=True
+        )
+    )
+    per_replication = replication_cells(trials)
+    summary = cell_summary(per_replication)
+    write_tables(
+        [(snakemake.output.replications, per_replication), (snakemake.output.cells, summary)]
+    )
+    print(summary.to_string())
