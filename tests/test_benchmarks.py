@@ -42,6 +42,24 @@ def test_benchmark_scripts_say_what_is_missing(tmp_path):
         assert "no benchmark files" in result.stderr and "snakemake -c2" in result.stderr
 
 
+def test_job_imports_times_only_a_scripts_top_level_imports(tmp_path):
+    """benchmarks/job_imports.py: a script's imports run, its work does not."""
+    import json
+
+    script = tmp_path / "job.py"
+    script.write_text(
+        "import json\nfrom pathlib import Path\n\n"
+        "Path(__file__).with_name('ran').write_text('')\n"
+        "def f():\n    import csv\n"
+    )
+    result = run("job_imports.py", str(script), "--repeats", "1")
+    assert result.returncode == 0, result.stderr
+    assert not (tmp_path / "ran").exists()
+    figures = json.loads(result.stdout.splitlines()[-1])
+    assert set(figures["scripts"]) == {"job"}
+    assert abs(figures["total_s"] - figures["scripts"]["job"]) <= 0.01 and figures["total_s"] > 0
+
+
 def test_the_book_says_whether_its_build_ran_on_slurm_from_the_jobs_environment():
     from icub_workflow.benchmark_tables import executor
 

@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from icub_affordance.files import atomic_path, load_npz, save_npz, write_text
 from icub_affordance.learning.materials import Materials
@@ -30,6 +30,9 @@ from icub_workflow.parts import (
     write_part,
     write_phase1_part,
 )
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def make_soms(
@@ -175,6 +178,8 @@ def measure_networks(
 ) -> None:
     """Score every test trial of a run's networks on each declared measure (``trials_path``),
     and each measure's per-network contrasts and per-object means (``json_path``)."""
+    import pandas as pd
+
     from icub_affordance.analysis.reading_tests import analyse_measures
     from icub_affordance.trials.scores import measure_network
 
@@ -207,6 +212,8 @@ def signature_tables(
     (``errors``). A replication: its seed, its model inputs (maps, soms, demos), grip_distance,
     network settings and weights files. A test needs
     ``min_replications`` replications with an estimate (config ``confirmation``)."""
+    import pandas as pd
+
     from icub_affordance.analysis.signature_tests import (
         SignatureConfig,
         errors,

@@ -28,12 +28,14 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pandas as pd
 
 from icub_affordance.outcome import Outcome
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: The family's name wherever its tests appear.
 FAMILY = "confirmatory: the paper's claims over fresh replications"
@@ -112,6 +114,8 @@ def pilot_power(
     at least (alpha / family size) and at most (alpha), and its lower bound at the two ends of
     the SD's 95% interval; each at the replications expected to give an estimate
     (``expected_estimable``: ``replications`` times the pilot's share that did)."""
+    import pandas as pd
+
     tests = declared_tests(declaration)
     alpha, m = float(declaration["alpha"]), len(tests)
     rows = []
@@ -176,6 +180,8 @@ def replication_estimates(
     replication's ``reading_tests.analyse_measures`` result (``analyses``, in the order of ``rows``:
     cue, seed, run); for the correct-trial RMSE with its networks per cell and its
     leave-one-network-out range."""
+    import pandas as pd
+
     out = []
     for row, analysis in zip(rows, analyses, strict=True):
         if row["cue"] not in declaration["cues"]:
@@ -200,6 +206,8 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
     ``min_replications``; Holm's p over the family's tests with a p; the direction. For the
     correct-trial RMSE, the widest leave-one-network-out range of the replications' estimates
     and the fewest networks that carried a cell in any replication."""
+    import pandas as pd
+
     from icub_affordance.analysis.replicated import over_replications
     from icub_affordance.analysis.statistics import holm
 
@@ -249,6 +257,8 @@ def read_pilot(path: str) -> pd.DataFrame:
     """The pilot's table, refused with the fix if it lacks a column or a declared test."""
     from pathlib import Path
 
+    import pandas as pd
+
     if not Path(path).is_file():
         raise FileNotFoundError(
             f"{path}: the confirmation's pilot (config confirmation.pilot) is missing. Fix: "
@@ -269,6 +279,8 @@ def learning(curves: Sequence[pd.DataFrame], seeds: Sequence[int], networks: int
     """Per replication (its ``networks`` curves, in the order of ``seeds``), the training RMSE
     at the start and at the end (``verdicts.curve_summary``: the first 10 iterations, the last
     500), averaged over its networks."""
+    import pandas as pd
+
     from icub_affordance.analysis.verdicts import curve_summary
 
     rows = []

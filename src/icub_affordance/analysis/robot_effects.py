@@ -39,8 +39,8 @@ from icub_affordance.analysis.trial_effects import (
     simple_effects,
     trial_conditions,
 )
-from icub_affordance.body.robot import TOUCH_NAMES
 from icub_affordance.learning.variants import NetworkVariant
+from icub_affordance.vocabulary import TOUCH_NAMES
 
 #: The family of the config's own networks' robot tests in ``success_analysis``.
 OWN_ROBOT_FAMILY = "exploration: the config's own networks on the robot"

@@ -12,13 +12,15 @@ longer depend on the analysis's code.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pandas as pd
 
 from icub_affordance.learning.maps import active_units
 from icub_affordance.vocabulary import OBJECTS, TASKS
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: The study's control, which stands in its ``dose`` column beside the numeric doses: no size in
 #: the input (``removed``).
@@ -78,6 +80,8 @@ def manipulation_rows(soms: Mapping[str, np.ndarray]) -> list[dict[str, Any]]:
 
 def manipulation(table: Sequence[Mapping], soms: Sequence[Mapping]) -> pd.DataFrame:
     """One row per study run (dose, cue, seed, run), shape and map: the manipulation check."""
+    import pandas as pd
+
     rows = [
         dict(row) | check
         for row, maps in zip(table, soms, strict=True)
