@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 from scipy import stats
 
-from icub_affordance.analysis.cells import cell_summary, replication_cells
+from icub_affordance.analysis.cells import cell_summary, effect_shares, replication_cells
 
 
 def _trials() -> pd.DataFrame:
@@ -83,3 +83,24 @@ def test_the_declared_rmse_estimates_are_contrasts_of_the_cells(built):
         size = mean.xs("small").mean() - mean.xs("large").mean()
         assert congruency == pytest.approx(declared.loc[(cue, mode, "congruency"), "estimate"])
         assert size == pytest.approx(declared.loc[(cue, mode, "size"), "estimate"])
+
+
+def test_an_effects_share_is_its_estimate_over_its_conditions_mean_rmse():
+    summary = cell_summary(replication_cells(_trials()))
+    declared = pd.DataFrame(
+        [
+            {
+                "cue": "first_step",
+                "mode": "closed_loop",
+                "measure": m,
+                "effect": "size",
+                "estimate": 0.02,
+            }
+            for m in ("rmse", "rmse_correct")
+        ]
+    )
+    shares = effect_shares(summary, declared)
+    cells = summary[summary["value"] == "rmse"]["mean"]
+    assert len(shares) == 1 and len(cells) == 4
+    assert shares["condition_rmse"].iloc[0] == pytest.approx(cells.mean())
+    assert shares["share"].iloc[0] == pytest.approx(0.02 / cells.mean())

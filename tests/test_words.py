@@ -93,7 +93,8 @@ def test_the_rest_of_the_book_layer_names_its_verdict_words_from_the_words_modul
 def test_a_words_change_reruns_only_the_rules_that_write_words():
     """The words module is code only of the scripts whose outputs hold words (the claims', the
     contact-time test's, the signatures' and the words study's tables, the forest plot's
-    legend, the findings): a word changed reruns none of the model's rules."""
+    legend, the findings, and the book's table of verdict codes): a word changed reruns none of
+    the model's rules."""
     from icub_workflow.code_deps import CodeGraph
 
     graph = CodeGraph([REPO / "src"])
@@ -104,7 +105,8 @@ def test_a_words_change_reruns_only_the_rules_that_write_words():
         if words_file in {Path(p).resolve() for p in graph.closure([script.read_text()])}
     }
     assert users == {
-        "claims", "claims_figure", "findings", "robot_contact_time", "signatures", "words"
+        "claims", "claims_figure", "findings", "robot_contact_time", "signatures", "verdicts",
+        "words"
     }  # fmt: skip
 
 

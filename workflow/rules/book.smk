@@ -69,6 +69,8 @@ BOOK_DATA = {
     "claims_forest.png": "data/claims/forest.png",
     "claims_cells.png": "data/claims/cells.png",
     "claims_cells.csv": "data/claims/cells.csv",
+    "claims_effect_shares.csv": "data/claims/effect_shares.csv",
+    "verdicts.csv": "data/book/verdicts.csv",
     "claims_error_split.csv": "data/claims/error_split.csv",
     "claims_error_cells.csv": "data/claims/error_cells.csv",
     "claims_correct_sensitivity.csv": "data/claims/correct_sensitivity.csv",
@@ -107,6 +109,24 @@ FINDINGS_CONFIG = [
 BOOK_FINDINGS = {"findings.json": "data/book/findings.json"} | {
     f"tables/{table}.csv": f"data/book/tables/{table}.csv" for table in FINDINGS_TABLES
 }
+
+
+rule verdicts:
+    """Every test a sentence of the book may rest on, by name, with its verdict code: what the
+    book's `finding` directive checks each sentence's assumed verdicts against
+    (icub_workflow.book_build.verdict_table, pinned)."""
+    input:
+        claims=rules.claims.output.summary,
+        correct_sensitivity=rules.claims_correct.output.sensitivity,
+        code=script_code("verdicts"),
+    output:
+        "data/book/verdicts.csv",
+    log:
+        "data/logs/verdicts.log",
+    benchmark:
+        "data/benchmarks/verdicts.tsv"
+    script:
+        "../scripts/verdicts.py"
 
 
 rule rulegraph:

@@ -92,14 +92,16 @@ rule claims_cells:
     """Where the paper's two effects live: per cue timing x test mode, the four cells of object
     size x grip asked over the confirmation's replications (mean, 95% t interval): all-trial
     RMSE, wrong-grip rate, and the wrong trials' way towards the other grip and their RMSE beyond
-    a correct trial's (icub_affordance.analysis.cells). Description: the declared tests are
-    `claims`'."""
+    a correct trial's (icub_affordance.analysis.cells); each declared RMSE estimate as a share of
+    its condition's mean RMSE. Description: the declared tests are `claims`'."""
     input:
         trials=measured_inputs(CLAIM_TRIALS),
+        declared=rules.claims.output.summary,
         code=script_code("claims_cells"),
     output:
         cells="data/claims/cells.csv",
         replications="data/claims/cell_replications.csv",
+        shares="data/claims/effect_shares.csv",
     params:
         trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
         cues=[row["cue"] for row in PLAN.claim_rows],

@@ -15,6 +15,7 @@ from icub_workflow.benchmark_tables import (
     read_benchmarks,
     timeline,
 )
+from icub_workflow.book_build import pinned
 from icub_workflow.book_build.notebooks import execute_pages, is_notebook
 from icub_workflow.book_build.run import provenance, results_provenance, stage
 
@@ -43,6 +44,9 @@ with redirect_log(snakemake.log[0]):
         book, [page for page in sorted(book.glob("*.md")) if is_notebook(page)], snakemake.threads
     )
     print(f"executed {len(seconds)} pages, {sum(seconds.values()):.1f} s of kernel time")
+    # the book's Sphinx extension (book/_config.yml), imported here so that its code is this
+    # rule's input: a change to how findings are checked rebuilds the book
+    assert pinned.__name__ in (book / "_config.yml").read_text()
     jupyter_book = str(Path(sys.executable).parent / "jupyter-book")
     # --all: every page, every time (the build above is clean anyway). Sphinx would rebuild
     # only the pages whose source changed, but what changes is the data in book/_data.

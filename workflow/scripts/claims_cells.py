@@ -1,9 +1,10 @@
 """The four cells of object size x grip asked over the confirmation's replications, per cue
-timing and test mode (data/claims/cells.csv), and each replication's (cell_replications.csv)."""
+timing and test mode (data/claims/cells.csv), each replication's (cell_replications.csv), and
+each declared RMSE estimate as a share of its condition's mean RMSE (effect_shares.csv)."""
 
 import pandas as pd
 
-from icub_affordance.analysis.cells import cell_summary, replication_cells
+from icub_affordance.analysis.cells import cell_summary, effect_shares, replication_cells
 from icub_affordance.files import redirect_log, write_tables
 
 with redirect_log(snakemake.log[0]):
@@ -15,7 +16,12 @@ with redirect_log(snakemake.log[0]):
     )
     per_replication = replication_cells(trials)
     summary = cell_summary(per_replication)
+    shares = effect_shares(summary, pd.read_csv(snakemake.input.declared))
     write_tables(
-        [(snakemake.output.replications, per_replication), (snakemake.output.cells, summary)]
+        [
+            (snakemake.output.replications, per_replication),
+            (snakemake.output.cells, summary),
+            (snakemake.output.shares, shares),
+        ]
     )
     print(summary.to_string())

@@ -83,3 +83,15 @@ def cell_summary(per_replication: pd.DataFrame, level: float = 0.95) -> pd.DataF
                 }
             )
     return pd.DataFrame(rows)
+
+
+def effect_shares(summary: pd.DataFrame, declared: pd.DataFrame) -> pd.DataFrame:
+    """Each declared all-trial RMSE estimate (``declared``: the claims' summary, measure
+    ``rmse``) beside its condition's mean RMSE (the mean of its four cells' means, from
+    ``cell_summary``'s ``summary``) and as a share of it: how large an effect is against the
+    RMSE it is measured on."""
+    rmse = summary[summary["value"] == "rmse"]
+    level = rmse.groupby(["cue", "mode"])["mean"].mean().rename("condition_rmse")
+    tests = declared[declared["measure"] == "rmse"][["cue", "mode", "effect", "estimate"]]
+    shares = tests.join(level, on=["cue", "mode"])
+    return shares.assign(share=shares["estimate"] / shares["condition_rmse"])

@@ -1,0 +1,94 @@
+"""Sentences pinned to the tests they rest on (book_build.pinned, verdict_table): the assumed
+verdicts read from a directive's argument, every test of the claims named once with the code its
+table holds or the declared tests' rule gives, and a sentence whose verdict moved is found."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from icub_workflow.book_build.pinned import disagreements, parse_assumptions, read_verdicts
+from icub_workflow.book_build.verdict_table import verdict_rows
+
+
+def test_a_findings_argument_is_pairs_of_test_and_code():
+    assert parse_assumptions("a/b=paper\n  c/d=not_assessable") == [
+        ("a/b", "paper"),
+        ("c/d", "not assessable"),
+    ]
+    for bad in ("a/b", "=paper", "a/b=", ""):
+        with pytest.raises(ValueError):
+            parse_assumptions(bad)
+
+
+def test_a_sentence_disagrees_where_a_verdict_moved_or_its_test_is_gone():
+    verdicts = {"claims/x": "paper", "claims/y": "none"}
+    assert disagreements([("claims/x", "paper"), ("claims/y", "none")], verdicts) == []
+    found = disagreements([("claims/x", "none"), ("claims/z", "paper")], verdicts)
+    assert found == ["claims/x is 'paper', not 'none'", "claims/z is no test of this build"]
+
+
+def test_every_claim_and_sensitivity_test_is_named_once_with_its_code(tmp_path):
+    claims = pd.DataFrame(
+        [
+            {
+                "cue": "first_step",
+                "mode": m,
+                "measure": "rmse",
+                "effect": e,
+                "family": "confirmatory",
+                "direction": code,
+            }
+            for (m, e), code in zip(
+                [("closed_loop", "congruency"), ("closed_loop", "size")],
+                ["paper", "reversed"],
+                strict=True,
+            )
+        ]
+    )
+    sensitivity = pd.DataFrame(
+        [
+            {
+                "cue": "first_step",
+                "mode": "closed_loop",
+                "effect": e,
+                "family": "exploration",
+                "estimate": est,
+                "p_holm": p,
+            }
+            for e, est, p in (("congruency", 0.01, 0.01), ("size", -0.01, 0.5))
+        ]
+        + [
+            {
+                "cue": "all_steps",
+                "mode": "closed_loop",
+                "effect": "size",
+                "family": "exploration",
+                "estimate": -0.02,
+                "p_holm": 0.001,
+            },
+            {
+                "cue": "all_steps",
+                "mode": "closed_loop",
+                "effect": "congruency",
+                "family": "exploration",
+                "estimate": 0.02,
+                "p_holm": np.nan,
+            },
+        ]
+    )
+    table = verdict_rows(claims, sensitivity)
+    codes = dict(zip(table["test"], table["code"], strict=True))
+    assert codes == {
+        "claims/first_step/closed_loop/rmse/congruency": "paper",
+        "claims/first_step/closed_loop/rmse/size": "reversed",
+        "correct_all/first_step/closed_loop/congruency": "paper",
+        "correct_all/first_step/closed_loop/size": "none",
+        "correct_all/all_steps/closed_loop/size": "reversed",
+        "correct_all/all_steps/closed_loop/congruency": "not assessable",
+    }
+    table.to_csv(tmp_path / "verdicts.csv", index=False)
+    assert read_verdicts(tmp_path / "verdicts.csv") == codes
+    with pytest.raises(ValueError, match="named twice"):
+        verdict_rows(pd.concat([claims, claims]), sensitivity)
