@@ -257,6 +257,11 @@ def test_every_chapter_leads_with_an_in_brief_of_at_most_three_sentences(pages):
         assert 1 <= len(reading.sentences(page.in_brief)) <= 3, (name, page.in_brief)
 
 
+def test_the_front_pages_in_brief_is_read_in_a_minute(pages):
+    """Issue 69: the paper's claims, what was found, how sure and why, in at most 150 words."""
+    assert len(pages["index"].in_brief.split()) <= 150, pages["index"].in_brief
+
+
 def test_the_book_is_short_enough_to_read_in_twenty_minutes(pages):
     counts = {name: pages[name].words for name in toc_chapters()}
     assert {n: c for n, c in counts.items() if c > CHAPTER_WORDS} == {}

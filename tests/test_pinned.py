@@ -4,6 +4,8 @@ table holds or the declared tests' rule gives, and a sentence whose verdict move
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -92,3 +94,53 @@ def test_every_claim_and_sensitivity_test_is_named_once_with_its_code(tmp_path):
     assert read_verdicts(tmp_path / "verdicts.csv") == codes
     with pytest.raises(ValueError, match="named twice"):
         verdict_rows(pd.concat([claims, claims]), sensitivity)
+
+
+def assumed_in(page: str) -> list[tuple[str, str]]:
+    """Every test=code pair the page's {finding} directives assume, in order."""
+    found = re.findall(r"^:::+\{finding\}(.*(?:\n(?!:::).*)*)", page, re.M)
+    return [pair for block in found for pair in parse_assumptions(block.split("\n")[0])]
+
+
+def test_the_front_pages_findings_rest_on_tests_of_the_build():
+    """Every test the front page's sentences name is one the rule `verdicts` makes."""
+    from conftest import REPO
+
+    assumed = assumed_in((REPO / "book" / "index.md").read_text())
+    assert len(assumed) >= 8
+    names = {
+        f"claims/{c}/{m}/{x}/{e}"
+        for c in ("first_step", "all_steps")
+        for m in ("teacher_forced", "closed_loop")
+        for x in ("rmse", "rmse_correct")
+        for e in ("congruency", "size")
+    }
+    assert {test for test, _ in assumed} <= names
+
+
+@pytest.mark.reruns
+def test_a_flipped_verdict_fails_the_book_naming_its_sentence(built, tmp_path):
+    """A copy of the test build whose verdicts are the ones the front page assumes but one,
+    built strictly (config findings_check: strict): the book's build fails, and its log names
+    the page, the test that moved and the sentence."""
+    import shutil
+
+    from conftest import run_snakemake
+
+    copy = tmp_path / "copy"
+    shutil.copytree(built, copy, symlinks=True)
+    assumed = assumed_in((copy / "book" / "index.md").read_text())
+    flipped = assumed[0][0]
+    codes = {test: ("none" if test == flipped else code) for test, code in assumed}
+    path = copy / "data" / "book" / "verdicts.csv"
+    table = pd.read_csv(path)
+    table["code"] = [codes.get(t, c) for t, c in zip(table["test"], table["code"], strict=True)]
+    table.to_csv(path, index=False)
+    result = run_snakemake(
+        copy, "-c2", "book/_build/html/index.html", "--config", "findings_check=strict"
+    )
+    assert result.returncode != 0
+    log = (copy / "data" / "logs" / "book.log").read_text()
+    moved = re.findall(r"index\.md:\d+: WARNING: a finding's sentence no longer holds: (.*)", log)
+    assert len(moved) == 1, log[-3000:]
+    assert moved[0].startswith(f"{flipped} is 'none', not '{assumed[0][1]}'. The sentence: “On ")

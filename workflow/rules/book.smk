@@ -239,7 +239,12 @@ rule book:
         ),
         tracked_manifest="results.sha256",
         pages=expand("book/{page}.md", page=glob_wildcards("book/{page,[^/]+}.md").page),
-        book_config=["book/_config.yml", "book/_toc.yml", "book/references.bib"],
+        book_config=[
+            "book/_config.yml",
+            "book/_toc.yml",
+            "book/references.bib",
+            *sorted(glob.glob("book/_static/*")),
+        ],
         code=script_code("book", pages=sorted(glob.glob("book/*.md"))),
     output:
         "book/_build/html/index.html",

@@ -27,6 +27,12 @@ with redirect_log(snakemake.log[0]):
     run = provenance(dict(snakemake.params.config), Path.cwd())
     run["results"] = results_provenance(snakemake.input.manifest, snakemake.input.tracked_manifest)
     write_text(data_dir / "run.json", json.dumps(run, indent=2) + "\n")
+    # a sentence whose test's verdict moved fails the book (strict) or is marked (config
+    # findings_check; auto: strict for the tracked results, whose sentences the book's are)
+    mode = dict(snakemake.params.config)["findings_check"]
+    tracked = run["results"]["digest"] == run["results"]["tracked_digest"]
+    check = {"mode": mode, "strict": mode == "strict" or (mode == "auto" and tracked)}
+    write_text(data_dir / pinned.CHECK.name, json.dumps(check) + "\n")
     # how long each rule took, from the benchmark file of every job of the build (declared:
     # common.smk, job_records), the reproduce page's table
     records = Path("data/benchmarks"), list(snakemake.input.benchmarks)
