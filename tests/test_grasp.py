@@ -73,3 +73,25 @@ def test_a_grasp_in_free_air_lifts_nothing(robot):
     outcome = execute_grasp(robot, "big_cube", plan, INITIAL)
     assert not outcome.hand_contacts
     assert abs(outcome.lift_height) < 0.005
+
+
+def test_recording_chosen_moments_keeps_the_full_traces_rows(robot):
+    """The demonstrator records 10 moments, not every step (issue 71): the same rows to the bit;
+    and a grasp not lifted, because its touch already failed it, says so with a NaN lift."""
+    from icub_affordance.body.grasp import sample_steps
+
+    plan = GraspPlan(
+        object_in_palm=np.array([0.035, -0.01, 0.037]),
+        preshape_deg=np.array([20, 75, 0, 0, 0, 0, 0, 0, 0], dtype=float),
+        closed_deg=np.array([20, 75, 0, 90, 70, 70, 70, 70, 100], dtype=float),
+        yaw_deg=35,
+        tilt_deg=15,
+    )
+    full = execute_grasp(robot, "big_ball", plan, INITIAL)
+    kept = execute_grasp(robot, "big_ball", plan, INITIAL, record_steps=10)
+    idx = sample_steps(len(full.postures_deg), 10)
+    for name in ("postures_deg", "commands_deg", "touch_trace", "qpos_trace"):
+        assert np.array_equal(getattr(kept, name), getattr(full, name)[idx]), name
+    assert kept.lift_height == full.lift_height
+    unlifted = execute_grasp(robot, "big_ball", plan, INITIAL, lift_if=lambda touch: False)
+    assert np.array_equal(unlifted.touch, full.touch) and np.isnan(unlifted.lift_height)

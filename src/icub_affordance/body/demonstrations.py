@@ -123,11 +123,6 @@ class Demo:
     palm_in_object: np.ndarray  # final palm position relative to the object centre (m)
 
 
-def sample_steps(n_total: int, steps: int) -> np.ndarray:
-    """Indices of ``steps`` evenly spaced moments, the first and the last included."""
-    return np.round(np.linspace(0, n_total - 1, steps)).astype(int)
-
-
 def demo_rng(seed: int, obj_index: int, grip_index: int, sequence: int, attempt: int):
     """One independent random stream per demo and attempt, all derived from the config seed."""
     return np.random.default_rng([seed, obj_index, grip_index, sequence, attempt])
@@ -150,9 +145,18 @@ def make_demo(
     for attempt in range(config.max_attempts):
         rng = demo_rng(seed, OBJECT_NAMES.index(obj), GRIPS.index(grip), sequence, attempt)
         plan = varied(template, rng, config)
-        outcome = execute_grasp(robot, obj, plan, initial_deg, lift=config.lift_m)
+        # only the recorded moments are kept, and a grasp whose fingers do not touch is judged
+        # without lifting it: the same demonstrations, to the bit, in less time
+        outcome = execute_grasp(
+            robot,
+            obj,
+            plan,
+            initial_deg,
+            lift=config.lift_m,
+            record_steps=config.steps,
+            lift_if=lambda touch: grip_in_contact(grip, touch, config.touch_threshold),
+        )
         if is_grasp(grip, outcome.touch, outcome.lift_height, config):
-            idx = sample_steps(len(outcome.postures_deg), config.steps)
             return Demo(
                 object=obj,
                 grip=grip,
@@ -161,10 +165,10 @@ def make_demo(
                 plan=plan,
                 # MuJoCo's joint limits are soft: a finger pushed onto its stop by a contact can
                 # pass it by a few degrees. Proprioception reads within Figure 1's ranges.
-                postures_deg=np.clip(outcome.postures_deg[idx], DOF_MIN_DEG, DOF_MAX_DEG),
-                commands_deg=outcome.commands_deg[idx],
-                touch=outcome.touch_trace[idx],
-                qpos=outcome.qpos_trace[idx],
+                postures_deg=np.clip(outcome.postures_deg, DOF_MIN_DEG, DOF_MAX_DEG),
+                commands_deg=outcome.commands_deg,
+                touch=outcome.touch_trace,
+                qpos=outcome.qpos_trace,
                 lift_m=outcome.lift_height,
                 palm_in_object=outcome.palm_in_object,
             )

@@ -108,19 +108,47 @@ def object_contacts(robot: Robot, obj: str) -> set[str]:
 
 
 class _Recorder:
-    """Keeps what the demonstration records at every physics step."""
+    """Keeps what the demonstration records at chosen physics steps (all, or those of ``keep``).
 
-    def __init__(self) -> None:
+    Called after every step; a step that is not kept costs one comparison, so a demonstration
+    that keeps 10 of its 1,301 moments reads no state at the others.
+    """
+
+    def __init__(self, keep: np.ndarray | None = None) -> None:
+        self.keep = None if keep is None else [int(k) for k in keep]
+        self.calls = 0
+        self._next = 0  # the position in ``keep`` of the next moment to record
         self.postures: list[np.ndarray] = []
         self.commands: list[np.ndarray] = []
         self.touch: list[np.ndarray] = []
         self.qpos: list[np.ndarray] = []
 
     def __call__(self, robot: Robot) -> None:
-        self.postures.append(robot.posture_deg())
-        self.commands.append(np.degrees(robot.data.ctrl))
-        self.touch.append(robot.touch())
-        self.qpos.append(robot.data.qpos.copy())
+        moment = self.calls
+        self.calls += 1
+        times = 1
+        if self.keep is not None:  # a moment kept twice (more steps than moments) is two rows
+            times = 0
+            while self._next < len(self.keep) and self.keep[self._next] == moment:
+                self._next += 1
+                times += 1
+            if not times:
+                return
+        for _ in range(times):
+            self.postures.append(robot.posture_deg())
+            self.commands.append(np.degrees(robot.data.ctrl))
+            self.touch.append(robot.touch())
+            self.qpos.append(robot.data.qpos.copy())
+
+
+def sample_steps(n_total: int, steps: int) -> np.ndarray:
+    """Indices of ``steps`` evenly spaced moments, the first and the last included."""
+    return np.round(np.linspace(0, n_total - 1, steps)).astype(int)
+
+
+def move_steps(robot: Robot, seconds: float) -> int:
+    """How many physics steps ``move`` takes for ``seconds``."""
+    return int(round(seconds / robot.model.opt.timestep))
 
 
 #: How long the demonstrator takes to reach above the object, descend and close (s); the
@@ -138,7 +166,7 @@ def move(robot: Robot, target_deg: np.ndarray, seconds: float, record=None) -> N
     """
     start = robot.data.ctrl.copy()
     goal = np.radians(target_deg)
-    steps = int(round(seconds / robot.model.opt.timestep))
+    steps = move_steps(robot, seconds)
     ramp = max(1, int(0.8 * steps))
     fractions = np.minimum(1.0, np.arange(1, steps + 1) / ramp)
     targets = start + (goal - start) * fractions[:, None]
@@ -165,8 +193,17 @@ def execute_grasp(
     *,
     approach_height: float = 0.06,
     lift: float = 0.05,
+    record_steps: int | None = None,
+    lift_if=None,
 ) -> GraspOutcome:
-    """Run one grasp in physics from ``initial_deg``: approach, descend, close, then lift."""
+    """Run one grasp in physics from ``initial_deg``: approach, descend, close, then lift.
+
+    The traces hold every physics step from the start to the closed grasp, or, with
+    ``record_steps``, only that many evenly spaced moments of them (``sample_steps``: the same
+    values as those rows of the full traces, read at the same moments). ``lift_if``, given the
+    touch at the closed grasp, can say the lift is not needed (the grasp is judged without it):
+    then the arm does not lift and ``lift_height`` is NaN.
+    """
     robot.reset()
     robot.place_object(obj)
     robot.set_posture_deg(initial_deg)
@@ -177,7 +214,9 @@ def execute_grasp(
     above_ik = solve_palm_pose(
         robot, palm_goal + [0.0, 0.0, approach_height], rotation, grasp_ik.arm_deg
     )
-    record = _Recorder()
+    n_total = 1 + sum(move_steps(robot, s) for s in (APPROACH_S, DESCEND_S, CLOSE_S))
+    keep = None if record_steps is None else sample_steps(n_total, record_steps)
+    record = _Recorder(keep)
     record(robot)
     target = np.asarray(initial_deg, dtype=float).copy()
     target[:N_ARM_DOF], target[N_ARM_DOF:] = above_ik.arm_deg, plan.preshape_deg
@@ -190,8 +229,12 @@ def execute_grasp(
     touch, contacts = robot.touch(), object_contacts(robot, obj)
     height = robot.object_position(obj)[2]
     palm_in_object = robot.palm_pose()[0] - robot.object_position(obj)
+    if record.calls != n_total:
+        raise RuntimeError(f"recorded {record.calls} moments of a grasp, expected {n_total}")
 
-    lift_arm(robot, lift)
+    lifted = lift_if is None or lift_if(touch)
+    if lifted:
+        lift_arm(robot, lift)
     return GraspOutcome(
         postures_deg=np.array(record.postures),
         commands_deg=np.array(record.commands),
@@ -199,7 +242,7 @@ def execute_grasp(
         qpos_trace=np.array(record.qpos),
         touch=touch,
         hand_contacts=contacts,
-        lift_height=float(robot.object_position(obj)[2] - height),
+        lift_height=float(robot.object_position(obj)[2] - height) if lifted else float("nan"),
         palm_error=palm_error,
         palm_in_object=palm_in_object,
     )

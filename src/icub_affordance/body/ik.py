@@ -52,10 +52,13 @@ def solve_palm_pose(
     lo = model.jnt_range[robot.lead_joints[:N_ARM_DOF], 0]
     hi = model.jnt_range[robot.lead_joints[:N_ARM_DOF], 1]
     q = np.clip(np.radians(np.asarray(start_arm_deg, dtype=float)), lo, hi)
-    jacp = np.zeros((3, model.nv))
-    jacr = np.zeros((3, model.nv))
+    # the position and rotation Jacobians, stacked: mj_jacSite writes into the two halves
+    jac = np.zeros((6, model.nv))
+    jacp, jacr = jac[:3], jac[3:]
     site = robot.palm_site
     weights = np.array([1.0] * 3 + [rotation_weight] * 3)
+    row_weights = weights[:, None]
+    damped = damping**2 * np.eye(6)
     for _ in range(iterations):
         data.qpos[adr] = q
         mujoco.mj_kinematics(model, data)
@@ -68,9 +71,9 @@ def solve_palm_pose(
         ):
             break
         mujoco.mj_jacSite(model, data, jacp, jacr, site)
-        J = np.vstack([jacp[:, dof], jacr[:, dof]]) * weights[:, None]
+        J = jac[:, dof] * row_weights
         e = np.concatenate([err_p, err_r]) * weights
-        dq = J.T @ np.linalg.solve(J @ J.T + damping**2 * np.eye(6), e)
+        dq = J.T @ np.linalg.solve(J @ J.T + damped, e)
         q = np.clip(q + np.clip(dq, -0.2, 0.2), lo, hi)
     data.qpos[adr] = q
     mujoco.mj_kinematics(model, data)
