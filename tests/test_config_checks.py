@@ -250,6 +250,28 @@ def test_a_rule_between_keys_is_refused_naming_key_value_allowed_and_fix(change,
             ["confirmation.min_replications", "11", "Allowed: at most 10", "Fix"],
         ),
         (
+            lambda c: c["size_dose"]["crossed"].update(replications=4),
+            [
+                "size_dose.crossed.replications",
+                "4",
+                "confirmation.min_replications (5)",
+                "Allowed: at least 5",
+                "Fix",
+            ],
+        ),
+        (
+            lambda c: c["size_dose"]["crossed"].update(robustness_replications=3),
+            ["size_dose.crossed.robustness_replications", "3", "Allowed: at least 5", "Fix"],
+        ),
+        (
+            lambda c: c["words"].update(min_replications=11),
+            ["words.min_replications", "11", "Allowed: at most 10", "Fix"],
+        ),
+        (
+            lambda c: c["confirmation"].update(pilot="config/no_such_pilot.csv"),
+            ["confirmation.pilot", "config/no_such_pilot.csv", "not a file", "Fix"],
+        ),
+        (
             lambda c: c["readings"].update(goal_response=["fixed"]),
             ["readings.equivalence_margin", "Goal response", "Fix"],
         ),

@@ -85,7 +85,8 @@ def test_summary_tests_each_reading_and_adjusts_over_the_family():
                     {"all_steps+fixed": [(0.5, 0.01)]}, measure="rmse_per_grip_distance_null"
                 ),
             ]
-        )
+        ),
+        least=2,
     )
     assert list(table.columns) == SUMMARY_COLUMNS
     many, one, null = table.iloc[0], table.iloc[1], table.iloc[2]
@@ -212,7 +213,7 @@ def test_differences_are_paired_by_network():
     assert cong["estimate"] == pytest.approx(0.02, abs=0.003)
     # paired: the networks' own effects (sd 0.01) cancel, so the test is sharp
     assert cong["p"] < 1e-4 and cong["df"] == 6
-    out = differences(reps, {"rmse": 0.01})
+    out = differences(reps, {"rmse": 0.01}, least=2)
     assert list(out.columns) == DIFFERENCE_COLUMNS
     assert out["p_holm"].to_numpy() == pytest.approx(holm(out["p"]))
     goal = out[out["comparison"] == "goal_response"].set_index(["at", "effect"])
@@ -232,7 +233,7 @@ def test_differences_over_replications_test_the_replications_differences():
     for i, row in enumerate(table):
         shift = diffs[row["seed"]] if row["cue"] == "first_step" else 0.0
         trials[row["run"]] = run_trials(0.03 + shift, 0.0, seed=i)
-    out = differences(difference_replications(table, trials, ["rmse"]), {"rmse": 0.01})
+    out = differences(difference_replications(table, trials, ["rmse"]), {"rmse": 0.01}, least=2)
     row = out[(out["comparison"] == "cue_timing") & (out["at"] == "fixed")]
     row = row[row["effect"] == "congruency"].iloc[0]
     assert row["replications"] == 3 and row["df"] == 2
@@ -243,7 +244,7 @@ def test_a_missing_margin_is_a_clear_error():
     table = readings_table()
     trials = {row["run"]: run_trials(0.03, 0.0, seed=i) for i, row in enumerate(table)}
     with pytest.raises(ValueError, match="equivalence_margin has no margin for 'rmse'"):
-        differences(difference_replications(table, trials, ["rmse"]), {})
+        differences(difference_replications(table, trials, ["rmse"]), {}, least=2)
 
 
 # -- the correct-trial RMSE: a measure a network can lack in a cell ---------------------------
@@ -353,7 +354,9 @@ def test_identical_cells_are_not_tested():
     table = readings_table()
     trials = {row["run"]: run_trials(0.03, 0.0, seed=i) for i, row in enumerate(table)}
     margins = {"rmse": 0.01, "wrong_grip": 0.10}
-    out = differences(difference_replications(table, trials, ["rmse", "wrong_grip"]), margins)
+    out = differences(
+        difference_replications(table, trials, ["rmse", "wrong_grip"]), margins, least=2
+    )
     assert list(out.columns) == DIFFERENCE_COLUMNS
     same = out[out["measure"] == "wrong_grip"]
     assert same["identical"].all() and not out[out["measure"] == "rmse"]["identical"].any()
@@ -422,9 +425,9 @@ def _family_tables():
     }  # fmt: skip
     measures = ["rmse", "rmse_correct", "wrong_grip", "rmse_per_grip_distance"]
     analyses = [analyse_measures(trials[row["run"]], measures) for row in table]
-    summ = summary(replication_rows(table, analyses, measures))
+    summ = summary(replication_rows(table, analyses, measures), least=2)
     margins = load_config()["readings"]["equivalence_margin"]
-    diffs = differences(difference_replications(table, trials, measures), margins)
+    diffs = differences(difference_replications(table, trials, measures), margins, least=2)
     return summ, diffs
 
 
@@ -504,9 +507,9 @@ def _built_tables(cong_shift, grows_size, margin, seed):
     }
     measures = ["rmse", "rmse_per_grip_distance"]
     analyses = [analyse_measures(trials[row["run"]], measures) for row in table]
-    summ = summary(replication_rows(table, analyses, measures))
+    summ = summary(replication_rows(table, analyses, measures), least=2)
     margins = {"rmse": margin, "rmse_per_grip_distance": margin}
-    diffs = differences(difference_replications(table, trials, measures), margins)
+    diffs = differences(difference_replications(table, trials, measures), margins, least=2)
     return summ, diffs
 
 

@@ -169,7 +169,7 @@ def test_the_summary_tests_each_dose_and_arrangement_over_replications_and_carri
             for m in ("object", "goal")
         ]
     )  # fmt: skip
-    out = summary(table, checks)
+    out = summary(table, checks, least=2)
     assert list(out.columns) == SUMMARY_COLUMNS
     conditions = [(d, a) for d in DOSES for a in (NATURAL, SWAPPED)] + [("removed", NATURAL)]
     assert list(zip(out["dose"], out["arrangement"], strict=True)) == conditions
@@ -212,7 +212,7 @@ def test_the_delivered_dose_is_the_goal_maps_log_ratio():
 def test_the_summary_carries_the_delivered_dose():
     table = replications_table(0.05)
     checks = manipulation_table(table)
-    out = summary(table, checks).set_index(["dose", "arrangement"])
+    out = summary(table, checks, least=2).set_index(["dose", "arrangement"])
     goal = checks[checks["map"] == "goal"]
     for dose, arrangement in out.index:
         rows = goal[(goal["dose"] == dose) & (goal["arrangement"] == arrangement)]
@@ -275,7 +275,7 @@ def test_the_summary_names_its_holm_families():
     """The null control and the raw measure tested by its excess are shown, in no family; the
     excess is a hypothesis beside the RMSE; both arrangements are one family."""
     table = study_with_a_null_control()
-    out = summary(table, study_checks(table))
+    out = summary(table, study_checks(table), least=2)
     assert holm_within_families(out) == {FAMILY_SUMMARY, NULL_CONTROL, BY_EXCESS}
     families = out.groupby("measure")["family"].unique().map(list).to_dict()
     assert families == {
@@ -502,7 +502,7 @@ def test_each_replication_is_separated_from_its_own_two_runs():
 
 def test_the_declared_tests_are_one_sample_ts_over_the_replications_holm_over_themselves():
     table, truth = crossed_table()
-    out = declared_tests(separated(table), ["size", "grip_distance", "dose"], [0.0, 0.6])
+    out = declared_tests(separated(table), ["size", "grip_distance", "dose"], [0.0, 0.6], least=2)
     assert list(out.columns) == DECLARED_COLUMNS
     expected_rows = [
         (test, cue, dose)
@@ -661,7 +661,7 @@ def motor_trials(doses, effect=0.04, seed=1) -> pd.DataFrame:
 
 def test_an_error_that_follows_the_path_length_is_found():
     trials = motor_trials(["removed"])
-    out = motor_tests(trials).set_index("geometry")
+    out = motor_tests(trials, least=2).set_index("geometry")
     row = out.loc["demo_path_length"]
     # the unit is the replication (its networks share its demonstrations)
     assert row["replications"] == 4 and row["networks"] == 24 and row["df"] == 3
@@ -683,7 +683,7 @@ def test_an_error_that_follows_the_path_length_is_found():
 
 @pytest.mark.heavy
 def test_the_motor_tests_planned_and_added_are_two_holm_families():
-    out = motor_tests(motor_trials(["removed", 0.0, 0.6], effect=0.002))
+    out = motor_tests(motor_trials(["removed", 0.0, 0.6], effect=0.002), least=2)
     planned = out["dose"].astype(str) == "removed"
     assert set(out.loc[planned, "family"]) == {FAMILY_MOTOR_PLANNED}
     assert set(out.loc[~planned, "family"]) == {FAMILY_MOTOR_ADDED}
@@ -791,9 +791,11 @@ def same_tests(tables: dict[str, pd.DataFrame], rtol: float = 1e-9) -> list[tupl
 
 def test_a_test_under_two_names_is_flagged():
     table, _ = crossed_table()
-    declared = declared_tests(separated(table), ["size", "grip_distance", "dose"], [0.0, 0.6])
+    declared = declared_tests(
+        separated(table), ["size", "grip_distance", "dose"], [0.0, 0.6], least=2
+    )
     replications = replications_table(0.05, noise=0.01)
-    summ = summary(replications, manipulation_table(replications))
+    summ = summary(replications, manipulation_table(replications), least=2)
     assert same_tests({"declared": declared, "summary": summ}) == []
     # one declared test again in the summary, under another dose and arrangement
     copied = declared.iloc[[3]].rename(columns={"estimate": "diff"})

@@ -133,7 +133,10 @@ def test_every_outcome_a_table_or_a_page_reads_has_its_words():
     assert set(words.DIRECTION_CODES) == set(words.CLAIM_OUTCOME_WORDS) == tested
     assert set(words.SIGNATURE_WORDS) == set(Outcome) - {Outcome.CONSTANT}
     assert set(words.READING_WORDS) == {Outcome.PAPER, Outcome.AGAINST, Outcome.NONE,
-                                        Outcome.CONSTANT}  # fmt: skip
+                                        Outcome.CONSTANT, Outcome.NOT_ASSESSABLE}  # fmt: skip
+    from icub_affordance.analysis.reading_tests import NOT_ASSESSABLE
+
+    assert words.DIFFERENCE_WORDS[NOT_ASSESSABLE] == words.NOT_ASSESSABLE
     assert words.direction_codes([1, -1, 0, 2]) == ["paper", "reversed", "none", "not assessable"]
     assert words.signature_words(["", Outcome.AGAINST]) == ["", "opposite"]
     # the words read the science package's one significance level

@@ -306,7 +306,7 @@ def readings_effects(summary, replications, path) -> None:
     readings = list(dict.fromkeys(summary["reading"]))
     effects = ("congruency", "size")
     colour = {Outcome.PAPER: "C2", Outcome.AGAINST: "C3", Outcome.NONE: "0.5",
-              Outcome.CONSTANT: "0.5"}  # fmt: skip
+              Outcome.CONSTANT: "0.5", Outcome.NOT_ASSESSABLE: "0.5"}  # fmt: skip
     fig, axes = plt.subplots(
         len(measures), 2, figsize=(10, 1.0 + 0.55 * len(readings) * len(measures)), squeeze=False
     )

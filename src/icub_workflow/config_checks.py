@@ -510,13 +510,7 @@ def _backed_problems(config: Mapping[str, Any], key) -> Iterator[str]:
             f"(network.categorisation_cue: {own}), whose replications the signatures and the "
             f"learning curves test. Fix: add {own} to confirmation.cues."
         )
-    least, seeds = declared["min_replications"], declared["seeds"]
-    if least > len(seeds):
-        yield (
-            f"{key('confirmation.min_replications')}: {least} is more than the {len(seeds)} "
-            "replications of confirmation.seeds, so every declared replicated test would be "
-            f"not assessable. Allowed: at most {len(seeds)}. Fix: lower it or add seeds."
-        )
+    yield from _minimum_problems(config, key)
     if len(goals) < 2 and readings["equivalence_margin"]:
         yield (
             f"{key('readings.equivalence_margin')}: its margins test whether the Goal response "
@@ -531,6 +525,53 @@ def _backed_problems(config: Mapping[str, Any], key) -> Iterator[str]:
             f"{robot['contact_time']['min_networks']} is more than the confirmation's "
             f"{fewest} networks, so the declared contact-time test could never be assessed. "
             f"Allowed: at most {fewest}. Fix: lower it or confirm on more networks."
+        )
+
+
+def _minimum_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """Every study that tests over replications has at least its minimum of them (the one rule,
+    icub_affordance.analysis.replicated): else its every test would be not assessable. The
+    confirmation, the readings and the signatures run at confirmation.seeds and the size study
+    at size_dose.crossed.replications, all under confirmation.min_replications; the words study
+    at words.seeds under words.min_replications. And the confirmation's pilot, a tracked file,
+    must exist (its power is computed from it)."""
+    declared, crossed, words = (
+        config["confirmation"],
+        config["size_dose"]["crossed"],
+        config["words"],
+    )
+    least, seeds = declared["min_replications"], declared["seeds"]
+    if least > len(seeds):
+        yield (
+            f"{key('confirmation.min_replications')}: {least} is more than the {len(seeds)} "
+            "replications of confirmation.seeds (the confirmation's, the readings' and the "
+            "signatures'), so every test over them would be not assessable. Allowed: at most "
+            f"{len(seeds)}. Fix: lower it or add seeds."
+        )
+    for name in ("replications", "robustness_replications"):
+        if crossed[name] < least:
+            yield (
+                f"{key(f'size_dose.crossed.{name}')}: {crossed[name]} is fewer than "
+                f"confirmation.min_replications ({least}), the minimum of every test over "
+                "replications, so every test of the size study would be not assessable. Allowed: "
+                f"at least {least}. Fix: raise it (and add size_dose.crossed.seeds) or lower "
+                "confirmation.min_replications."
+            )
+    if words["min_replications"] > len(words["seeds"]):
+        yield (
+            f"{key('words.min_replications')}: {words['min_replications']} is more than the "
+            f"{len(words['seeds'])} replications of words.seeds, so every declared test of the "
+            f"words study would be not assessable. Allowed: at most {len(words['seeds'])}. Fix: "
+            "lower it or add seeds."
+        )
+    pilot = declared["pilot"]
+    if not Path(pilot).is_file():
+        yield (
+            f"{key('confirmation.pilot')}: {pilot!r} is not a file (paths are read from the "
+            f"workflow's directory, {Path.cwd()}), and the confirmation's power is computed from "
+            "it. Allowed: the tracked pilot table. Fix: point it back at "
+            "config/confirmation_pilot.csv (restore it with `git checkout -- config/`), or make "
+            "it with tools/confirmation_pilot.py."
         )
 
 

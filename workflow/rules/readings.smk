@@ -86,6 +86,8 @@ rule readings:
         trials=[PLAN.path(row["run"], "eval/measures.csv") for row in PLAN.readings],
         measures=config["readings"]["measures"],
         margins=settings(config["readings"]["equivalence_margin"]),
+        # the one minimum of every test over replications (analysis/replicated.py)
+        least=config["confirmation"]["min_replications"],
     log:
         "data/logs/readings/summary.log",
     benchmark:

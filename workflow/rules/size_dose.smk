@@ -61,6 +61,8 @@ rule size_dose:
         measures=config["readings"]["measures"],
         crossed=settings(config["size_dose"]["crossed"]),
         doses=settings(config["size_dose"]["doses"]),
+        # the one minimum of every test over replications (analysis/replicated.py)
+        least=config["confirmation"]["min_replications"],
     resources:
         mem_mb=1000,
         runtime=10,

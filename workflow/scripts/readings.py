@@ -19,6 +19,7 @@ from icub_affordance.files import redirect_log, write_tables
 with redirect_log(snakemake.log[0]):
     table = list(snakemake.params.table)
     measures = list(snakemake.params.measures)
+    least = int(snakemake.params.least)
     analyses = [json.loads(Path(path).read_text()) for path in snakemake.params.analyses]
     replications = replication_rows(table, analyses, measures)
     trials = {
@@ -26,9 +27,9 @@ with redirect_log(snakemake.log[0]):
         for row, path in zip(table, snakemake.params.trials, strict=True)
     }
     diffs = differences(
-        difference_replications(table, trials, measures), dict(snakemake.params.margins)
+        difference_replications(table, trials, measures), dict(snakemake.params.margins), least
     )
-    table_summary = summary(replications)
+    table_summary = summary(replications, least)
     write_tables(
         [
             (snakemake.output.replications, replications),

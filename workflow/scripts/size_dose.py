@@ -29,6 +29,7 @@ with redirect_log(snakemake.log[0]):
     table = [dict(row) for row in snakemake.params.table]
     crossed = snakemake.params.crossed
     measures = list(snakemake.params.measures)
+    least = int(snakemake.params.least)
     analyses = [json.loads(Path(path).read_text()) for path in snakemake.params.analyses]
     replications = replication_rows(table, analyses, measures)
     checks = manipulation(table, [load_npz(path) for path in snakemake.params.soms])
@@ -52,12 +53,12 @@ with redirect_log(snakemake.log[0]):
             )
         )
     geometry_table = pd.concat(geometries, ignore_index=True)
-    motor = motor_tests(pd.concat(trials, ignore_index=True))
+    motor = motor_tests(pd.concat(trials, ignore_index=True), least)
     runs = crossed_runs(replications, checks, geometry_table, crossed["measure"])
     parts = separated(runs)
-    declared = declared_tests(parts, crossed["tests"], snakemake.params.doses)
+    declared = declared_tests(parts, crossed["tests"], snakemake.params.doses, least)
     power = power_table(declared, crossed["effect_of_interest"], crossed["alpha"])
-    table_summary = summary(replications, checks)
+    table_summary = summary(replications, checks, least)
     write_tables(
         [
             (snakemake.output.replications, replications),

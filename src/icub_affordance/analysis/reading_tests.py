@@ -10,9 +10,13 @@ An effect's difference is the contrasts' estimate with the factor coded -0.5 / +
 factors; for every measure higher is further from the required grip, so a positive difference is
 the paper's direction.
 
-Inference (book/notes.md, "Testing and statistics"). With one replication, an effect's test is the
-replication's own t-test over its networks (df = networks - 2, ``trial_effects.network_contrasts``);
-with several, a t-test of the replications' estimates (df = replications - 1). The family for Holm's
+Inference (book/notes.md, "Testing and statistics"). An effect's test is a t-test of the
+replications' estimates (df = replications - 1), made on at least the declared minimum of them
+(config ``confirmation.min_replications``, ``replicated.over_replications``: the one rule of every
+test over replications); with fewer it has no p and reads "not assessable". A table of one
+replication (the tests' fixtures; a build never has one: its readings run at confirmation.seeds,
+refused below the minimum) shows that replication's own test over its networks (df = networks -
+2, ``trial_effects.network_contrasts``). The family for Holm's
 adjustment is every row of a table that is a hypothesis: every reading x measure x effect of the
 summary, every comparison x measure x effect of the differences; a null control's rows
 (``scores.NULL_CONTROLS``) are shown beside their measure and are not hypotheses, so they are left
@@ -33,6 +37,7 @@ import functools
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis import replicated
 from icub_affordance.analysis.statistics import equivalence, holm, t_term
 from icub_affordance.analysis.trial_effects import (
     categorisation_trials,
@@ -70,6 +75,9 @@ FAMILY_EQUIVALENCE = "exploration: readings' equivalence"
 NULL_CONTROL = "null control (not a hypothesis)"
 #: A difference with no spread at all (``identical``): not tested, in no family.
 NOT_TESTED = "not tested (identical)"
+#: ``difference_verdict``'s code for a difference on fewer replications than the minimum
+#: (``replicated``); its word is in ``book.words.DIFFERENCE_WORDS``.
+NOT_ASSESSABLE = "not_assessable"
 #: A measure tested by its excess over its null control (``scores.EXCESS``): shown, no test.
 BY_EXCESS = "shown (tested by its excess over the null control)"
 
@@ -199,11 +207,13 @@ def replication_rows(
     return pd.DataFrame(rows)
 
 
-def over_replications(terms: pd.DataFrame) -> dict[str, float]:
+def over_replications(terms: pd.DataFrame, least: int) -> dict[str, float]:
     """An effect over its replications (rows with each one's ``estimate``, ``ci_low``,
-    ``ci_high``, ``df``, ``p``): with one, that replication's own test; with several, the mean of
-    the defined estimates and a t-test of them (df = defined - 1); a replication whose estimate
-    is undefined is left out and counted (``not_estimable``), as the confirmation does."""
+    ``ci_high``, ``df``, ``p``): the mean of the defined estimates and a t-test of them (df =
+    defined - 1), made only on at least ``least`` of them (``replicated.over_replications``, the
+    one rule; below it no p, df 0: not assessable); a replication whose estimate is undefined is
+    left out and counted (``not_estimable``), as the confirmation does. One replication alone
+    (no test over replications: a fixture, never a build) shows its own test over its networks."""
     if len(terms) == 1:
         row = terms.iloc[0]
         term = {k: float(row[k]) for k in ("estimate", "ci_low", "ci_high", "df", "p")}
@@ -212,12 +222,8 @@ def over_replications(terms: pd.DataFrame) -> dict[str, float]:
     else:
         estimates = terms["estimate"].to_numpy(dtype=float)
         defined = estimates[np.isfinite(estimates)]
-        n = len(defined)
-        missing = len(estimates) - n
-        if n >= 2:
-            term = t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
-        else:
-            term = t_term(defined.mean() if n else np.nan, np.nan, 0.0)
+        missing = len(estimates) - len(defined)
+        term = replicated.over_replications(defined, least)
     return {
         "diff": term["estimate"],
         "ci_low": term["ci_low"],
@@ -249,10 +255,12 @@ def family_names(table: pd.DataFrame, family: str) -> list[str]:
     ]
 
 
-def summary(replications: pd.DataFrame) -> pd.DataFrame:
+def summary(replications: pd.DataFrame, least: int) -> pd.DataFrame:
     """One row per reading, measure and effect (``SUMMARY_COLUMNS``). ``diff``, its interval,
-    ``df`` and ``p`` from ``over_replications``; ``p_holm`` Holm's over the table's hypotheses
-    (``holm_hypotheses``), its ``family`` named (``FAMILY_SUMMARY``, or ``NULL_CONTROL``).
+    ``df`` and ``p`` from ``over_replications`` (on at least ``least`` estimates, config
+    ``confirmation.min_replications``; below it no p, df 0); ``p_holm`` Holm's over the table's
+    hypotheses (``holm_hypotheses``), its ``family`` named (``FAMILY_SUMMARY``, or
+    ``NULL_CONTROL``).
     ``n_paper`` and ``n_reversed`` count the replications with (raw) p < ALPHA in and against
     the paper's direction."""
     rows = []
@@ -260,7 +268,7 @@ def summary(replications: pd.DataFrame) -> pd.DataFrame:
     for key, group in replications.groupby(keys, sort=False):
         estimates = group["estimate"].to_numpy()
         significant = group["p"].to_numpy() < ALPHA
-        test = over_replications(group)
+        test = over_replications(group, least)
         rows.append(
             dict(zip(keys, key, strict=True))
             | {k: test[k] for k in ("diff", "ci_low", "ci_high", "df", "p", "not_estimable")}
@@ -385,17 +393,17 @@ def equivalence_row(row: dict, test: dict[str, float], margins: dict[str, float]
     return {"margin": margin, "p_equivalence": np.nan if row["identical"] else tost["p"]}
 
 
-def differences(replications: pd.DataFrame, margins: dict[str, float]) -> pd.DataFrame:
-    """One row per comparison, level, measure and effect (``DIFFERENCE_COLUMNS``): the
-    difference over replications (``over_replications``), Holm's p over the table's hypotheses
-    (``FAMILY_DIFFERENCES``), and for the Goal response the equivalence test (TOST) within the
-    measure's declared margin (``equivalence_row``), its p Holm-adjusted over the equivalence
-    tests (``FAMILY_EQUIVALENCE``; a null control has none). An ``identical`` row is not tested:
-    its p and TOST p are NaN, so it is in no family (``NOT_TESTED``)."""
+def differences(replications: pd.DataFrame, margins: dict[str, float], least: int) -> pd.DataFrame:
+    """One row per comparison, level, measure and effect (``DIFFERENCE_COLUMNS``): the difference
+    over replications (``over_replications``, on at least ``least``), Holm's p over the table's
+    hypotheses (``FAMILY_DIFFERENCES``), and for the Goal response the equivalence test (TOST)
+    within the measure's declared margin (``equivalence_row``), its p Holm-adjusted over the
+    equivalence tests (``FAMILY_EQUIVALENCE``; a null control has none). An ``identical`` row is not
+    tested: its p and TOST p are NaN, so it is in no family (``NOT_TESTED``)."""
     keys = ["comparison", "at", "a", "b", "measure", "effect"]
     rows = []
     for key, group in replications.groupby(keys, sort=False):
-        test = over_replications(group)
+        test = over_replications(group, least)
         row = dict(zip(keys, key, strict=True)) | {"replications": len(group)} | test
         row["identical"] = identical(group, test)
         if row["identical"] or test["se"] == 0:
@@ -422,9 +430,13 @@ def verdict_p(row) -> float:
 def direction(row) -> Outcome:
     """A summary row's effect: ``PAPER`` or ``AGAINST`` when its (Holm-adjusted, ``verdict_p``) p
     is below ALPHA, on the side of its difference; ``NONE`` otherwise; ``CONSTANT`` when the
-    measure did not vary at all (a difference of exactly 0 with a zero-width interval)."""
+    measure did not vary at all (a difference of exactly 0 with a zero-width interval);
+    ``NOT_ASSESSABLE`` when fewer replications than the minimum had an estimate (df 0:
+    ``replicated.was_assessable``)."""
     if row["diff"] == row["ci_low"] == row["ci_high"] == 0:
         return Outcome.CONSTANT
+    if not replicated.was_assessable(float(row["df"])):
+        return Outcome.NOT_ASSESSABLE
     p = verdict_p(row)
     if not (p < ALPHA):
         return Outcome.NONE
@@ -435,11 +447,15 @@ def difference_verdict(row) -> str:
     """A differences row's verdict: "identical" when there was nothing to test (``identical``:
     no spread at all), "a > b" or "a < b" (its effect larger or smaller in a than in b) when its
     p (Holm's; a null control's raw p) is below ALPHA, "equivalent" when the TOST within the
-    margin is (Holm's), else "none" (neither a difference nor its absence)."""
+    margin is (Holm's), ``NOT_ASSESSABLE`` when fewer replications than the minimum had an
+    estimate (df 0: ``replicated.was_assessable``), else "none" (neither a difference nor its
+    absence)."""
     if str(row.get("identical", False)) == "True":  # a bool, or the CSV's text
         return "identical"
     if not is_hypothesis(row["measure"]):
         return "not a hypothesis"
+    if not replicated.was_assessable(float(row["df"])):
+        return NOT_ASSESSABLE
     if verdict_p(row) < ALPHA:
         return "a > b" if row["diff"] > 0 else "a < b"
     if row["p_equivalence_holm"] < ALPHA:

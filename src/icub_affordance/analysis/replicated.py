@@ -1,6 +1,9 @@
-"""One rule for every test over replications (the paper's claims, the human signatures): a test
-is made only on at least the declared minimum of replications with an estimate (config
-``confirmation.min_replications``); with fewer it has no p and its verdict is "not assessable".
+"""One rule for every test over replications (the paper's claims, the human signatures, the
+words, the readings and their differences, the size study): a test is made only on at least the
+declared minimum of replications with an estimate (config ``confirmation.min_replications``; the
+words study's own ``words.min_replications``); with fewer it has no p, df 0, and its verdict code
+is "not assessable" (``Outcome.NOT_ASSESSABLE``). Every module of this package that tests over
+replications calls ``over_replications`` (tests/test_replicated.py checks it).
 
 Why one rule: a replication whose estimate is undefined is left out and counted, and with only a
 few left a t-test over them (df 1 on two replications) says next to nothing, whichever family it
@@ -27,3 +30,9 @@ def over_replications(defined: np.ndarray, least: int) -> dict[str, float]:
     if assessable(n, least):
         return t_term(defined.mean(), defined.std(ddof=1) / np.sqrt(n), n - 1)
     return t_term(defined.mean() if n else np.nan, np.nan, 0.0)
+
+
+def was_assessable(df: float) -> bool:
+    """Whether a test ``over_replications`` made had its minimum, from its df: n - 1 >= 1 where
+    it had, 0 where it had not (NaN, a term with no test at all, reads not assessable too)."""
+    return bool(df > 0)

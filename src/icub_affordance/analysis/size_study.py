@@ -26,6 +26,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis import replicated
 from icub_affordance.analysis.paper_claims import power, sd_interval
 from icub_affordance.analysis.reading_tests import (
     family_names,
@@ -33,7 +34,7 @@ from icub_affordance.analysis.reading_tests import (
     holm_hypotheses,
     over_replications,
 )
-from icub_affordance.analysis.statistics import holm, t_term
+from icub_affordance.analysis.statistics import holm
 from icub_affordance.learning.size_manipulation import CONTROLS, SHAPES
 from icub_affordance.trials.scores import analysed
 
@@ -102,14 +103,15 @@ def delivered_doses(checks: pd.DataFrame) -> pd.Series:
     return pd.Series(log_ratio, index=goal["run"].to_numpy()).groupby(level=0, sort=False).mean()
 
 
-def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
-    """One row per cue timing, measure, dose and grip arrangement (SUMMARY_COLUMNS): the size
-    effect over the replications (``reading_tests.over_replications``: their mean, a t-interval
-    over them), Holm's p over the table's hypotheses (``FAMILY_SUMMARY``, exploration; a null
-    control's rows are not), the effect relative to the measure's mean, the manipulation
+def summary(replications: pd.DataFrame, checks: pd.DataFrame, least: int) -> pd.DataFrame:
+    """One row per cue timing, measure, dose and grip arrangement (SUMMARY_COLUMNS): the size effect
+    over the replications (``reading_tests.over_replications``: their mean, a t-interval over them,
+    on at least ``least`` defined estimates, config ``confirmation.min_replications``; below it no
+    p, df 0: not assessable), Holm's p over the table's hypotheses (``FAMILY_SUMMARY``, exploration;
+    a null control's rows are not), the effect relative to the measure's mean, the manipulation
     check's mean ratios and the delivered dose (``delivered_doses``, its mean over the
-    replications). Replications that all give the same estimate (a discrete measure) have no
-    spread to test against: their p is undefined (NaN), not 0."""
+    replications). Replications that all give the same estimate (a discrete measure) have no spread
+    to test against: their p is undefined (NaN), not 0."""
     keys = ["dose", "arrangement", "cue"]
     ratios = checks.groupby([*keys, "map"], sort=False)["ratio"].mean()
     delivered = delivered_doses(checks)
@@ -117,7 +119,7 @@ def summary(replications: pd.DataFrame, checks: pd.DataFrame) -> pd.DataFrame:
     for (cue, measure, dose, arrangement), group in replications.groupby(
         ["cue", "measure", "dose", "arrangement"], sort=False
     ):
-        test = over_replications(group)
+        test = over_replications(group, least)
         if len(group) > 1 and np.ptp(group["estimate"].to_numpy(dtype=float)) == 0:
             test["p"] = float("nan")
         at = (dose, arrangement, cue)
@@ -228,26 +230,28 @@ DECLARED_COLUMNS = ["test", "cue", "dose", "measure", "replications", "left_out"
                     "sd", "ci_low", "ci_high", "df", "p", "p_holm", "family"]  # fmt: skip
 
 
-def one_sample(values: np.ndarray) -> dict[str, float]:
+def one_sample(values: np.ndarray, least: int) -> dict[str, float]:
     """The one-sample t-test of mean 0 over the defined ``values`` (one per replication; an
-    undefined one left out and counted): the mean, SD, t-interval, df and p."""
+    undefined one left out and counted): the mean, SD, t-interval, df and p; made on at least
+    ``least`` defined values (``replicated.over_replications``; below it no p, df 0)."""
     values = np.asarray(values, dtype=float)
     defined = values[np.isfinite(values)]
     n = len(defined)
     sd = float(defined.std(ddof=1)) if n > 1 else float("nan")
-    term = t_term(defined.mean() if n else float("nan"), sd / np.sqrt(max(n, 1)), n - 1)
+    term = replicated.over_replications(defined, least)
     return {"replications": n, "left_out": len(values) - n, "sd": sd} | {
         k: term[k] for k in ("estimate", "ci_low", "ci_high", "df", "p")
     }
 
 
 def declared_tests(
-    parts: pd.DataFrame, tests: Sequence[str], doses: Sequence[float]
+    parts: pd.DataFrame, tests: Sequence[str], doses: Sequence[float], least: int
 ) -> pd.DataFrame:
     """The crossed design's declared family (config ``size_dose.crossed.tests``), Holm over
     itself alone (``FAMILY_DECLARED``): per cue timing, ``size`` and ``grip_distance`` at every
     dose (``separated``), and ``dose``, the natural runs' size effect at the largest dose minus at
-    the smallest, per replication; each a one-sample t over the replications. ``dose`` for the
+    the smallest, per replication; each a one-sample t over the replications (``one_sample``, on
+    at least ``least``). ``dose`` for the
     contrast reads "<largest> - <smallest>"."""
     low, high = float(min(doses)), float(max(doses))
     rows = []
@@ -263,7 +267,7 @@ def declared_tests(
             for at, column in values.items():
                 rows.append(
                     {"test": test, "cue": cue, "dose": at, "measure": by_cue["measure"].iloc[0]}
-                    | one_sample(column)
+                    | one_sample(column, least)
                 )
     out = pd.DataFrame(rows, columns=DECLARED_COLUMNS)
     out["p_holm"] = holm(out["p"].to_numpy(dtype=float)) if len(out) else []
@@ -339,7 +343,7 @@ def geometry_of_trials(geometry: pd.DataFrame, grips: Sequence[str]) -> pd.DataF
     return out.drop(columns="grip")
 
 
-def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
+def motor_tests(trials: pd.DataFrame, least: int, measure: str = "rmse") -> pd.DataFrame:
     """Do the demonstrations' differences line up with each object's error? ``trials``: the
     categorisation trials (closed loop) of the study's runs, with their ``dose`` (or "removed"),
     grip ``arrangement``, cue timing, replication (``seed``), network, object and target grip,
@@ -347,7 +351,8 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
     from that run's own demonstrations). Per network, the least-squares slope of its four
     objects' mean error on each geometry measure (standardised over the four). The networks
     of one replication share its demonstrations, so the unit is the replication: its networks'
-    mean slope, tested over the replications (df = replications - 1), per dose, arrangement
+    mean slope, tested over the replications (df = replications - 1; on at least ``least``,
+    ``replicated.over_replications``), per dose, arrangement
     and cue timing; Holm's p within each family: the removal runs' (``FAMILY_MOTOR_PLANNED``,
     planned with the study) and every other run's (``FAMILY_MOTOR_ADDED``, added after
     results), never pooled.
@@ -379,8 +384,7 @@ def motor_tests(trials: pd.DataFrame, measure: str = "rmse") -> pd.DataFrame:
                     networks += len(slope)
             values = np.array(per_replication)
             n = len(values)
-            sd = values.std(ddof=1) if n > 1 else float("nan")
-            term = t_term(values.mean() if n else float("nan"), sd / np.sqrt(max(n, 1)), n - 1)
+            term = replicated.over_replications(values, least)
             rows.append(
                 {
                     "dose": dose,

@@ -103,9 +103,11 @@ def direction_codes(outcomes) -> list[str]:
 
 #: The words of ``reading_tests.direction``'s ``Outcome``.
 READING_WORDS = {Outcome.PAPER: "reproduced", Outcome.AGAINST: "reversed",
-                 Outcome.NONE: "not shown", Outcome.CONSTANT: "no variation"}  # fmt: skip
+                 Outcome.NONE: "not shown", Outcome.CONSTANT: "no variation",
+                 Outcome.NOT_ASSESSABLE: "not assessable"}  # fmt: skip
 #: The words of ``reading_tests.difference_verdict``, where they differ from its code.
-DIFFERENCE_WORDS = {"none": "not shown", "a > b": "larger", "a < b": "smaller"}
+DIFFERENCE_WORDS = {"none": "not shown", "a > b": "larger", "a < b": "smaller",
+                    "not_assessable": NOT_ASSESSABLE}  # fmt: skip
 #: An equivalence whose margin was set after its measure's results were read
 #: (config ``readings.margin_declared``): said so wherever it appears, never counted with the
 #: equivalences whose margin came first.
