@@ -217,6 +217,29 @@ def test_where_every_replication_disagrees_with_the_confirmation_the_scorecard_s
     assert first["over every replication (exploration)"].endswith("Holm p 0.3: not shown")
 
 
+def test_the_fewest_networks_are_counted_in_the_replications_a_test_used():
+    """Issue 70: a replication with no correct trial in a cell gives no estimate and is left out
+    of the test; the networks beside the test are those of the replications it rests on."""
+    correct = claim_rows().assign(measure="rmse_correct")
+    cells = pd.DataFrame(
+        [{"cue": c, "mode": m, "seed": seed, "mapping": mapping, "networks": n}
+         for c in ("first_step", "all_steps") for m in ("closed_loop", "teacher_forced")
+         for seed, mapping, n in ((1, "A", 0), (1, "B", 6), (2, "A", 4), (2, "B", 5))]
+    )  # fmt: skip
+    keys = ["cue", "mode", "measure", "effect"]
+    replications = pd.concat(
+        [correct[keys].assign(seed=seed, estimate=estimate) for seed, estimate in
+         ((1, np.nan), (2, 0.01))]
+    )  # fmt: skip
+    args = (correct, correct.assign(power_at_least=0.9), sensitivity_rows(), cells)
+    _, used = scorecard.claims_values(*args, replications)
+    _, every = scorecard.claims_values(*args)
+    assert set(used["fewest networks per cell (A / B)"]) == {"4 / 5"}
+    assert set(every["fewest networks per cell (A / B)"]) == {"0 / 5"}
+    _, none = scorecard.claims_values(*args, replications.assign(estimate=np.nan))
+    assert set(none["fewest networks per cell (A / B)"]) == {"–"}
+
+
 def test_every_scorecard_row_about_the_model_rests_on_ten_replications_or_says_so():
     _, table = scorecard.scorecard(*score_inputs())
     model = table[~table["chapter"].isin(["robot_test"])]

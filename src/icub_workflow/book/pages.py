@@ -762,7 +762,8 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         contact_cells=pd.read_csv(inputs["robot_contact_time_cells.csv"]))  # fmt: skip
     claim_values, claim_table = claims_values(
         read["claims_summary"], pd.read_csv(inputs["claims_power.csv"]), sensitivity,
-        pd.read_csv(inputs["claims_correct_cells.csv"]))  # fmt: skip
+        pd.read_csv(inputs["claims_correct_cells.csv"]),
+        pd.read_csv(inputs["claims_replications.csv"]))  # fmt: skip
     score_values |= claim_values
     pages, tables = {}, {}
     for page, (values, shown) in {

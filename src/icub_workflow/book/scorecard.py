@@ -47,13 +47,20 @@ def claim_key(row) -> str:
     return "claim_" + "_".join(str(row[k]) for k in ("cue", "mode", "measure", "effect"))
 
 
-def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.DataFrame,
-                  cells: pd.DataFrame) -> tuple[dict, pd.DataFrame]:  # fmt: skip
+def claims_values(
+    summary: pd.DataFrame,
+    power: pd.DataFrame,
+    sensitivity: pd.DataFrame,
+    cells: pd.DataFrame,
+    replications: pd.DataFrame | None = None,
+) -> tuple[dict, pd.DataFrame]:
     """The confirmatory family's values (``claim_<cue>_<mode>_<measure>_<effect>_*``: estimate,
     interval, Holm p, verdict, power) and its table, a row per declared test; beside each
     correct-trial test, the fewest networks carrying a cell per mapping (``cells``:
-    data/claims/correct_cells.csv) and the estimate over every replication (``sensitivity``:
-    correct_sensitivity.csv, exploration; ``sens_<cue>_<mode>_<effect>_*``)."""
+    data/claims/correct_cells.csv) in the replications the test used (``replications``:
+    data/claims/replications.csv, those with an estimate; every replication where it is not
+    given) and the estimate over every replication (``sensitivity``: correct_sensitivity.csv,
+    exploration; ``sens_<cue>_<mode>_<effect>_*``)."""
     values: dict[str, object] = sensitivity_values(sensitivity)
     rows = []
     keyed = power.set_index(["cue", "mode", "measure", "effect"])
@@ -74,7 +81,8 @@ def claims_values(summary: pd.DataFrame, power: pd.DataFrame, sensitivity: pd.Da
                                              f"{int(row['replications'])}",
             "Holm p": row["p_holm"], "verdict": word,
             "power planned (at least)": float(planned["power_at_least"]),
-            "fewest networks per cell (A / B)": fewest_per_mapping(cells, row)
+            "fewest networks per cell (A / B)": fewest_per_mapping(
+                cells, row, used_seeds(replications, row))
             if row["measure"] == "rmse_correct" else "–",
             "over every replication (exploration)": _sensitivity_cell(values, row),
         })  # fmt: skip
@@ -112,9 +120,24 @@ def sensitivity_values(sensitivity: pd.DataFrame) -> dict[str, object]:
     return values
 
 
-def fewest_per_mapping(cells: pd.DataFrame, row) -> str:
-    """The fewest networks carrying a congruency x size cell in any replication, per mapping."""
+def used_seeds(replications: pd.DataFrame | None, row) -> set | None:
+    """The seeds of the replications a declared test rests on: those with an estimate of it
+    (None: every replication)."""
+    if replications is None:
+        return None
+    keys = ("cue", "mode", "measure", "effect")
+    mine = replications[(replications[list(keys)] == [row[k] for k in keys]).all(axis=1)]
+    return set(mine.loc[mine["estimate"].notna(), "seed"])
+
+
+def fewest_per_mapping(cells: pd.DataFrame, row, seeds: set | None = None) -> str:
+    """The fewest networks carrying a congruency x size cell in any of the replications
+    ``seeds`` (None: every replication), per mapping; a dash where none is left."""
     chosen = cells[(cells["cue"] == row["cue"]) & (cells["mode"] == row["mode"])]
+    if seeds is not None:
+        chosen = chosen[chosen["seed"].isin(seeds)]
+    if chosen.empty:
+        return "–"
     fewest = chosen.groupby("mapping")["networks"].min()
     return " / ".join(str(int(n)) for n in fewest)
 
