@@ -751,7 +751,7 @@ def claim_cells(cells, declared, cues, path) -> None:
     middle lies above the solid one's, size how far the small objects lie above the large. Each
     RMSE panel names its declared estimates (``declared``: the claims' summary, measure
     ``rmse``). Bottom: the closed-loop wrong-grip trials by object size, how far they travelled
-    towards the other grip (commitment) and what the error cost in RMSE beyond a correct trial.
+    towards the other grip (commitment) and their RMSE less that of the cell's correct trials.
     ``cells``: ``analysis.cells.cell_summary``'s table; ``cues``: the cue timings in order."""
     conditions = [(cue, mode) for cue in cues for mode in ("teacher_forced", "closed_loop")]
     names = {
@@ -805,7 +805,7 @@ def claim_cells(cells, declared, cues, path) -> None:
     for k, (value, label) in enumerate(
         {
             "wrong_commitment": "how far towards the other grip (0: the grip asked, 1: the other)",
-            "wrong_cost": "the RMSE a wrong grip adds to a correct trial's",
+            "wrong_cost": "their RMSE less that of the same cell's correct trials",
         }.items()
     ):
         ax = fig.add_subplot(grid[2, 2 * k : 2 * k + 2])
