@@ -104,3 +104,50 @@ def test_an_effects_share_is_its_estimate_over_its_conditions_mean_rmse():
     assert len(shares) == 1 and len(cells) == 4
     assert shares["condition_rmse"].iloc[0] == pytest.approx(cells.mean())
     assert shares["share"].iloc[0] == pytest.approx(0.02 / cells.mean())
+
+
+def test_size_among_congruent_trials_is_tested_over_replications_with_holm():
+    """The added test (exploration, after results): per replication the small congruent cell's
+    RMSE less the large one's, a one-sample t over the replications, Holm over the conditions."""
+    from statsmodels.stats.multitest import multipletests
+
+    from icub_affordance.analysis.cells import ADDED_FAMILY, congruent_size_tests
+
+    rows = []
+    rng = np.random.default_rng(0)
+    for cue in ("first_step", "all_steps"):
+        for replication in range(6):
+            for size, grip, congruent, rmse in (
+                ("large", "power", True, 0.05 + rng.normal(0, 0.002)),
+                ("small", "precision", True, 0.04 + rng.normal(0, 0.002)),
+                ("large", "precision", False, 0.06),
+                ("small", "power", False, 0.07),
+            ):
+                rows.append(
+                    {
+                        "replication": replication,
+                        "cue": cue,
+                        "mode": "teacher_forced",
+                        "size": size,
+                        "grip_asked": grip,
+                        "congruent": congruent,
+                        "rmse": rmse,
+                    }
+                )
+    per = pd.DataFrame(rows)
+    tests = congruent_size_tests(per, least=5, alpha=0.05).set_index("cue")
+    p = []
+    for cue in ("first_step", "all_steps"):
+        mine = per[(per["cue"] == cue) & per["congruent"]].pivot(
+            index="replication", columns="size", values="rmse"
+        )
+        d = (mine["small"] - mine["large"]).to_numpy()
+        t = stats.ttest_1samp(d, 0.0)
+        assert tests.loc[cue, "estimate"] == pytest.approx(d.mean())
+        assert tests.loc[cue, "p"] == pytest.approx(t.pvalue)
+        p.append(t.pvalue)
+    holm = multipletests(p, method="holm")[1]
+    assert tests.loc[["first_step", "all_steps"], "p_holm"].to_numpy() == pytest.approx(holm)
+    assert set(tests["direction"]) == {-1} and set(tests["family"]) == {ADDED_FAMILY}
+    few = congruent_size_tests(per[per["replication"] < 3], least=5, alpha=0.05)
+    assert few["p"].isna().all() and set(few["direction"]) == {2}

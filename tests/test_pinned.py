@@ -80,7 +80,10 @@ def test_every_claim_and_sensitivity_test_is_named_once_with_its_code(tmp_path):
             },
         ]
     )
-    table = verdict_rows(claims, sensitivity)
+    added = pd.DataFrame(
+        [{"cue": "first_step", "mode": "teacher_forced", "family": "added", "direction": -1}]
+    )
+    table = verdict_rows(claims, sensitivity, added)
     codes = dict(zip(table["test"], table["code"], strict=True))
     assert codes == {
         "claims/first_step/closed_loop/rmse/congruency": "paper",
@@ -89,11 +92,12 @@ def test_every_claim_and_sensitivity_test_is_named_once_with_its_code(tmp_path):
         "correct_all/first_step/closed_loop/size": "none",
         "correct_all/all_steps/closed_loop/size": "reversed",
         "correct_all/all_steps/closed_loop/congruency": "not assessable",
+        "congruent_size/first_step/teacher_forced": "reversed",
     }
     table.to_csv(tmp_path / "verdicts.csv", index=False)
     assert read_verdicts(tmp_path / "verdicts.csv") == codes
     with pytest.raises(ValueError, match="named twice"):
-        verdict_rows(pd.concat([claims, claims]), sensitivity)
+        verdict_rows(pd.concat([claims, claims]), sensitivity, added)
 
 
 def assumed_in(page: str) -> list[tuple[str, str]]:
@@ -118,6 +122,11 @@ def test_every_pages_findings_rest_on_tests_of_the_build():
         for m in ("teacher_forced", "closed_loop")
         for x in ("rmse", "rmse_correct")
         for e in ("congruency", "size")
+    }
+    names |= {
+        f"congruent_size/{c}/{m}"
+        for c in ("first_step", "all_steps")
+        for m in ("teacher_forced", "closed_loop")
     }
     assert {test for test, _ in assumed} <= names
 

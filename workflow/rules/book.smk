@@ -70,6 +70,7 @@ BOOK_DATA = {
     "claims_cells.png": "data/claims/cells.png",
     "claims_cells.csv": "data/claims/cells.csv",
     "claims_effect_shares.csv": "data/claims/effect_shares.csv",
+    "claims_congruent_size.csv": "data/claims/congruent_size.csv",
     "verdicts.csv": "data/book/verdicts.csv",
     "claims_error_split.csv": "data/claims/error_split.csv",
     "claims_error_cells.csv": "data/claims/error_cells.csv",
@@ -118,6 +119,7 @@ rule verdicts:
     input:
         claims=rules.claims.output.summary,
         correct_sensitivity=rules.claims_correct.output.sensitivity,
+        congruent_size=rules.claims_cells.output.added,
         code=script_code("verdicts"),
     output:
         "data/book/verdicts.csv",

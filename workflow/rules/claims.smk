@@ -93,7 +93,9 @@ rule claims_cells:
     size x grip asked over the confirmation's replications (mean, 95% t interval): all-trial
     RMSE, wrong-grip rate, and the wrong trials' way towards the other grip and their RMSE beyond
     a correct trial's (icub_affordance.analysis.cells); each declared RMSE estimate as a share of
-    its condition's mean RMSE. Description: the declared tests are `claims`'."""
+    its condition's mean RMSE. Description: the declared tests are `claims`'. And one test
+    added after the results (family "exploration, added after results"): size among congruent
+    trials alone, per cue x mode (congruent_size.csv)."""
     input:
         trials=measured_inputs(CLAIM_TRIALS),
         declared=rules.claims.output.summary,
@@ -102,10 +104,13 @@ rule claims_cells:
         cells="data/claims/cells.csv",
         replications="data/claims/cell_replications.csv",
         shares="data/claims/effect_shares.csv",
+        added="data/claims/congruent_size.csv",
     params:
         trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
         cues=[row["cue"] for row in PLAN.claim_rows],
         seeds=[row["seed"] for row in PLAN.claim_rows],
+        least=config["confirmation"]["min_replications"],
+        alpha=config["confirmation"]["alpha"],
     log:
         "data/logs/claims/cells.log",
     benchmark:

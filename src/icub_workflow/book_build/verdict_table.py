@@ -14,14 +14,19 @@ import pandas as pd
 
 from icub_affordance.analysis.paper_claims import direction
 from icub_affordance.analysis.verdicts import ALPHA
+from icub_affordance.outcome import Outcome
 from icub_workflow.book.words import DIRECTION_CODES
 
 COLUMNS = ["test", "family", "code"]
 
 
-def verdict_rows(claims: pd.DataFrame, correct_sensitivity: pd.DataFrame) -> pd.DataFrame:
-    """The declared tests of the paper's claims (``claims/{cue}/{mode}/{measure}/{effect}``) and
-    the correct-trial RMSE over every replication (``correct_all/{cue}/{mode}/{effect}``)."""
+def verdict_rows(
+    claims: pd.DataFrame, correct_sensitivity: pd.DataFrame, congruent_size: pd.DataFrame
+) -> pd.DataFrame:
+    """The declared tests of the paper's claims (``claims/{cue}/{mode}/{measure}/{effect}``),
+    the correct-trial RMSE over every replication (``correct_all/{cue}/{mode}/{effect}``) and
+    size among congruent trials, added after the results
+    (``congruent_size/{cue}/{mode}``, its ``Outcome`` codes)."""
     rows = [
         {
             "test": f"claims/{r['cue']}/{r['mode']}/{r['measure']}/{r['effect']}",
@@ -37,6 +42,14 @@ def verdict_rows(claims: pd.DataFrame, correct_sensitivity: pd.DataFrame) -> pd.
             "code": DIRECTION_CODES[direction(r["estimate"], r["p_holm"], ALPHA)],
         }
         for r in correct_sensitivity.to_dict("records")
+    ]
+    rows += [
+        {
+            "test": f"congruent_size/{r['cue']}/{r['mode']}",
+            "family": r["family"],
+            "code": DIRECTION_CODES[Outcome(int(r["direction"]))],
+        }
+        for r in congruent_size.to_dict("records")
     ]
     table = pd.DataFrame(rows, columns=COLUMNS)
     doubled = table["test"][table["test"].duplicated()].tolist()
