@@ -159,6 +159,7 @@ def test_bad_config_stops_before_any_job_naming_key_and_allowed_values(tmp_path,
     (workdir / "config").unlink()
     (workdir / "config").mkdir()
     shutil.copy(changed_config(tmp_path, change), workdir / "config" / "config.yaml")
+    shutil.copy(REPO / "config" / "confirmation_pilot.csv", workdir / "config")
     result = run_snakemake(workdir, "-c1", config=workdir / "config" / "config.yaml")
     assert result.returncode != 0
     message = result.stdout + result.stderr

@@ -128,6 +128,11 @@ def time_sweep(
         for name in LINKED:
             (work / name).symlink_to(repo / name)
         (work / "config").mkdir()
+        # the config's other files (the confirmation's pilot, which the config checks refuse
+        # to do without) linked, its config.yaml the measurement's own
+        for other in sorted((repo / "config").iterdir()):
+            if other.name != "config.yaml":
+                (work / "config" / other.name).symlink_to(other)
         (work / "config" / "config.yaml").write_text(
             yaml.safe_dump(cost_config(config, replications), sort_keys=False)
         )
