@@ -47,15 +47,19 @@ def test_pinch_lifts_a_small_object_between_thumb_and_index(robot, obj):
     assert outcome.lift_height > 0.04  # it rose with the hand: friction holds it
 
 
+#: A power grasp of a big object: the wrap the tests below lift with and record.
+POWER_PLAN = GraspPlan(
+    object_in_palm=np.array([0.035, -0.01, 0.037]),
+    preshape_deg=np.array([20, 75, 0, 0, 0, 0, 0, 0, 0], dtype=float),
+    closed_deg=np.array([20, 75, 0, 90, 70, 70, 70, 70, 100], dtype=float),
+    yaw_deg=35,
+    tilt_deg=15,
+)
+
+
 @pytest.mark.parametrize("obj", ["big_ball", "big_cube"])
 def test_power_grasp_wraps_and_lifts_a_big_object(robot, obj):
-    plan = GraspPlan(
-        object_in_palm=np.array([0.035, -0.01, 0.037]),
-        preshape_deg=np.array([20, 75, 0, 0, 0, 0, 0, 0, 0], dtype=float),
-        closed_deg=np.array([20, 75, 0, 90, 70, 70, 70, 70, 100], dtype=float),
-        yaw_deg=35,
-        tilt_deg=15,
-    )
+    plan = POWER_PLAN
     outcome = execute_grasp(robot, obj, plan, INITIAL)
     assert touched(outcome, "thumb")
     fingers = sum(touched(outcome, f) for f in ("index", "middle", "ring", "little"))
@@ -80,13 +84,7 @@ def test_recording_chosen_moments_keeps_the_full_traces_rows(robot):
     and a grasp not lifted, because its touch already failed it, says so with a NaN lift."""
     from icub_affordance.body.grasp import sample_steps
 
-    plan = GraspPlan(
-        object_in_palm=np.array([0.035, -0.01, 0.037]),
-        preshape_deg=np.array([20, 75, 0, 0, 0, 0, 0, 0, 0], dtype=float),
-        closed_deg=np.array([20, 75, 0, 90, 70, 70, 70, 70, 100], dtype=float),
-        yaw_deg=35,
-        tilt_deg=15,
-    )
+    plan = POWER_PLAN
     full = execute_grasp(robot, "big_ball", plan, INITIAL)
     kept = execute_grasp(robot, "big_ball", plan, INITIAL, record_steps=10)
     idx = sample_steps(len(full.postures_deg), 10)
