@@ -22,11 +22,11 @@ def html(built):
 @pytest.mark.parametrize(
     ("page", "image"),
     [
-        ("body", "figure1_scene.png"),
-        ("architecture", "figure2_maps.png"),
-        ("architecture", "figure2_architecture.png"),
+        ("model", "figure1_scene.png"),
+        ("model", "figure2_maps.png"),
+        ("model", "figure2_architecture.png"),
         ("reproduce", "rulegraph.png"),
-        ("vision", "figure3.png"),
+        ("model", "figure3.png"),
         ("results", "figure4.png"),
         ("results", "figure5.png"),
         ("results", "conflict_timecourse.png"),
@@ -42,8 +42,8 @@ def test_figures_are_the_pipelines_outputs(built, html, page, image):
 
 def test_figure2_diagram_is_a_plot_rules_output(html):
     """Figure 2's diagram and the DAG are drawn by plot rules: the pages only show them."""
-    assert "Figure 2 (drawn by rule" in html["architecture"]
-    for page in ("architecture", "reproduce"):
+    assert "Figure 2 (drawn by rule" in html["model"]
+    for page in ("model", "reproduce"):
         assert not re.search(r'src="_images/[0-9a-f]{64}\.png"', html[page]), page  # no drawing
 
 
@@ -79,7 +79,7 @@ def test_front_page_shows_provenance(built, html):
 
 
 def test_without_robustness_the_robustness_page_says_so_and_gives_the_command(built, html):
-    page = html["robustness"]
+    page = html["reproduce"]
     words = " ".join(re.sub(r"<[^>]+>", "", page).split())  # the text a reader sees
     assert "This build did not run it (robustness is false, the default)" in words
     assert "snakemake -c2 --config robustness=True" in words
@@ -87,7 +87,7 @@ def test_without_robustness_the_robustness_page_says_so_and_gives_the_command(bu
 
 
 def without_build_time(page):
-    """The page without its build's date and the build's job records (the robustness page's
+    """The page without its build's date and the build's job records (the reproduce page's
     span and job time, which a rebuild of the book extends by the book's own job)."""
     text = re.sub(r"built \d{4}-\d\d-\d\d \d\d:\d\d UTC", "built (time)", page.read_text())
     return re.sub(

@@ -521,8 +521,18 @@ def test_with_the_sweep_the_robustness_page_shows_the_findings(tmp_path):
 
     book = tmp_path / "book"
     (book / "_data" / "tables").mkdir(parents=True)
-    page = shutil.copy(REPO / "book" / "robustness.md", book / "robustness.md")
-    (book / "_data" / "findings.json").write_text(json.dumps({"robustness": values}))
+    page = shutil.copy(REPO / "book" / "reproduce.md", book / "reproduce.md")
+    # the page's other sections: the two scales, each rule's time, the packages and config
+    scale = {row: 1 for row in ("readings", "reading_seeds", "size_runs", "size_replications",
+                                "variants", "fresh", "sweep")}  # fmt: skip
+    reproduce = {"scale": {"now": scale, "other": scale, "full": True}}
+    (book / "_data" / "findings.json").write_text(
+        json.dumps({"robustness": values, "reproduce": reproduce})
+    )
+    pd.DataFrame({"rule": ["demos"], "total_s": [1.0], "longest_s": [1.0]}).to_csv(
+        book / "_data" / "benchmarks.csv", index=False
+    )
+    (book / "_data" / "run.json").write_text(json.dumps({"versions": {}, "config": {}}))
     table.to_csv(book / "_data" / "tables" / "sweep.csv", index=False)
     line = {"jobs": 412, "span_s": 1509.0, "job_s": 2753.0, "idle_core_s": 265.0}
     line |= {"executor": "slurm", "cluster": "hpc", "partition": "short"}

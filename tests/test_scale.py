@@ -280,7 +280,7 @@ def test_the_robustness_page_without_the_sweep_gives_the_command_and_no_numbers(
     assert values["ran"] is False and table is None
     assert "did not run" in values["sweep_ran"]
     assert (
-        "`snakemake -c2 --config robustness=True`" in (REPO / "book" / "robustness.md").read_text()
+        "`snakemake -c2 --config robustness=True`" in (REPO / "book" / "reproduce.md").read_text()
     )
     sweep = config["sweep"]
     points = len(sweep["seeds"]) * len(sweep["learning_rate"]) * len(sweep["hidden"])

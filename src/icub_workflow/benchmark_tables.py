@@ -3,7 +3,7 @@ line (when each job ran, how long the build took), and as the sweep's cost (its 
 per replication).
 
 Printed by `python benchmarks/collect.py` and `python benchmarks/timeline.py`, and shown on the
-book's reproduce page (rule `book`) and robustness page (rule `findings`).
+book's reproduce page (rule `book`) and reproduce page (rule `findings`).
 """
 
 from __future__ import annotations

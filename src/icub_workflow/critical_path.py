@@ -187,7 +187,7 @@ def record_path(benchmark: str, directory: Path, default: str = "data/benchmarks
 
 # ---- the record the book quotes (benchmarks/full_scale_critical_path.json) ---------------------
 
-#: What a record must hold, each key's type: the robustness page states these.
+#: What a record must hold, each key's type: the reproduce page states these.
 RECORD_KEYS = {
     "jobs": int, "missing": int, "critical_path_s": float, "critical_path_jobs": int,
     "sum_of_job_seconds": float, "on_cores": list, "chain": list, "commit": str, "date": str,

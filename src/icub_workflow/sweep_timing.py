@@ -8,7 +8,7 @@ sweep itself is timed. Prints a table
 and, last, JSON: replications, seconds and seconds per replication.
 
 Measured from the command line only, outside the DAG (`python benchmarks/sweep_cost.py`): no job
-starts Snakemake. The book's robustness page reads the sweep's cost from its jobs' own benchmark
+starts Snakemake. The book's reproduce page reads the sweep's cost from its jobs' own benchmark
 files instead (benchmark_tables.replication_cost).
 """
 
@@ -73,7 +73,7 @@ def check_counts(counts: Iterable[object]) -> list[int]:
 
 def cost_config(config: dict, replications: int) -> dict:
     """The config of one measurement: n replications (seeds 1..n) at the network's settings,
-    without the robustness pages (the scratch run makes only the sweep)."""
+    without the reproduce pages (the scratch run makes only the sweep)."""
     config = copy.deepcopy(config)
     network = config["network"]
     config["sweep"] = {

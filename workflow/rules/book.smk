@@ -77,7 +77,7 @@ BOOK_DATA = {
     "claims_correct_sensitivity.csv": "data/claims/correct_sensitivity.csv",
     "claims_correct_cells.csv": "data/claims/correct_cells.csv",
     # the full scale's critical path from its job records (benchmarks/critical_path.py --record,
-    # tracked: a default build cannot measure it), the robustness page
+    # tracked: a default build cannot measure it), the reproduce page
     "full_scale_critical_path.json": "benchmarks/full_scale_critical_path.json",
 } | {
     f"curves/net{net}.csv": PLAN.path(MAIN, f"train/net{net}/curve.csv") for net in NETWORKS
@@ -88,7 +88,7 @@ _GROWS = PLAN.first_reading_run("grows")
 if _GROWS is not None and config["soms"]["goal_response"] != "grows":
     BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(PLAN.stage_run(_GROWS, "soms"), "soms/soms.npz")
 
-# With `--config robustness=True` the book also shows the sweep and its cost (robustness.md);
+# With `--config robustness=True` the book also shows the sweep and its cost (reproduce.md);
 # without, that page says that this build did not run them.
 if PLAN.robustness:
     BOOK_DATA |= {

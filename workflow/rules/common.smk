@@ -332,7 +332,7 @@ def _outputs_index():
 
 
 def sweep_job_records(wildcards=None):
-    """The sweep's cost (robustness.md), with robustness: the engine's record of each job that
+    """The sweep's cost (reproduce.md), with robustness: the engine's record of each job that
     made a file of a sweep point (common.smk: job_records, run_files), with the seed of the
     replication it served, {benchmark file: seed}. Without robustness, none."""
     if not PLAN.robustness:

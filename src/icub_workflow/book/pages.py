@@ -523,7 +523,7 @@ def robustness(inputs: Mapping[str, str], config: dict,
 def full_scale_cost(path: str) -> dict:
     """The full scale's critical path and its wall time on each number of cores, from the record
     ``benchmarks/critical_path.py --record`` wrote after a full-scale build (its job records):
-    minutes and hours for the robustness page, the chain's rules with their seconds, and where
+    minutes and hours for the reproduce page, the chain's rules with their seconds, and where
     the records come from."""
     from icub_workflow.critical_path import load_record
 
