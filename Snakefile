@@ -68,6 +68,7 @@ include: "workflow/rules/signatures.smk"
 include: "workflow/rules/words.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
+include: "workflow/rules/benchmark.smk"
 
 
 # Every file the default target makes, the intermediate ones too (DEFAULT_TARGET below names

@@ -1,0 +1,1 @@
+"""Nothing: rule benchmark_noop's job is timed for what any job pays before its work."""
