@@ -259,3 +259,59 @@ def test_a_critical_path_record_that_is_missing_or_incomplete_is_refused(tmp_pat
         path.write_text(json.dumps(whole | broken))
         with pytest.raises(ValueError, match=words):
             load_record(path)
+
+
+def test_where_time_goes_sums_each_rules_wall_time_and_cpu_from_its_records():
+    """benchmarks/where_time_goes.py (b): per rule, the jobs' `s` and `cpu_time` summed, the
+    rule with the most wall time first, a record with no CPU (`NA`) counted apart."""
+    import pytest
+
+    from icub_workflow.benchmark_tables import job_usage, rule_sums
+
+    def record(wall: float, cpu: str) -> str:
+        return HEADER + f"{wall}\t0:00:01\t100\t0\t0\t0\t0\t0\t0\t{cpu}\n"
+
+    assert job_usage(record(1.5, "0.75")) == (1.5, 0.75)
+    rows = rule_sums(
+        [
+            ("figure3", record(1.0, "0.5")),
+            ("demos", record(6.0, "5.0")),
+            ("demos", record(2.0, "NA")),
+            ("figure3", record(1.0, "0.25")),
+        ]
+    )
+    assert [row["rule"] for row in rows] == ["demos", "figure3"]
+    demos, figure3 = rows
+    assert (demos["jobs"], demos["s"], demos["cpu_s"], demos["cpu_na"]) == (2, 8.0, 5.0, 1)
+    assert (figure3["jobs"], figure3["s"], figure3["cpu_s"], figure3["cpu_na"]) == (2, 2.0, 0.75, 0)
+    assert demos["share"] == pytest.approx(0.8) and figure3["share"] == pytest.approx(0.2)
+    with pytest.raises(ValueError, match="not a Snakemake benchmark file"):
+        job_usage("wall\n1.0\n")
+
+
+def test_where_time_goes_names_the_cpus_level_and_compares_two_runs(tmp_path):
+    """The CPU's x86-64 level from its flags; two saved runs set side by side, nothing run."""
+    import json
+
+    from icub_workflow.benchmark_tables import X86_LEVELS, compare_figures, x86_level
+
+    v2, v3 = X86_LEVELS["x86-64-v2"], X86_LEVELS["x86-64-v3"]
+    assert x86_level(set()) == "x86-64" and x86_level(v2 | {"sse2"}) == "x86-64-v2"
+    assert x86_level(v2 | v3) == "x86-64-v3" and x86_level(v3) == "x86-64"
+    assert compare_figures({"a": 2.0, "b": 0.0}, {"a": 1.0, "c": 3.0}) == [
+        ("a", 2.0, 1.0, 0.5),
+        ("b", 0.0, None, None),
+        ("c", None, 3.0, None),
+    ]
+    runs = []
+    for name, seconds in (("before", 10.0), ("after", 4.0)):
+        path = tmp_path / f"{name}.json"
+        figures = {"build_job_s": seconds}
+        rules = {"demos": {"jobs": 1, "s": seconds, "cpu_s": 1.0}}
+        path.write_text(json.dumps({"cpu": "x", "figures": figures, "rules": rules}))
+        runs.append(str(path))
+    result = run("where_time_goes.py", "--compare", *runs)
+    assert result.returncode == 0, result.stderr
+    lines = {line.split()[0]: line.split()[1:] for line in result.stdout.splitlines() if line}
+    assert lines["build_job_s"] == ["10.00", "4.00", "0.40"]
+    assert "rule demos s" in result.stdout

@@ -146,3 +146,77 @@ def replication_cost(records: Mapping[str, object]) -> dict[str, float | int]:
         "max_s": round(max(seconds), 2),
         "total_s": round(sum(seconds), 2),
     }
+
+
+# ---- where the build's time goes (benchmarks/where_time_goes.py, issue 71) --------------------
+
+#: The flags each x86-64 level adds to the one below (the psABI's levels; Linux's names).
+X86_LEVELS = {
+    "x86-64-v2": {"cx16", "lahf_lm", "popcnt", "sse4_1", "sse4_2", "ssse3"},
+    "x86-64-v3": {"avx", "avx2", "bmi1", "bmi2", "f16c", "fma", "abm", "movbe", "xsave"},
+    "x86-64-v4": {"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"},
+}
+
+
+def x86_level(flags: set[str]) -> str:
+    """The highest x86-64 level whose flags (and those of the levels below) the CPU has: the
+    numerical libraries pick their code paths by it, so timings are compared within a level."""
+    level = "x86-64"
+    for name, needed in X86_LEVELS.items():
+        if not needed <= flags:
+            break
+        level = name
+    return level
+
+
+def job_usage(text: str) -> tuple[float, float]:
+    """A job's wall time and CPU seconds (columns ``s`` and ``cpu_time``, the last row) from the
+    text of its Snakemake benchmark file; the CPU is NaN where Snakemake wrote none (``NA``:
+    a job too short for its sampler)."""
+    lines = text.strip().splitlines()
+    if len(lines) < 2 or lines[0].split("\t")[0] != "s":
+        raise ValueError("not a Snakemake benchmark file (no header starting with `s`)")
+    header, row = lines[0].split("\t"), lines[-1].split("\t")
+    wall = float(row[0])
+    try:
+        cpu = float(row[header.index("cpu_time")])
+    except (ValueError, IndexError):
+        cpu = float("nan")
+    return wall, cpu
+
+
+def rule_sums(jobs: list[tuple[str, str]]) -> list[dict[str, float | int | str]]:
+    """Per rule, from ``[(rule, benchmark file text), ...]`` (one per job): its jobs, summed wall
+    time (``s``) and CPU (``cpu_s``, the jobs with no CPU on record left out and counted in
+    ``cpu_na``), and its share of all jobs' wall time; the rule with the most wall time first.
+    Summed job time, not the build's wall time: jobs run side by side."""
+    import math
+
+    sums: dict[str, dict[str, float | int | str]] = {}
+    for rule, text in jobs:
+        wall, cpu = job_usage(text)
+        row = sums.setdefault(rule, {"rule": rule, "jobs": 0, "s": 0.0, "cpu_s": 0.0, "cpu_na": 0})
+        row["jobs"] += 1
+        row["s"] += wall
+        if math.isnan(cpu):
+            row["cpu_na"] += 1
+        else:
+            row["cpu_s"] += cpu
+    total = sum(float(row["s"]) for row in sums.values())
+    for row in sums.values():
+        row["share"] = float(row["s"]) / total if total else 0.0
+    return sorted(sums.values(), key=lambda row: (-float(row["s"]), str(row["rule"])))
+
+
+def compare_figures(
+    before: Mapping[str, float | None], after: Mapping[str, float | None]
+) -> list[tuple[str, float | None, float | None, float | None]]:
+    """Each figure of either run as (name, before, after, after / before); None where a run
+    lacks it or the ratio has no meaning (a figure of 0 before). Names in ``before``'s order,
+    then those only ``after`` has."""
+    rows = []
+    for name in [*before, *(n for n in after if n not in before)]:
+        old, new = before.get(name), after.get(name)
+        ratio = new / old if old and new is not None else None
+        rows.append((name, old, new, ratio))
+    return rows
