@@ -111,11 +111,11 @@ def score_inputs(congruency_p=0.001, size=-0.026, dose0=-0.02, grips=0.01, held=
     signatures = pd.DataFrame(
         [{"signature": "grows_with_rt", "condition": "in view, effect over RT bins",
           "estimate": 0.004, "ci_low": 0.001, "ci_high": 0.007,
-          "p_adjusted": 0.01, "verdict": "shown", "family": "signatures", "replications": 10,
+          "p_adjusted": 0.01, "verdict": "confirmed", "family": "signatures", "replications": 10,
           "units": 10, "of": 10, "reason": ""},
          {"signature": "advance_cueing", "condition": "not posed",
           "estimate": np.nan, "ci_low": np.nan, "ci_high": np.nan,
-          "p_adjusted": np.nan, "verdict": "not testable here", "family": "signatures",
+          "p_adjusted": np.nan, "verdict": "not assessable", "family": "signatures",
           "replications": 0, "units": 0, "of": 0,
           "reason": "no input names a grip apart from an object"}]
     )  # fmt: skip
@@ -136,24 +136,24 @@ SIZE = "score_claim_rmse_size_verdict"
 
 def test_each_scorecard_verdict_follows_its_test():
     base = verdicts()
-    assert base["score_learn_verdict"] == "reproduced"
+    assert base["score_learn_verdict"] == "confirmed"
     assert base[CONGRUENCY] == "confirmed in 4 of 4"
     assert base[SIZE] == "confirmed in 3 of 4, reversed in 1"
     assert base["score_size_size_first_step_verdict"] == "reversed"
-    assert base["score_size_grips_first_step_verdict"] == "carries part of it, the paper's way"
-    assert base["score_robot_own_verdict"] == "falls short"
-    assert base["score_robot_best_verdict"] == "shown"
+    assert base["score_size_grips_first_step_verdict"] == "confirmed"
+    assert base["score_robot_own_verdict"] == "not shown"
+    assert base["score_robot_best_verdict"] == "confirmed"
     # a signature's row shows the verdict its chapter's test gave
     # (icub_affordance.analysis.signature_tests)
-    assert base["score_signature_grows_with_rt_verdict"] == "shown"
-    assert base["score_signature_advance_cueing_verdict"] == "not testable here"
+    assert base["score_signature_grows_with_rt_verdict"] == "confirmed"
+    assert base["score_signature_advance_cueing_verdict"] == "not assessable"
     # flip each statistic: its verdict, and only its, follows
     assert verdicts(congruency_p=0.2)[CONGRUENCY] == ("confirmed in 3 of 4, not shown in 1")
     assert verdicts(size=0.026)[SIZE] == "confirmed in 4 of 4"
-    assert verdicts(dose0=0.02)["score_size_size_first_step_verdict"] == "reproduced"
-    against = "carries part of it, against the paper"
+    assert verdicts(dose0=0.02)["score_size_size_first_step_verdict"] == "confirmed"
+    against = "reversed"
     assert verdicts(grips=-0.02)["score_size_grips_first_step_verdict"] == against
-    assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not known"
+    assert verdicts(ci=(0.84, 0.99))["score_robot_best_verdict"] == "not shown"
     changed = verdicts(congruency_p=0.2)
     assert {k for k in base if base[k] != changed[k]} == {CONGRUENCY}
 

@@ -182,13 +182,13 @@ def term(estimate: float, p: float, df: float = 10.0, se: float = 0.01, **extra)
 def test_a_verdict_word_reads_the_p_adjusted_within_its_family():
     from icub_workflow.book import text, words
 
-    assert words.verdict_word(term(0.03, 0.01)) == "reproduced"
+    assert words.verdict_word(term(0.03, 0.01)) == "confirmed"
     assert words.verdict_word(term(-0.03, 0.01)) == "reversed"
     # the raw p is significant, the adjusted one is not: not shown
     assert words.verdict_word(term(-0.03, 0.01, p_holm=0.2)) == "not shown"
-    assert words.verdict_word(term(0.03, float("nan"))) == "not testable"
+    assert words.verdict_word(term(0.03, float("nan"))) == "not assessable"
     # the adjusted p crosses alpha and the word follows
-    assert words.verdict_word(term(0.03, 0.049)) == "reproduced"
+    assert words.verdict_word(term(0.03, 0.049)) == "confirmed"
     assert words.verdict_word(term(0.03, 0.051)) == "not shown"
     assert "within the family “a family” (4 tests) p = 0.010" in text.fmt_term(term(0.03, 0.01))
 
@@ -206,15 +206,17 @@ def test_a_tests_page_values_carry_its_verdict_and_what_it_rests_on():
     assert text.test_values("d", "s", term(-0.026, 0.01, p_holm=0.17))["s_verdict"].text == (
         "not shown"
     )
-    assert text.test_values("d", "s", term(0.026, 0.01))["s_verdict"].text == "reproduced"
+    assert text.test_values("d", "s", term(0.026, 0.01))["s_verdict"].text == "confirmed"
 
 
 def test_a_difference_the_paper_does_not_predict_is_shown_or_not_without_a_direction():
     from icub_workflow.book import text, words
 
-    assert words.shown_word(term(-0.03, 0.001)) == words.shown_word(term(0.03, 0.001)) == "shown"
+    assert (
+        words.shown_word(term(-0.03, 0.001)) == words.shown_word(term(0.03, 0.001)) == "confirmed"
+    )
     assert words.shown_word(term(0.03, 0.001, p_holm=0.2)) == "not shown"
-    assert words.shown_word(term(0.03, float("nan"))) == "not testable"
+    assert words.shown_word(term(0.03, float("nan"))) == "not assessable"
     values = text.test_values("d", "grip", term(0.06, 0.3), words.shown_word)
     assert values["grip_verdict"].text == "not shown"
 
@@ -243,10 +245,10 @@ def test_the_main_runs_verdicts_keep_errors_apart():
              "objects": np.array(["big_ball", "small_ball", "big_cube", "small_cube"])}  # fmt: skip
     values = pages.main_tests(anova, curve, demos, "first_step")
     said = {k: v.text for k, v in values.items() if k.endswith("_verdict")}
-    assert said["closed_loop_congruency_verdict"] == "reproduced"
+    assert said["closed_loop_congruency_verdict"] == "confirmed"
     assert said["closed_loop_size_verdict"] == "reversed"
-    # the paper claims nothing of errors: a difference there is "shown", not "reproduced"
-    assert said["closed_loop_errors_congruency_verdict"] == "shown"
+    # the paper claims nothing of errors: a difference there is "confirmed", not "confirmed"
+    assert said["closed_loop_errors_congruency_verdict"] == "confirmed"
     assert said["closed_loop_rt_congruency_verdict"] == "reversed"
     assert (
         said["closed_loop_errors_size_verdict"]
@@ -255,7 +257,7 @@ def test_the_main_runs_verdicts_keep_errors_apart():
     )
     # nor of the required grip: shown or not, in either direction; a simple size effect has the
     # paper's direction (small - large), so it is reproduced or reversed
-    assert said["closed_loop_grip_verdict"] == said["closed_loop_rt_grip_verdict"] == "shown"
+    assert said["closed_loop_grip_verdict"] == said["closed_loop_rt_grip_verdict"] == "confirmed"
     assert said["closed_loop_size_in_congruent_verdict"] == "reversed"
     assert values["closed_loop_wrong_incongruent"] == pytest.approx(0.6)
 
@@ -264,12 +266,12 @@ def test_the_cue_timings_are_compared_by_the_test_of_their_difference():
     from icub_workflow.book import pages, text, words
 
     def said(t):
-        words = {"reproduced": "larger first", "reversed": "larger every"}
+        words = {"confirmed": "larger first", "reversed": "larger every"}
         found = pages.traced({"beyond": text.test_values("beyond", "d", t, words=words)})
         assert found["claims"]["beyond"]["d_verdict"] == ["beyond.d_estimate", "beyond.d_p_holm"]
         return found["beyond"]["d_verdict"]
 
-    assert words.verdict_word(term(0.03, 0.001)) == "reproduced"
+    assert words.verdict_word(term(0.03, 0.001)) == "confirmed"
     assert said(term(0.03, 0.001)) == "larger first"
     # the verdict reads the readings' table's Holm p where given
     assert said(term(0.03, 0.001, p_holm=0.2)) == "not shown"
@@ -362,7 +364,7 @@ def test_the_rules_verdicts_are_the_ones_the_book_shows(built, found):
     estimate = closed["congruency"]["estimate"]
     verdict = found["tests"]["closed_loop_congruency_verdict"]
     assert verdict == (
-        "not shown" if p_holm >= 0.05 else "reproduced" if estimate > 0 else "reversed"
+        "not shown" if p_holm >= 0.05 else "confirmed" if estimate > 0 else "reversed"
     )
 
 

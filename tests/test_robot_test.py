@@ -523,7 +523,7 @@ def test_the_books_robot_verdicts_read_the_effects_as_written():
         for f in ("congruency", "size", "interaction") for end in ("", "_estimate", "_p")
     } | {"best_misses", "robot_family", "robot_family_size"}  # fmt: skip
     assert values["robot_family"] == ROBOT_FAMILY and values["robot_family_size"] == 2
-    assert values["best_contact_time_size"].text == "not estimable"
+    assert values["best_contact_time_size"].text == "not assessable"
     rows, cells = pages._effect_rows(effects)
     # every cell shown: the large objects held, the small ones never
     assert cells[0] == {"variant": "", "measure": "held", "cong. large": "6/6",
@@ -533,13 +533,13 @@ def test_the_books_robot_verdicts_read_the_effects_as_written():
     assert not np.isnan(held["size"]["p_holm"])  # adjusted over the robot's family
     # the interaction: 0 in every network, no test and no exact fallback
     interaction = values["best_success_interaction"]
-    assert interaction.text == "not tested" and held["cong. × size"]["test"] == "none"
+    assert interaction.text == "not assessable" and held["cong. × size"]["test"] == "none"
     assert np.isnan(values["best_success_interaction_p"])
     assert interaction.rests_on == (
         "robot_test.best_success_interaction_estimate",
         "robot_test.best_success_interaction_p",
     )
-    assert values["best_contact_time_interaction"].text == "not tested"
+    assert values["best_contact_time_interaction"].text == "not assessable"
     # the misses: every small object, three networks per mapping
     assert values["best_misses"] == (
         "A small ball 3 of 3; A small cube 3 of 3; B small ball 3 of 3; B small cube 3 of 3"

@@ -187,7 +187,7 @@ def test_a_signature_on_fewer_replications_than_the_minimum_is_not_assessable():
     config = declared()
     trials = synthetic_trials(0.002)
     assert trials["replication"].nunique() == 5
-    for least, word in ((5, "shown"), (6, "not assessable")):
+    for least, word in ((5, "confirmed"), (6, "not assessable")):
         chosen = SignatureConfig(**{**vars(config), "list": [config.list[0]],
                                     "min_replications": least})  # fmt: skip
         slope = summary(trials, chosen).query("family == @FAMILY").iloc[0]
@@ -240,17 +240,17 @@ def test_no_signature_is_judged_while_the_in_view_effect_is_not_established():
 @pytest.mark.parametrize(
     ("test", "expected", "row", "word"),
     [
-        ("slope", "positive", {"estimate": 0.01, "p_adjusted": 0.049}, "shown"),
+        ("slope", "positive", {"estimate": 0.01, "p_adjusted": 0.049}, "confirmed"),
         ("slope", "positive", {"estimate": 0.01, "p_adjusted": 0.051}, "not shown"),
-        ("slope", "positive", {"estimate": -0.01, "p_adjusted": 0.049}, "opposite"),
-        ("slope", "negative", {"estimate": -0.01, "p_adjusted": 0.049}, "shown"),
-        ("equivalence", "same", {"estimate": 0.001, "p_adjusted": 0.049}, "shown"),
+        ("slope", "positive", {"estimate": -0.01, "p_adjusted": 0.049}, "reversed"),
+        ("slope", "negative", {"estimate": -0.01, "p_adjusted": 0.049}, "confirmed"),
+        ("equivalence", "same", {"estimate": 0.001, "p_adjusted": 0.049}, "confirmed"),
         ("equivalence", "same",
-         {"estimate": 0.03, "p_adjusted": 0.6, "p_difference_adjusted": 0.049}, "opposite"),
+         {"estimate": 0.03, "p_adjusted": 0.6, "p_difference_adjusted": 0.049}, "reversed"),
         ("equivalence", "same",
          {"estimate": 0.03, "p_adjusted": 0.6, "p_difference_adjusted": 0.051}, "not shown"),
-        ("none", "absent", {"estimate": np.nan}, "not testable here"),
-        ("slope", "positive", {"estimate": np.nan, "p_adjusted": np.nan}, "not testable here"),
+        ("none", "absent", {"estimate": np.nan}, "not assessable"),
+        ("slope", "positive", {"estimate": np.nan, "p_adjusted": np.nan}, "not assessable"),
         ("slope", "positive", {"estimate": 0.01, "p_adjusted": 0.001,
                                "in_view_established": False}, "not assessable"),
     ],

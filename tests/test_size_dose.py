@@ -938,20 +938,18 @@ def test_the_size_verdict_words_follow_their_holm_tests():
 
     row = {"estimate": -0.03, "p": 0.001, "p_holm": 0.01}
     assert words.verdict_word(row) == "reversed"
-    assert words.verdict_word(row | {"estimate": 0.03}) == "reproduced"
+    assert words.verdict_word(row | {"estimate": 0.03}) == "confirmed"
     # a raw p under 0.05 that Holm lifts above it: not shown, whatever the raw interval
     assert words.verdict_word(row | {"p": 0.01, "p_holm": 0.2}) == "not shown"
-    assert words.verdict_word(row | {"p": float("nan"), "p_holm": float("nan")}) == "not testable"
+    assert words.verdict_word(row | {"p": float("nan"), "p_holm": float("nan")}) == "not assessable"
     assert text.size_part_word("size", row) == "reversed"
-    assert text.size_part_word("grip_distance", row | {"estimate": 0.03}) == (
-        "carries part of it, the paper's way"
-    )
-    assert text.size_part_word("dose", row) == "moves it against the paper"
+    assert text.size_part_word("grip_distance", row | {"estimate": 0.03}) == "confirmed"
+    assert text.size_part_word("dose", row) == "reversed"
     assert text.size_part_word("dose", row | {"p_holm": 0.2}) == "not shown"
-    assert text.carrier("reproduced", "reversed").startswith("both parts are shown")
+    assert text.carrier("confirmed", "reversed").startswith("both parts are shown")
     assert text.carrier("reversed", "not shown").startswith("only size's own part")
-    assert text.carrier("not shown", "reproduced").startswith("only the grips' distance's part")
-    assert text.carrier("not testable", "not shown").startswith("the design cannot tell")
+    assert text.carrier("not shown", "confirmed").startswith("only the grips' distance's part")
+    assert text.carrier("not assessable", "not shown").startswith("the design cannot tell")
     assert text.named_measures(["demo_path_length", "demo_grip_distance"]) == (
         "the path length and the grips' distance"
     )
@@ -962,7 +960,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     """The chapter's values from this build's study tables; a flipped estimate or a lifted p
     changes the words (the verdicts, and which part carries the size effect), and every verdict
     names the numbers it rests on."""
-    from icub_workflow.book import pages, text, words
+    from icub_workflow.book import pages, text
 
     folder = REPO / "data" / "size_dose"
     if not (folder / "declared.csv").exists():
@@ -998,10 +996,7 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
         return frame
 
     flipped, _ = chapter(declared=negate)
-    turned = {"reversed": "reproduced", "reproduced": "reversed"}
-    for test in ("grip_distance", "dose"):
-        ways = words.SIZE_PART_WORDS[test]
-        turned |= {ways["reproduced"]: ways["reversed"], ways["reversed"]: ways["reproduced"]}
+    turned = {"reversed": "confirmed", "confirmed": "reversed"}
     changed = 0
     for row in declared.to_dict("records"):
         at = "contrast" if row["test"] == "dose" else row["dose"].replace(".", "")

@@ -16,10 +16,28 @@ from icub_workflow.book import words
 
 SCIENCE = REPO / "src" / "icub_affordance"
 #: Every verdict word the book uses (issue 58), and the phrases it builds from them.
-VERDICT_WORDS = {
-    "reproduced", "confirmed", "reversed", "shown", "not shown", "opposite", "not assessable",
-    "not testable", "not testable here", "shown, opposite", "same direction",
-}  # fmt: skip
+#: ("equivalent" is also the readings' difference code, which the science package writes.)
+VERDICT_WORDS = (set(words.VERDICTS) - {words.EQUIVALENT}) | set(words.RETIRED)
+VERDICT_WORDS |= {"shown", "not testable here", "same direction"}
+
+
+def test_the_book_has_five_verdict_words():
+    """Issue 69: every verdict the book and the result tables hold is one of the five words the
+    front page defines; a confirmed difference between two readings, which nobody predicts, is
+    said by its sign."""
+    assert len(words.VERDICTS) == 5
+    for table in (
+        words.CLAIM_WORDS,
+        words.EQUIVALENCE_WORDS,
+        words.SAME_WORD,
+        words.BAR_WORDS,
+        words.READING_WORDS,
+        words.SIGNATURE_WORDS,
+        words.CLAIM_OUTCOME_WORDS,
+    ):
+        assert set(table.values()) <= set(words.VERDICTS), table
+    assert set(words.DIFFERENCE_WORDS.values()) <= set(words.VERDICTS) | {"larger", "smaller"}
+    assert not set(words.RETIRED) & set(words.VERDICTS)
 
 
 def science_modules() -> list:
@@ -41,7 +59,7 @@ def docstrings(tree: ast.AST) -> set[int]:
 def verdict_strings(source: str, keys: bool = True) -> list[tuple[int, str]]:
     """Each string constant in ``source`` outside its docstrings that is a verdict word: returned,
     compared with, or held in a constant alike, with its line; with ``keys`` False, not one that
-    only names an entry (``values["shown"]``)."""
+    only names an entry (``values["confirmed"]``)."""
     tree = ast.parse(source)
     skip = docstrings(tree)
     if not keys:
@@ -86,7 +104,7 @@ BOOK = [
 
 @pytest.mark.parametrize("path", [p for p in BOOK if p.name != "words.py"], ids=lambda p: p.name)
 def test_the_rest_of_the_book_layer_names_its_verdict_words_from_the_words_module(path):
-    """One module spells every verdict word: changing what "reproduced" reads is one edit."""
+    """One module spells every verdict word: changing what "confirmed" reads is one edit."""
     assert verdict_strings(path.read_text(), keys=False) == [], "name it from book.words"
 
 
@@ -114,11 +132,11 @@ def test_the_scans_catch_what_they_look_for():
     """Each scan finds a regression of the kind it guards against, and passes over a docstring."""
     returned = 'def f(p):\n    """Is "reversed" or "not shown"."""\n    return "Not shown"\n'
     assert verdict_strings(returned) == [(3, "Not shown")]
-    held = 'WORDS = {"paper": "confirmed"}\nif x == "opposite":\n    pass\n'
-    assert [w for _, w in verdict_strings(held)] == ["confirmed", "opposite"]
+    held = 'WORDS = {"paper": "confirmed"}\nif x == "reversed":\n    pass\n'
+    assert [w for _, w in verdict_strings(held)] == ["confirmed", "reversed"]
     assert verdict_strings('CODES = ("paper", "against", "none")\n') == []
-    assert verdict_strings('values["shown"] = 1\n', keys=False) == []
-    assert verdict_strings('values["shown"] = "shown"\n', keys=False) == [(1, "shown")]
+    assert verdict_strings('values["confirmed"] = 1\n', keys=False) == []
+    assert verdict_strings('values["confirmed"] = "confirmed"\n', keys=False) == [(1, "confirmed")]
     assert book_imports("from icub_workflow.book import words\n") == ["icub_workflow.book"]
     assert book_imports("def f():\n    import icub_workflow.book.text\n") == [
         "icub_workflow.book.text"
@@ -138,10 +156,10 @@ def test_every_outcome_a_table_or_a_page_reads_has_its_words():
 
     assert words.DIFFERENCE_WORDS[NOT_ASSESSABLE] == words.NOT_ASSESSABLE
     assert words.direction_codes([1, -1, 0, 2]) == ["paper", "reversed", "none", "not assessable"]
-    assert words.signature_words(["", Outcome.AGAINST]) == ["", "opposite"]
+    assert words.signature_words(["", Outcome.AGAINST]) == ["", "reversed"]
     # the words read the science package's one significance level
     from icub_affordance.analysis.verdicts import ALPHA
 
     assert words.ALPHA == ALPHA
-    assert words.verdict_word({"estimate": 1.0, "p": ALPHA * 0.99}) == "reproduced"
+    assert words.verdict_word({"estimate": 1.0, "p": ALPHA * 0.99}) == "confirmed"
     assert words.verdict_word({"estimate": 1.0, "p": ALPHA}) == "not shown"

@@ -73,9 +73,9 @@ def _holm(row, column: str = "p_holm") -> str:
     if np.isfinite(row[column]):
         return f"{row[column]:.2g}"
     if not np.isfinite(row["diff"]):
-        return "not estimable"
+        return words.NOT_ASSESSABLE
     if readings_science.is_hypothesis(row["measure"]):
-        return "identical" if str(row.get("identical")) == "True" else "no variation"
+        return "identical" if str(row.get("identical")) == "True" else "constant"
     return "not a hypothesis" if readings_science.is_null_control(row["measure"]) else "by excess"
 
 
@@ -88,8 +88,8 @@ def _family(table: pd.DataFrame, column: str = "family", p: str = "p_holm") -> s
 
 def _shown(table: pd.DataFrame, test, said: Mapping) -> pd.DataFrame:
     """The readings' tests with what the page shows beside their numbers: the reading's name, the
-    verdict word (``test``'s code in ``said``'s words; "not estimable": too few replications
-    answered, never tested), why no Holm p."""
+    verdict word (``test``'s code in ``said``'s words; "not assessable": too few
+    replications answered, never tested), why no Holm p."""
     compared = "comparison" in table
     verdicts = table.apply(test, axis=1).map(lambda code: said.get(code, code))
     verdicts = verdicts.where(table["measure"].map(readings_science.is_hypothesis), "")
@@ -98,7 +98,7 @@ def _shown(table: pd.DataFrame, test, said: Mapping) -> pd.DataFrame:
         named=named.replace(text.CUE_LABELS).agg(" · ".join, axis=1),
         label=table["measure"].map(text.MEASURE_LABELS), holm=table.apply(_holm, axis=1),
         hypothesis=table["measure"].map(readings_science.is_hypothesis),
-        verdict=verdicts.where(table["diff"].notna(), "not estimable"))  # fmt: skip
+        verdict=verdicts.where(table["diff"].notna(), words.NOT_ASSESSABLE))  # fmt: skip
 
 
 def readings(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
@@ -187,18 +187,18 @@ def _misses(counts: Mapping[str, tuple[int, int]]) -> str:
 
 def robot_verdict(effect: dict, measure: str, factor: str) -> str:
     """One robot effect against the paper (Holm within the robot's family); the congruency x
-    size term, with no paper direction, is "shown" or not where a contrast tests it. A shown
+    size term, with no paper direction, is "confirmed" or not where a contrast tests it. A shown
     effect that one cell carries (``carrying_cell``) is named as that cell, not as an effect."""
     test = effect["tests"][factor]
     if factor == INTERACTION:
-        word = words.shown_word(test) if test["method"] == "contrasts" else "not tested"
+        word = words.shown_word(test) if test["method"] == "contrasts" else words.NOT_ASSESSABLE
     else:
         verdict = science.robot_effect_verdict(effect, measure, factor)
         if verdict is None or not verdict.significant:
             return words.robot_word(None if verdict is None else verdict.paper_direction, False)
         word = words.robot_word(verdict.paper_direction, True)
     cell = carrying_cell(effect)
-    if cell is None or word not in (words.REPRODUCED, words.REVERSED, words.SHOWN):
+    if cell is None or word not in (words.CONFIRMED, words.REVERSED):
         return word
     others = [c["mean"] for name, c in effect["cells"].items() if name != cell]
     return text.one_cell(cell, measure, effect["cells"][cell]["mean"] < np.nanmean(others))
@@ -250,7 +250,7 @@ def _robot_values(emb: dict, own: dict) -> dict:
         ("beyond.emb_categorisation_success",),
     )
     for effect, where in (("congruency", "when incongruent"), ("size", "for small objects")):
-        phrases = {words.REPRODUCED: f"larger {where}", words.REVERSED: f"smaller {where}",
+        phrases = {words.CONFIRMED: f"larger {where}", words.REVERSED: f"smaller {where}",
                    words.NOT_SHOWN: "not shown to differ"}  # fmt: skip
         term = (err["contrasts"] or {}).get(effect) or {}
         out |= text.test_values("beyond", f"emb_final_error_{effect}", term, words=phrases)
@@ -282,7 +282,7 @@ def beyond(inputs: Mapping[str, str], config: dict, ablation_cue: str) -> tuple[
         "@goal_response & replications == 1", local_dict=config["soms"])  # fmt: skip
     difference |= (row[["p_holm", "family"]].to_dict("records") or [{"family": FAMILY_NONE}])[0]
     out |= {f"cue_difference_{k}": difference[k] for k in ("df", "t")}
-    phrases = {words.REPRODUCED: "larger with the cue at the first step only",
+    phrases = {words.CONFIRMED: "larger with the cue at the first step only",
                words.REVERSED: "larger with the cue at every step",
                words.NOT_SHOWN: "not shown to differ between the timings"}  # fmt: skip
     out |= text.test_values("beyond", "cue_difference", difference, words=phrases)

@@ -228,7 +228,7 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
                      "chapter": chapter})  # fmt: skip
 
     end = float(learning["end"].mean())
-    learnt = words.REPRODUCED if end <= PAPER_FINAL_RMSE else words.NOT_SHOWN
+    learnt = words.CONFIRMED if end <= PAPER_FINAL_RMSE else words.NOT_SHOWN
     learn = {"score_learn_start": float(learning["start"].mean()), "score_learn_end": end,
              "score_learn_end_low": float(learning["end"].min()),
              "score_learn_end_high": float(learning["end"].max()),

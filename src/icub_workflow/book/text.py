@@ -12,10 +12,11 @@ from icub_affordance.trials.scores import LABELS
 from .words import (
     AFTER_RESULTS,
     CLAIM_WORDS,
+    CONFIRMED,
+    NOT_ASSESSABLE,
     NOT_SHOWN,
     NOT_TESTABLE,
     PART_DIRECTIONS,
-    REPRODUCED,
     REVERSED,
     SIZE_PART_WORDS,
     verdict_word,
@@ -93,7 +94,7 @@ def reading_claims(shown) -> dict[str, Claim | str]:
     the paper's way on Holm's p (``paper_<measure>_<effect>``)."""
     out = {}
     for measure, rows in shown[shown["hypothesis"]].groupby("measure", sort=False):
-        paper = rows[rows["verdict"] == REPRODUCED].groupby("named")["effect"].agg(set)
+        paper = rows[rows["verdict"] == CONFIRMED].groupby("named")["effect"].agg(set)
         for effects in (("congruency",), ("size",), ("congruency", "size")):
             chosen = [n for n in rows["named"].unique() if set(effects) <= paper.get(n, set())]
             said = "every reading" if len(chosen) == rows["named"].nunique() else chosen
@@ -121,9 +122,11 @@ def difference_claims(shown, comparison: str, prefix: str) -> dict[str, Claim | 
     out: dict[str, Claim | str | int] = {f"{prefix}_n": len(rows)}
     changed = rows[rows["verdict"].isin(["larger", "smaller"])]
     out[f"{prefix}_changes"] = _claim(rows, stats, effects(changed))
-    for word in ("larger", "smaller", "equivalent", "identical", "not estimable", NOT_SHOWN,
+    for word in ("larger", "smaller", "equivalent", "identical", NOT_ASSESSABLE, NOT_SHOWN,
                  AFTER_RESULTS):  # fmt: skip
-        name = "equivalent_after" if word == AFTER_RESULTS else word.replace(" ", "_")
+        name = {AFTER_RESULTS: "equivalent_after", NOT_ASSESSABLE: "not_estimable"}.get(
+            word, word.replace(" ", "_")
+        )
         out[f"{prefix}_n_{name}"] = _claim(
             rows, stats, str((rows["verdict"] == word).sum()))  # fmt: skip
     for word in ("larger", "smaller"):

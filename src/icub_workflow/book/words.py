@@ -1,8 +1,9 @@
 """Every verdict word the book uses, and the threshold the words read: the one place that says
-what "reproduced", "confirmed", "reversed", "shown", "opposite", "not shown" and "not assessable"
-mean. The science package returns numbers, flags and ``Outcome`` codes
-(``icub_affordance.outcome``); this module puts the words on them, for the pages and for the
-result tables that hold words (the claims' and the signatures' summaries)."""
+what "confirmed", "reversed", "not shown", "equivalent" and "not assessable" mean (the book's
+five verdict words, ``VERDICTS``; the front page defines them once). The science package
+returns numbers, flags and ``Outcome`` codes (``icub_affordance.outcome``); this module
+puts the words on them, for the pages and for the result tables that hold words (the claims'
+and the signatures' summaries)."""
 
 from __future__ import annotations
 
@@ -13,52 +14,63 @@ from icub_affordance.analysis.verdicts import ALPHA
 from icub_affordance.outcome import Outcome
 
 #: The verdict words themselves, each spelled once: the rest of the book layer names them here.
-REPRODUCED, CONFIRMED, REVERSED = "reproduced", "confirmed", "reversed"
-SHOWN, NOT_SHOWN, OPPOSITE = "shown", "not shown", "opposite"
-NOT_ASSESSABLE, NOT_TESTABLE = "not assessable", "not testable"
+#: Confirmed: a test finds its difference (adjusted p below ``ALPHA``) in the direction it names
+#: (the paper's, people's, or for a difference nobody predicts, the sign shown beside it);
+#: reversed: found, the other way; not shown: not found, which is not "no difference"; equivalent:
+#: a difference shown within a margin declared before its result; not assessable: no test could
+#: be made (too few replications, no variation, a question the model cannot pose).
+CONFIRMED, REVERSED, NOT_SHOWN = "confirmed", "reversed", "not shown"
+EQUIVALENT, NOT_ASSESSABLE = "equivalent", "not assessable"
+VERDICTS = (CONFIRMED, REVERSED, NOT_SHOWN, EQUIVALENT, NOT_ASSESSABLE)
+#: The words the book once used for these, each now one of ``VERDICTS`` (a test keeps them out).
+RETIRED = ("reproduced", "shown, opposite", "opposite", "not known", "falls short",
+           "not testable", "not estimable", "no variation", "carries part of it", "moves it",
+           "not shown equivalent")  # fmt: skip
+#: Older names of the same words, kept for the code that reads them.
+REPRODUCED = SHOWN = CONFIRMED
+NOT_TESTABLE = NOT_ASSESSABLE
 #: The robot rows of the scorecard: the bar (``verdicts.GRASPS``) against the 95% interval of
-#: the share held.
-BAR_WORDS = {"above": SHOWN, "includes": "not known", "below": "falls short"}
+#: the share held; an interval wholly below the bar is "not shown" too (the interval is beside).
+BAR_WORDS = {"above": CONFIRMED, "includes": NOT_SHOWN, "below": NOT_SHOWN}
 
 # -- a test's p against ALPHA, on the side of its estimate -------------------------------------
 
 
 def verdict_word(term: Mapping, alpha: float = ALPHA) -> str:
-    """A test in the paper's direction (a positive estimate) is "reproduced", against it
+    """A test in the paper's direction (a positive estimate) is "confirmed", against it
     "reversed", where its p adjusted within its family is below ``alpha``; else "not shown"
-    (which is not "no difference") or, with no p, "not testable"."""
+    (which is not "no difference") or, with no p, "not assessable"."""
     p = term.get("p_holm", term["p"])
     if not math.isfinite(p):
-        return "not testable"
+        return NOT_ASSESSABLE
     if p >= alpha:
-        return "not shown"
-    return "reproduced" if term["estimate"] > 0 else "reversed"
+        return NOT_SHOWN
+    return CONFIRMED if term["estimate"] > 0 else REVERSED
 
 
 def shown_word(term: Mapping, alpha: float = ALPHA) -> str:
-    """A difference the paper does not predict: "shown" or "not shown"; its sign is beside it."""
+    """A difference the paper does not predict: "confirmed" or "not shown"; its sign is beside
+    it."""
     word = verdict_word(term, alpha)
-    return "shown" if word in ("reproduced", "reversed") else word
+    return CONFIRMED if word in (CONFIRMED, REVERSED) else word
 
 
 def claim_verdict(term: Mapping, outcome: str, effect: str) -> str:
-    """The paper's two effects, on its measure and on correct trials, are "reproduced" or not; it
-    claims nothing of errors ("shown", "shown, opposite") or the required grip ("shown")."""
-    word = verdict_word(term)
+    """The paper's two effects, on its measure and on correct trials, are "confirmed" or not;
+    errors are read in the effect's direction (more errors where slower), the required grip,
+    which has none, by its sign."""
     if effect == "congruency:size":
         return shown_word(term)
-    if outcome == "errors":
-        return {"reproduced": "shown", "reversed": "shown, opposite"}.get(word, word)
-    return word
+    return verdict_word(term)
 
 
 def robot_word(paper_direction: bool | None, significant: bool) -> str:
     """A robot effect's verdict (``verdicts.robot_effect_verdict``'s flags; None: no test)."""
     if paper_direction is None:
-        return "not estimable"
+        return NOT_ASSESSABLE
     if not significant:
-        return "not shown"
-    return "reproduced" if paper_direction else "reversed"
+        return NOT_SHOWN
+    return CONFIRMED if paper_direction else REVERSED
 
 
 def below_alpha(p: float, said: str, otherwise: str = "not shown") -> str:
@@ -79,19 +91,19 @@ CLAIM_WORDS = {"paper": "confirmed", "reversed": "reversed", "none": "not shown"
                "not assessable": "not assessable"}  # fmt: skip
 #: The words study's equivalence test (``name_effects.word_tests``), for each code of its table:
 #: ``paper`` is the name's effect shown within the margin of the image's.
-EQUIVALENCE_WORDS = {"paper": "equivalent", "none": "not shown equivalent",
-                     "not assessable": "not assessable"}  # fmt: skip
+EQUIVALENCE_WORDS = {"paper": EQUIVALENT, "none": NOT_SHOWN,
+                     "not assessable": NOT_ASSESSABLE}  # fmt: skip
 #: The words study's reactivation test (``name_effects.reactivation_tests``), for each code.
 REACTIVATION_WORDS = {
     "paper": "nearer its own object's image state than the others'",
     "reversed": "farther from its own object's image state than from the others'",
     "none": "not shown nearer its own object's image state than the others'",
-    "not assessable": "not assessable",
+    "not assessable": NOT_ASSESSABLE,
 }
 #: The same words by ``Outcome`` (the forest plot's legend).
 CLAIM_OUTCOME_WORDS = {o: CLAIM_WORDS[code] for o, code in DIRECTION_CODES.items()}
 #: A confirmatory test's direction and the exploration's verdict word that says the same.
-SAME_WORD = {"paper": "reproduced", "reversed": "reversed", "none": "not shown"}
+SAME_WORD = {"paper": CONFIRMED, "reversed": REVERSED, "none": NOT_SHOWN}
 
 
 def direction_codes(outcomes) -> list[str]:
@@ -102,11 +114,12 @@ def direction_codes(outcomes) -> list[str]:
 # -- the readings (icub_affordance.analysis.reading_tests.direction and difference_verdict) --------
 
 #: The words of ``reading_tests.direction``'s ``Outcome``.
-READING_WORDS = {Outcome.PAPER: "reproduced", Outcome.AGAINST: "reversed",
-                 Outcome.NONE: "not shown", Outcome.CONSTANT: "no variation",
-                 Outcome.NOT_ASSESSABLE: "not assessable"}  # fmt: skip
-#: The words of ``reading_tests.difference_verdict``, where they differ from its code.
-DIFFERENCE_WORDS = {"none": "not shown", "a > b": "larger", "a < b": "smaller",
+READING_WORDS = {Outcome.PAPER: CONFIRMED, Outcome.AGAINST: REVERSED,
+                 Outcome.NONE: NOT_SHOWN, Outcome.CONSTANT: NOT_ASSESSABLE,
+                 Outcome.NOT_ASSESSABLE: NOT_ASSESSABLE}  # fmt: skip
+#: The words of ``reading_tests.difference_verdict``, where they differ from its code: a
+#: confirmed difference between two readings, which nobody predicts, is said by its sign.
+DIFFERENCE_WORDS = {"none": NOT_SHOWN, "a > b": "larger", "a < b": "smaller",
                     "not_assessable": NOT_ASSESSABLE}  # fmt: skip
 #: An equivalence whose margin was set after its measure's results were read
 #: (config ``readings.margin_declared``): said so wherever it appears, never counted with the
@@ -116,9 +129,9 @@ AFTER_RESULTS = "equivalent, margin set after results"
 # -- the human signatures (icub_affordance.analysis.signature_tests.verdict) -----------------------
 
 #: A signature's verdict word for each ``Outcome``, in the order the page counts them.
-SIGNATURE_WORDS = {Outcome.PAPER: "shown", Outcome.NONE: "not shown", Outcome.AGAINST: "opposite",
-                   Outcome.NOT_ASSESSABLE: "not assessable",
-                   Outcome.NOT_TESTED: "not testable here"}  # fmt: skip
+SIGNATURE_WORDS = {Outcome.PAPER: CONFIRMED, Outcome.NONE: NOT_SHOWN, Outcome.AGAINST: REVERSED,
+                   Outcome.NOT_ASSESSABLE: NOT_ASSESSABLE,
+                   Outcome.NOT_TESTED: NOT_ASSESSABLE}  # fmt: skip
 
 
 def signature_words(codes) -> list:
@@ -129,17 +142,11 @@ def signature_words(codes) -> list:
 
 # -- the size study and the sweep ------------------------------------------------------------
 
-#: The size study's declared tests' verdict words, by test, for a verdict_word: the size part
-#: against the paper's direction; the grips' distance's part and the dose contrast as what they
-#: move the natural run's size effect by.
-SIZE_PART_WORDS = {
-    "size": {},
-    "grip_distance": {"reproduced": "carries part of it, the paper's way",
-                      "reversed": "carries part of it, against the paper"},
-    "dose": {"reproduced": "moves it the paper's way", "reversed": "moves it against the paper"},
-}  # fmt: skip
+#: The size study's declared tests' verdict words, by test, for a verdict_word: every part and
+#: the dose contrast say "confirmed" where they move the size effect the paper's way.
+SIZE_PART_WORDS: dict[str, dict[str, str]] = {"size": {}, "grip_distance": {}, "dose": {}}
 #: A shown part's direction, from its verdict word.
-PART_DIRECTIONS = {"reproduced": "the paper's way", "reversed": "against the paper"}
+PART_DIRECTIONS = {CONFIRMED: "the paper's way", REVERSED: "against the paper"}
 #: An effect over the sweep's replications by its 95% interval (verdicts.interval_direction).
 SWEEP_DIRECTIONS = {"paper": "paper's way", "against": "against", "unclear": "includes 0",
                     "single": "one replication"}  # fmt: skip
