@@ -66,6 +66,7 @@ include: "workflow/rules/robot.smk"
 include: "workflow/rules/statistics.smk"
 include: "workflow/rules/signatures.smk"
 include: "workflow/rules/words.smk"
+include: "workflow/rules/distractor.smk"
 include: "workflow/rules/book.smk"
 include: "workflow/rules/sweep.smk"
 include: "workflow/rules/benchmark.smk"
@@ -76,6 +77,8 @@ include: "workflow/rules/benchmark.smk"
 # (RunPlan.built, common.smk: run_outputs) and every output of a rule without wildcards, but the
 # sweep's summary, which only `robustness=True` (or the target `sweep`) asks for.
 ON_REQUEST = () if config["robustness"] else ("sweep_summary", "sweep_figure")
+# the distractor's tests, declared before any result: made only when config distractor.run is
+ON_REQUEST += () if config["distractor"]["run"] else ("distractor",)
 DEFAULT_OUTPUTS = list(
     dict.fromkeys(
         [

@@ -69,3 +69,58 @@ def test_every_pair_grip_and_compatibility():
         cells = rows.groupby(["congruent", "compatible"]).size()
         assert len(cells) == 4
 
+
+def _trials_with(congruency: float, compatibility: float, seed: int) -> pd.DataFrame:
+    """Stand-in distractor trials whose RMSE carries known effects, plus noise and a network
+    offset (the real design: every target x other object under each mapping)."""
+    m = synthetic_materials()
+    weights = Weights.init(10, 0.5, np.random.default_rng(3))
+    rows = []
+    for net, mapping in enumerate(("A", "A", "B", "B")):
+        rows += distractor_trials(m, weights, net, mapping, "first_step", "sensed", [0.0, 0.5])
+    df = pd.DataFrame(rows)
+    rng = np.random.default_rng(seed)
+    incongruent = df["congruent"].astype(str) != "True"
+    df["rmse"] = (
+        0.1 + 0.01 * df["network"] + congruency * incongruent
+        + compatibility * ~df["compatible"] + rng.normal(0, 1e-4, len(df))
+    )  # fmt: skip
+    df["wrong_grip"] = 0
+    return df.assign(cue="first_step")
+
+
+def test_the_fit_recovers_both_effects_and_the_families_hold():
+    """Per replication the fit returns the effects put in (the cells weighed equally, the
+    network's offset absorbed); the summary tests weights above 0 in the declared family alone
+    (Holm over its tests), none at 0."""
+    from icub_affordance.analysis.distractor_tests import replication_estimates, summary
+
+    trials = pd.concat(
+        [_trials_with(0.02, -0.01, seed).assign(replication=seed) for seed in range(3)]
+    )
+    estimates = replication_estimates(trials, ["rmse", "rmse_correct"])
+    got = estimates.groupby("effect")["estimate"].mean()
+    assert got["congruency"] == pytest.approx(0.02, abs=1e-3)
+    assert got["compatibility"] == pytest.approx(-0.01, abs=1e-3)
+    declaration = {
+        "alpha": 0.05, "family": "declared", "inhibition_family": "explored",
+        "human": {"congruency": {"colour": "positive", "location": "positive"},
+                  "compatibility": {"colour": "negative", "location": "none"}},
+    }  # fmt: skip
+    table = summary(estimates, declaration, 2)
+    assert set(table["lam"]) == {0.5} and set(table["family"]) == {"declared"}
+    assert (table["family_size"] == 8).all()  # 2 modes x 1 weight x 2 measures x 2 effects
+    assert (table["direction"] == np.where(table["effect"] == "congruency", 1, -1)).all()
+
+
+def test_the_declaration_is_checked():
+    """The distractor's measures must be the confirmation's."""
+    from conftest import load_config
+
+    from icub_workflow.config_checks import ConfigError, check_config
+
+    config = load_config()
+    check_config(config)
+    config["distractor"]["measures"] = ["rmse"]
+    with pytest.raises(ConfigError, match="distractor.measures"):
+        check_config(config)

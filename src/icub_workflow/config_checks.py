@@ -211,6 +211,25 @@ def _signature_problems(entries: list[Mapping[str, Any]], key) -> Iterator[str]:
             yield f"{where}: {name} {need}. Fix: {'add' if has_levels else 'remove'} them."
 
 
+def _distractor_problems(config: Mapping[str, Any], key) -> Iterator[str]:
+    """The distractor's tests are declared on the confirmation's measures, and its two families
+    are apart from each other and from the confirmation's (Holm within each alone)."""
+    from icub_affordance.analysis.paper_claims import FAMILY
+
+    declared = config["distractor"]
+    if list(declared["measures"]) != list(config["confirmation"]["measures"]):
+        yield (
+            f"{key('distractor.measures')}: {declared['measures']} are not the confirmation's "
+            f"measures {config['confirmation']['measures']}. Fix: declare the same list."
+        )
+    names = [declared["family"], declared["inhibition_family"], FAMILY]
+    if len(set(names)) < len(names):
+        yield (
+            f"{key('distractor.family')}: the declared family, the inhibition's and the "
+            "confirmation's need three different names. Fix: rename one."
+        )
+
+
 def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
     """Every rule between keys that `config` breaks, one message each."""
 
@@ -219,6 +238,7 @@ def _problems(config: Mapping[str, Any], prefix: str) -> Iterator[str]:
 
     yield from _signature_problems(config["signatures"]["list"], key)
     yield from _claims_problems(config, key)
+    yield from _distractor_problems(config, key)
 
     network = config["network"]
     iterations, phase1 = network["iterations"], network["phase1_iterations"]
