@@ -9,7 +9,14 @@ import pandas as pd
 import pytest
 from scipy import stats as sps
 
-from icub_affordance.analysis.contact import FAMILY, cell_counts, contact_time_tests
+from icub_affordance.analysis.contact import (
+    ADDED_FAMILY,
+    FAMILY,
+    cell_counts,
+    congruency_split,
+    contact_time_tests,
+)
+from icub_affordance.analysis.statistics import holm
 from icub_affordance.outcome import Outcome
 
 DECLARATION = {"effect": "congruency", "alpha": 0.05, "min_networks": 3}
@@ -17,9 +24,16 @@ DECLARATION = {"effect": "congruency", "alpha": 0.05, "min_networks": 3}
 CONGRUENT = {"A": {"big_ball", "small_cube"}, "B": {"small_ball", "big_cube"}}
 
 
-def made_up(shift: float = 0.1, untouched: int = 1, networks: int = 8, seed: int = 0):
+def made_up(
+    shift: float = 0.1,
+    untouched: int = 1,
+    networks: int = 8,
+    seed: int = 0,
+    shift_b: float | None = None,
+):
     """Two sequences per network x object (one movement: the same physics), incongruent trials
-    ``shift`` seconds slower, a network's own offset; the first ``untouched`` networks never
+    ``shift`` seconds slower (``shift_b`` under mapping B, where given), a network's own offset;
+    the first ``untouched`` networks never
     touch the incongruent small object (no contact time there)."""
     rng = np.random.default_rng(seed)
     rows = []
@@ -29,13 +43,17 @@ def made_up(shift: float = 0.1, untouched: int = 1, networks: int = 8, seed: int
         for obj in ("big_ball", "small_ball", "big_cube", "small_cube"):
             congruent = obj in CONGRUENT[mapping]
             size = "large" if obj.startswith("big") else "small"
-            time = 1.5 + offset + (0 if congruent else shift) + rng.normal(0, 0.02)
+            slower = shift if shift_b is None or mapping == "A" else shift_b
+            time = 1.5 + offset + (0 if congruent else slower) + rng.normal(0, 0.02)
             if net < untouched and not congruent and size == "small":
                 time = np.nan
             for sequence in (0, 1):
                 rows.append({"run": "fresh", "network": net, "mapping": mapping,
                              "task": "categorisation", "object": obj, "size": size,
                              "congruent": congruent, "sequence": sequence,
+                             "category": "natural" if "ball" in obj else "artefact",
+                             "target_grip": "power" if (mapping == "A") == ("ball" in obj)
+                             else "precision",
                              "contact_time": time, "success": True})  # fmt: skip
     return pd.DataFrame(rows)
 
@@ -82,3 +100,29 @@ def test_the_cells_count_distinct_trials_and_those_that_touched():
     assert (cells["trials"] == 8).all()  # one per network, not one per sequence
     assert cells.loc[("incongruent", "small"), "touched"] == 5
     assert cells.loc[("congruent", "small"), "networks_touched"] == 8
+
+
+def test_the_split_by_mapping_and_object_adds_up_to_the_declared_estimate():
+    """Added after results (issue 70): the declared estimate is the mean of the two mappings'
+    rows, each mapping's the mean of its two objects' rows, each object incongruent once."""
+    trials = made_up(shift=0.0, shift_b=0.2, networks=10)
+    declared = contact_time_tests(trials, DECLARATION).iloc[0]
+    split = congruency_split(trials, DECLARATION)
+    assert (split["family"] == ADDED_FAMILY).all() and "added after results" in ADDED_FAMILY
+    assert split["p_holm"].to_numpy() == pytest.approx(holm(split["p"]))
+    mapping = split[split["split"] == "mapping"].set_index("mapping")
+    assert mapping["estimate"].mean() == pytest.approx(declared["estimate"])
+    assert mapping["networks"].sum() == declared["networks_tested"] == 9
+    assert dict(mapping["natural_grip"]) == {"A": "power", "B": "precision"}
+    objects = split[split["split"] == "mapping x size"]
+    assert sorted(objects["object"]) == ["big_ball", "big_cube", "small_ball", "small_cube"]
+    for m, rows in objects.groupby("mapping"):
+        assert rows["estimate"].mean() == pytest.approx(mapping.loc[m, "estimate"])
+        assert not set(rows["object"]) & CONGRUENT[m] and set(rows["versus"]) == CONGRUENT[m]
+    # only mapping B is slower when incongruent: its row shows it, A's does not
+    assert mapping.loc["B", "direction"] == Outcome.PAPER
+    assert mapping.loc["A", "direction"] == Outcome.NONE
+    between = split[split["split"] == "congruency x mapping"].iloc[0]
+    assert between["estimate"] == pytest.approx(mapping.loc["B", "estimate"]
+                                                - mapping.loc["A", "estimate"])  # fmt: skip
+    assert between["df"] == declared["df"]  # the declared fit's own term

@@ -43,6 +43,7 @@ BOOK_DATA = {
     "robot_confirmation.csv": "data/embodied/confirmation.csv",
     "robot_contact_time.csv": "data/embodied/contact_time.csv",
     "robot_contact_time_cells.csv": "data/embodied/contact_time_cells.csv",
+    "robot_contact_time_split.csv": "data/embodied/contact_time_split.csv",
     "robot_grasps.gif": "data/figures/robot_grasps.gif",
     "robot_categorise.gif": "data/figures/robot_categorise.gif",
     "size_summary.csv": "data/size_dose/summary.csv",

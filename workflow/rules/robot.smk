@@ -163,6 +163,26 @@ rule robot_contact_time:
         "../scripts/robot_contact_time.py"
 
 
+rule robot_contact_time_split:
+    """Where the declared contact-time congruency comes from (issue 70; exploration, added after
+    results, Holm within its own family): per mapping, per mapping x size (the incongruent
+    object against the congruent one of its size) and the mappings' difference, on the declared
+    test's networks (icub_affordance.analysis.contact.congruency_split)."""
+    input:
+        trials=rules.robot_confirmation.output.trials,
+        code=script_code("robot_contact_time_split"),
+    output:
+        "data/embodied/contact_time_split.csv",
+    params:
+        declaration=settings(config["robot"]["confirmation"]["contact_time"]),
+    log:
+        "data/logs/robot/contact_time_split.log",
+    benchmark:
+        "data/benchmarks/robot_contact_time_split.tsv"
+    script:
+        "../scripts/robot_contact_time_split.py"
+
+
 rule robot_filmstrip:
     """A congruent and an incongruent categorisation trial of the same object, on the robot
     (render only)."""
