@@ -17,7 +17,14 @@ from icub_affordance.outcome import Outcome
 ANALYSIS = REPO / "src" / "icub_affordance" / "analysis"
 
 #: Every module that makes a test over replications: each on the one function.
-FAMILIES = ("paper_claims", "signature_tests", "name_effects", "reading_tests", "size_study")
+FAMILIES = (
+    "paper_claims",
+    "signature_tests",
+    "extinction_levels",
+    "name_effects",
+    "reading_tests",
+    "size_study",
+)
 #: The one function's own module, the statistics it is made of, and one run's tests over its
 #: networks (a replication's own estimate, which the families then test over replications).
 PARTS = ("replicated", "statistics", "trial_effects")

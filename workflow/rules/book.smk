@@ -57,6 +57,7 @@ BOOK_DATA = {
     "size_dose_response.png": "data/size_dose/dose_response.png",
     "signatures_summary.csv": "data/signatures/summary.csv",
     "signatures_errors.csv": "data/signatures/errors.csv",
+    "signatures_extinction_levels.csv": "data/signatures/extinction_levels.csv",
     "signatures.png": "data/signatures/signatures.png",
     "words_summary.csv": "data/words/summary.csv",
     "words_by_form.csv": "data/words/by_form.csv",

@@ -38,6 +38,28 @@ rule signatures:
         "../scripts/signatures.py"
 
 
+rule signatures_extinction:
+    """A test added after the results (family "signatures: extinction levels (exploration, added
+    after results)"): each blanking level's congruency effect less the in-view one, over the
+    replications with both, at least the one minimum, Holm within the family; its direction
+    against people's (the effect fades once the object is gone)."""
+    input:
+        trials=rules.signatures.output.trials,
+        code=script_code("signatures_extinction"),
+    output:
+        "data/signatures/extinction_levels.csv",
+    params:
+        # one minimum for every test over replications (icub_affordance.analysis.replicated)
+        least=config["confirmation"]["min_replications"],
+        alpha=config["confirmation"]["alpha"],
+    log:
+        "data/logs/signatures/extinction_levels.log",
+    benchmark:
+        "data/benchmarks/signatures/extinction_levels.tsv"
+    script:
+        "../scripts/signatures_extinction.py"
+
+
 rule signatures_figure:
     """The delta plot (the effect per reaction-time bin) and the effect against the steps the
     object was seen (plot only)."""
