@@ -71,3 +71,24 @@ def test_a_level_below_the_one_minimum_is_not_assessable():
     assert table["p"].isna().all() and (table["df"] == 0).all()
     assert set(table["direction"]) == {Outcome.NOT_ASSESSABLE}
     assert np.isfinite(table["estimate"]).all()
+
+
+def test_the_chapter_says_which_way_each_level_goes_against_people():
+    """The findings (``pages.extinction_level_values``): the levels grouped by their code's
+    words, resting on their Holm p; the numbers only of the levels with a test."""
+    from icub_workflow.book.pages import EXTINCTION_LEVEL_WORDS, extinction_level_values
+
+    rows = [(1, np.nan, Outcome.NOT_ASSESSABLE), (3, 0.03, Outcome.AGAINST),
+            (5, 0.03, Outcome.AGAINST), (7, 0.08, Outcome.NONE)]  # fmt: skip
+    levels = pd.DataFrame(
+        [{"k": k, "in_view": 0.02, "blanked": 0.03, "estimate": 0.01, "ci_low": 0.002,
+          "ci_high": 0.018, "p_holm": p, "replications": 6, "of": 10, "family": ADDED_FAMILY,
+          "direction": int(code)} for k, p, code in rows]
+    )  # fmt: skip
+    values = extinction_level_values(levels)
+    said = values["blank_levels"]
+    assert f"at k = 3 and 5 {EXTINCTION_LEVEL_WORDS[Outcome.AGAINST]}" in said.text
+    assert f"at k = 1 {EXTINCTION_LEVEL_WORDS[Outcome.NOT_ASSESSABLE]}" in said.text
+    assert said.rests_on == tuple(f"signatures.blank_k{k}_p_holm" for k in (1, 3, 5, 7))
+    assert "k = 1" not in values["blank_tested"] and "k = 7" in values["blank_tested"]
+    assert values["blank_family"] == ADDED_FAMILY and values["blank_k3_of"] == 10

@@ -24,6 +24,7 @@ from icub_affordance.analysis.trial_effects import WITHIN
 from icub_affordance.files import load_npz
 from icub_affordance.learning.maps import active_units
 from icub_affordance.learning.variants import NetworkVariant
+from icub_affordance.outcome import Outcome
 from icub_affordance.trials.scores import margin_measure
 from icub_affordance.vocabulary import MODES
 from icub_workflow.runs import MAIN
@@ -686,6 +687,41 @@ SIGNATURE_NAMES = {"grows_with_rt": "The effect grows with reaction time",
                    "brief_exposure": "A brief masked glimpse gives the same effect",
                    "advance_cueing": "No effect when the response is cued in advance"}  # fmt: skip
 
+#: The extinction levels' test, added after the results (``extinction_levels``), in words for
+#: each ``Outcome`` against people's direction: a blanked effect smaller than in view, as the
+#: effect fades in people (here: the scripts that write results import ``words``, and a
+#: word added there would rerun them).
+EXTINCTION_LEVEL_WORDS = {Outcome.PAPER: "smaller than in view, as in people",
+                          Outcome.AGAINST: "larger than in view, the opposite of people",
+                          Outcome.NONE: "not shown to differ from in view",
+                          Outcome.NOT_ASSESSABLE: words.NOT_ASSESSABLE}  # fmt: skip
+
+
+def extinction_level_values(levels: pd.DataFrame) -> dict:
+    """The extinction levels against in view, a test added after the results: each level's
+    difference, interval, Holm p within its family and replications (``blank_k{k}_...``), and
+    ``blank_levels``, the levels by which way they go against people (a ``Claim`` on their
+    Holm p)."""
+    values: dict = {"blank_family": str(levels["family"].iloc[0])}
+    said: dict[str, list[str]] = {}
+    for _, row in levels.iterrows():
+        k = int(row["k"])
+        stats = ("in_view", "blanked", "estimate", "ci_low", "ci_high", "p_holm")
+        values |= {f"blank_k{k}_{stat}": float(row[stat]) for stat in stats}
+        values |= {f"blank_k{k}_{n}": int(row[n]) for n in ("replications", "of")}
+        word = EXTINCTION_LEVEL_WORDS[Outcome(int(row["direction"]))]
+        said.setdefault(word, []).append(str(k))
+    rests = tuple(f"signatures.blank_k{int(k)}_p_holm" for k in levels["k"])
+    values["blank_levels"] = text.Claim(
+        "; ".join(f"at k = {text.listing(ks, '')} {word}" for word, ks in said.items()), rests
+    )
+    tested = levels[np.isfinite(levels["p_holm"].astype(float))]
+    values["blank_tested"] = text.listing(
+        [f"{r.estimate:+.4f} [{r.ci_low:+.4f}, {r.ci_high:+.4f}] at k = {r.k} (Holm p "
+         f"{r.p_holm:.2g}, {r.replications} of {r.of} replications)"
+         for r in tested.itertuples()], "none tested")  # fmt: skip
+    return values
+
 
 def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter "The model against what people do": each signature's verdict (a Claim on its
@@ -731,6 +767,7 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         "depend on congruency" if depends else "are not shown to depend on congruency",
         ("signatures.wrong_p_adjusted",),
     )
+    values |= extinction_level_values(pd.read_csv(inputs["signatures_extinction_levels.csv"]))
     counts = verdicts["verdict"].value_counts()
     values["shown"] = text.Claim(
         text.listing([SIGNATURE_NAMES[n].lower() for n in verdicts.loc[
