@@ -23,6 +23,7 @@ from icub_affordance.analysis.size_study import (
     FAMILY_MOTOR_ADDED,
     FAMILY_MOTOR_PLANNED,
     FAMILY_SUMMARY,
+    FAMILY_TRAJECTORY,
     NATURAL,
     POWER_COLUMNS,
     SEPARATED_COLUMNS,
@@ -39,12 +40,14 @@ from icub_affordance.analysis.size_study import (
     separate,
     separated,
     summary,
+    trajectory_geometry,
 )
 from icub_affordance.learning.grip_distance import (
     mean_final_grip_distances,
     shape_partners,
     swap_scale,
     swapped_grips,
+    trajectory_grip_distances,
 )
 from icub_affordance.learning.maps import active_units, bump, kept_whole, train_soms
 from icub_affordance.learning.size_manipulation import CONTROLS, manipulation_rows, size_free_maps
@@ -1029,3 +1032,38 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     unmoved, _ = chapter(motor=lambda f: f.assign(p_holm=0.5))
     assert unmoved["size"]["motor_found_planned"] == "none of the measures"
     assert unmoved["size"]["motor_found_added"] == "none of the measures"
+
+
+def test_the_trajectory_grip_distance_is_the_rms_over_steps_after_the_first_by_hand():
+    rng = np.random.default_rng(7)
+    demos = rng.uniform(0, 1, (4, 2, 3, 5, 16))
+    by_hand = [
+        np.mean([np.sqrt(np.mean([(demos[o, 0, s, t, d] - demos[o, 1, s, t, d]) ** 2
+                                  for t in range(1, 5) for d in range(16)]))
+                 for s in range(3)])
+        for o in range(4)
+    ]  # fmt: skip
+    np.testing.assert_allclose(trajectory_grip_distances(demos), by_hand, rtol=1e-12)
+    # the common first step does not count; the final posture alone is the declared metric
+    moved = demos.copy()
+    moved[:, 0, :, 0] += 0.3
+    np.testing.assert_allclose(trajectory_grip_distances(moved), by_hand, rtol=1e-12)
+    frame = trajectory_geometry(demos, OBJECTS)
+    assert list(frame["object"]) == list(OBJECTS)
+    np.testing.assert_allclose(frame["demo_grip_distance"], by_hand, rtol=1e-12)
+
+
+def test_the_trajectory_attribution_is_its_own_family_added_after_results():
+    assert "added after results" in FAMILY_TRAJECTORY and FAMILY_TRAJECTORY != FAMILY_DECLARED
+    rng = np.random.default_rng(3)
+    parts = pd.DataFrame(
+        [{"cue": "first_step", "dose": d, "seed": s, "measure": "rmse",
+          "size": rng.normal(0.01, 0.01), "grip_distance": rng.normal(0, 0.01),
+          "effect_natural": 0.0}
+         for d in (0.0, 0.6) for s in range(6)]
+    )  # fmt: skip
+    found = declared_tests(parts, ["size", "grip_distance"], [0.0, 0.6], 2, FAMILY_TRAJECTORY)
+    assert set(found["family"]) == {FAMILY_TRAJECTORY} and len(found) == 4
+    # Holm within these four tests alone
+    expected = multipletests(found["p"], method="holm")[1]
+    np.testing.assert_allclose(found["p_holm"], expected, rtol=1e-12)

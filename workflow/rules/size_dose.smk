@@ -91,3 +91,30 @@ rule size_dose_figure:
         "data/benchmarks/size_dose/figure.tsv"
     script:
         "../scripts/size_dose_figure.py"
+
+
+rule size_trajectory:
+    """The size study taken apart on the RMS distance between the grips' trajectories (the
+    RMSE's own scale) instead of their final postures: added after results, its own Holm
+    family, beside the declared tests (a referee's question, issue 70)."""
+    input:
+        replications=rules.size_dose.output.replications,
+        manipulation=rules.size_dose.output.manipulation,
+        demos=measured_inputs(SIZE_DEMOS),
+        code=script_code("size_trajectory"),
+    output:
+        separated="data/size_dose/trajectory_separated.csv",
+        tests="data/size_dose/trajectory_tests.csv",
+    params:
+        demos=SIZE_DEMOS,
+        table=PLAN.size_dose,
+        crossed=settings(config["size_dose"]["crossed"]),
+        doses=settings(config["size_dose"]["doses"]),
+        # the one minimum of every test over replications (analysis/replicated.py)
+        least=config["confirmation"]["min_replications"],
+    log:
+        "data/logs/size_dose/trajectory.log",
+    benchmark:
+        "data/benchmarks/size_dose/trajectory.tsv"
+    script:
+        "../scripts/size_trajectory.py"

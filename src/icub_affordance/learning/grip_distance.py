@@ -27,6 +27,16 @@ def mean_final_grip_distances(postures: np.ndarray) -> np.ndarray:
     return np.linalg.norm(final[:, 0] - final[:, 1], axis=-1)
 
 
+def trajectory_grip_distances(postures: np.ndarray) -> np.ndarray:
+    """Per object, the RMS distance between its two grips' trajectories, over steps 1 .. and
+    DoF (the RMSE's own scale, ``trials.scores.grip_distance``), the mean over sequences: the
+    size study's second metric of the grips' distance (added after results), beside the
+    declared ``mean_final_grip_distances``, which sees the final posture only."""
+    postures = np.asarray(postures, dtype=float)
+    diff = postures[:, 0, :, 1:] - postures[:, 1, :, 1:]  # (object, sequence, step, DoF)
+    return np.sqrt((diff**2).mean(axis=(2, 3))).mean(axis=1)
+
+
 def shape_partners(objects: Sequence[str]) -> list[int]:
     """Per object, the index of the other object of its shape (its category: the balls are
     the natural objects, the cubes the artefacts). Refused unless each shape has two."""
