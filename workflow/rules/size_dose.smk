@@ -95,11 +95,13 @@ rule size_dose_figure:
 
 rule size_trajectory:
     """The size study taken apart on the RMS distance between the grips' trajectories (the
-    RMSE's own scale) instead of their final postures: added after results, its own Holm
-    family, beside the declared tests (a referee's question, issue 70)."""
+    RMSE's own scale) instead of their final postures, and on both metrics which part is the
+    larger: added after results, its own Holm family, beside the declared tests (a referee's
+    question, issue 70)."""
     input:
         replications=rules.size_dose.output.replications,
         manipulation=rules.size_dose.output.manipulation,
+        separated=rules.size_dose.output.separated,
         demos=measured_inputs(SIZE_DEMOS),
         code=script_code("size_trajectory"),
     output:

@@ -2,15 +2,16 @@
 the RMS distance between the two grips' trajectories (the RMSE's own scale) in place of the
 distance between their final postures. data/size_dose/trajectory_separated.csv (per replication,
 as separated.csv) and trajectory_tests.csv (size's and the grips' distance's parts per dose and
-cue timing, Holm within their own family)."""
+cue timing, and on both metrics which part is the larger, Holm within their own family)."""
 
 import pandas as pd
 
 from icub_affordance.analysis.size_study import (
-    FAMILY_TRAJECTORY,
+    FINAL_POSTURE,
     SWAPPED,
+    TRAJECTORY,
     crossed_runs,
-    declared_tests,
+    metric_tests,
     separated,
     trajectory_geometry,
 )
@@ -30,12 +31,11 @@ with redirect_log(snakemake.log[0]):
         geometries.append(trajectory_geometry(angles, objects).assign(run=row["run"]))
     runs = crossed_runs(replications, checks, pd.concat(geometries), crossed["measure"])
     parts = separated(runs)
-    tests = declared_tests(
-        parts,
-        [t for t in crossed["tests"] if t != "dose"],  # the dose contrast has no grips' metric
+    declared_parts = pd.read_csv(snakemake.input.separated)  # the declared metric's lines
+    tests = metric_tests(
+        {TRAJECTORY: parts, FINAL_POSTURE: declared_parts},
         snakemake.params.doses,
         int(snakemake.params.least),
-        family=FAMILY_TRAJECTORY,
     )
     write_tables([(snakemake.output.separated, parts), (snakemake.output.tests, tests)])
     print(tests.to_string())

@@ -54,6 +54,12 @@ FAMILY_MOTOR_ADDED = "exploration: size study motor (added after results)"
 #: (``grip_distance.trajectory_grip_distances``), asked by a referee once the declared results
 #: were read: Holm over itself alone, never pooled with the declared family.
 FAMILY_TRAJECTORY = "exploration: size study, grips' trajectory distance (added after results)"
+#: The two metrics of the grips' distance: the declared one (between the final postures) and
+#: the one added after results (the trajectories' RMS distance).
+FINAL_POSTURE, TRAJECTORY = "final_posture", "trajectory_rms"
+#: The added test of which part is the larger: per replication |size's part| - |the grips'
+#: distance's part| (positive: size's own part the larger).
+SIZE_LARGER = "size_larger"
 
 
 #: The grips as the networks learn them: as demonstrated, or each object's at its same-shape
@@ -282,6 +288,30 @@ def declared_tests(
     out = pd.DataFrame(rows, columns=DECLARED_COLUMNS)
     out["p_holm"] = holm(out["p"].to_numpy(dtype=float)) if len(out) else []
     out["family"] = family
+    return out
+
+
+def metric_tests(
+    parts: Mapping[str, pd.DataFrame], doses: Sequence[float], least: int
+) -> pd.DataFrame:
+    """The family added after results (``FAMILY_TRAJECTORY``): on the trajectory metric
+    (``parts[TRAJECTORY]``, ``separated`` on ``trajectory_geometry``), size's and the grips'
+    distance's parts at every dose and cue timing, as the declared family tests them on the
+    final postures; and on both metrics, which part is the larger (``SIZE_LARGER``, per
+    replication |size| - |grip_distance|), since "carries most" is a difference and is said only
+    from its own test. One-sample t over the replications (``declared_tests``), Holm over the
+    whole family; ``metric`` names the grips' distance each row is on. The declared parts on the
+    final postures are not tested again here."""
+    frames = []
+    for metric, tests in ((TRAJECTORY, ["size", "grip_distance", SIZE_LARGER]),
+                          (FINAL_POSTURE, [SIZE_LARGER])):  # fmt: skip
+        frame = parts[metric]
+        frame = frame.assign(**{SIZE_LARGER: frame["size"].abs() - frame["grip_distance"].abs()})
+        found = declared_tests(frame, tests, doses, least, family=FAMILY_TRAJECTORY)
+        frames.append(found.assign(metric=metric))
+    out = pd.concat(frames, ignore_index=True)
+    out = out[["metric", *DECLARED_COLUMNS]]
+    out["p_holm"] = holm(out["p"].to_numpy(dtype=float))
     return out
 
 
