@@ -141,6 +141,9 @@ def test_each_scorecard_verdict_follows_its_test():
     assert base[SIZE] == "confirmed in 3 of 4, reversed in 1"
     assert base["score_size_size_first_step_verdict"] == "reversed"
     assert base["score_size_grips_first_step_verdict"] == "confirmed"
+    # beside the dose-0 rows: the other dose's and the dose contrast's
+    assert base["score_size_size_06_first_step_verdict"] == "confirmed"
+    assert base["score_size_dose_first_step_verdict"] == "confirmed"
     assert base["score_robot_own_verdict"] == "not shown"
     assert base["score_robot_best_verdict"] == "confirmed"
     # a signature's row shows the verdict its chapter's test gave
@@ -383,3 +386,10 @@ def test_the_declared_contact_time_row_follows_its_test_and_names_its_cells():
         assert row["verdict"] == values["score_robot_contact_verdict"].text == word
         assert "9 of 12 networks" in row["this build"]
         assert "incongruent small 9 of 12" in row["this build"]
+
+
+def test_the_scorecard_puts_each_dose_beside_the_dose_0_rows_then_the_contrast():
+    _values, table = scorecard.scorecard(*score_inputs())
+    size = table.loc[table["chapter"] == "size", "claim or question"].tolist()
+    assert len(size) == 4
+    assert "(dose 0)" in size[0] and "(dose 0.6)" in size[1] and "dose contrast" in size[3]

@@ -968,7 +968,8 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     folder = REPO / "data" / "size_dose"
     if not (folder / "declared.csv").exists():
         pytest.skip("needs the size study's crossed outputs (data/size_dose/declared.csv)")
-    names = ("declared", "crossed", "summary", "manipulation", "power", "motor", "geometry")
+    names = ("declared", "crossed", "summary", "manipulation", "power", "motor", "geometry",
+             "trajectory_tests", "trajectory_separated")  # fmt: skip
     inputs = {f"size_{name}.csv": folder / f"{name}.csv" for name in names}
     config = load_config()
     cues = config["size_dose"]["categorisation_cue"]
@@ -1032,6 +1033,29 @@ def test_the_size_chapters_verdicts_flip_with_their_statistics(tmp_path):
     unmoved, _ = chapter(motor=lambda f: f.assign(p_holm=0.5))
     assert unmoved["size"]["motor_found_planned"] == "none of the measures"
     assert unmoved["size"]["motor_found_added"] == "none of the measures"
+    # the two metrics (added after results): which part is the larger follows its own test
+    metrics = pd.read_csv(inputs["size_trajectory_tests.csv"], dtype={"dose": str})
+    assert len(tables["size_metrics"]) == len(metrics.groupby(["metric", "dose", "cue"]))
+    for larger, said in ((0.01, "size's own part is the larger"),
+                         (-0.01, "the grips' distance's part is the larger")):  # fmt: skip
+        sized, _ = chapter(
+            trajectory_tests=lambda f, x=larger: f.assign(
+                estimate=np.where(f["test"] == "size_larger", x, f["estimate"]), p_holm=0.001
+            )
+        )
+        for cue in cues:
+            for dose in ("0", "06"):
+                for metric in ("final_posture", "trajectory_rms"):
+                    assert sized["size"][f"{metric}_larger_{dose}_{cue}"] == said
+                assert sized["size"][f"metrics_differ_{dose}_{cue}"].startswith("Both metrics")
+    unshown, _ = chapter(trajectory_tests=lambda f: f.assign(p_holm=0.5))
+    assert unshown["size"]["trajectory_rms_larger_0_first_step"] == (
+        "neither part is shown to be the larger"
+    )
+    assert (
+        unshown["size"]["trajectory_rms_carrier_0_first_step"] == "the design cannot tell: "
+        "neither part is shown"
+    )
 
 
 def test_the_trajectory_grip_distance_is_the_rms_over_steps_after_the_first_by_hand():

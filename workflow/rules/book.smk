@@ -54,6 +54,8 @@ BOOK_DATA = {
     "size_manipulation.csv": "data/size_dose/manipulation.csv",
     "size_motor.csv": "data/size_dose/motor.csv",
     "size_geometry.csv": "data/size_dose/geometry.csv",
+    "size_trajectory_tests.csv": "data/size_dose/trajectory_tests.csv",
+    "size_trajectory_separated.csv": "data/size_dose/trajectory_separated.csv",
     "size_dose_response.png": "data/size_dose/dose_response.png",
     "signatures_summary.csv": "data/signatures/summary.csv",
     "signatures_errors.csv": "data/signatures/errors.csv",

@@ -18,6 +18,10 @@ from icub_affordance.analysis.robot_effects import FACTOR_LEVELS, INTERACTION, r
 from icub_affordance.analysis.size_study import (
     FAMILY_MOTOR_ADDED,
     FAMILY_MOTOR_PLANNED,
+    FAMILY_TRAJECTORY,
+    FINAL_POSTURE,
+    SIZE_LARGER,
+    TRAJECTORY,
     ranked_like_size,
 )
 from icub_affordance.analysis.trial_effects import WITHIN
@@ -610,6 +614,57 @@ def _declared_values(values: dict, declared: pd.DataFrame) -> pd.Series:
     return pd.Series(said_words, index=declared.index, dtype=object)
 
 
+def _metric_values(values: dict, metrics: pd.DataFrame) -> pd.DataFrame:
+    """The size study on the two metrics of the grips' distance (``size_study.metric_tests``,
+    added after results): each test's numbers as ``<metric>_<declared key>``, and per metric,
+    dose and cue timing which part is shown (``text.carrier``; the declared metric's is
+    ``carrier_<dose>_<cue>``) and which is the larger (``text.larger_part``). Returns the
+    chapter's table: one row per metric, cue timing and dose, with the declared metric's parts
+    read from ``values`` (``_declared_values``)."""
+    for _, row in metrics.iterrows():
+        key = f"{row['metric']}_{_declared_key(row)}"
+        values |= {f"{key}{s}": float(row[k]) for s, k in (("", "estimate"), ("_ci_low", "ci_low"),
+                   ("_ci_high", "ci_high"), ("_p_holm", "p_holm"))}  # fmt: skip
+    rows = []
+    for (metric, dose, cue), by in metrics.groupby(["metric", "dose", "cue"], sort=False):
+        at = f"{str(dose).replace('.', '')}_{cue}"
+        pre = f"{metric}_" if metric == TRAJECTORY else ""
+        parts = {t: (values[f"{pre}{t}_{at}"], values[f"{pre}{t}_{at}_p_holm"])
+                 for t in ("size", "grip_distance")}  # fmt: skip
+        if metric == TRAJECTORY:
+            values[f"{metric}_carrier_{at}"] = text.Claim(
+                text.carrier(
+                    *(
+                        words.verdict_word({"estimate": e, "p": p, "p_holm": p})
+                        for e, p in parts.values()
+                    )
+                ),
+                tuple(f"size.{metric}_{t}_{at}{s}" for t in parts for s in ("", "_p_holm")),
+            )
+        larger = by[by["test"] == SIZE_LARGER].iloc[0]
+        key = f"{metric}_{SIZE_LARGER}_{at}"
+        values[f"{metric}_larger_{at}"] = text.Claim(
+            text.larger_part(dict(larger)), (f"size.{key}", f"size.{key}_p_holm")
+        )
+        rows.append({"metric": metric, "cue": cue, "dose": dose}
+                    | {f"{t}{s}": v for t, (e, p) in parts.items()
+                       for s, v in (("", e), ("_p_holm", p))}
+                    | {"size_larger": float(larger["estimate"]),
+                       "size_larger_p_holm": float(larger["p_holm"]),
+                       "larger": values[f"{metric}_larger_{at}"].text,
+                       "family": larger["family"]})  # fmt: skip
+    places = zip(metrics["dose"], metrics["cue"], strict=True)
+    for at in dict.fromkeys(f"{str(d).replace('.', '')}_{c}" for d, c in places):
+        said = [values[f"{m}_larger_{at}"] for m in (FINAL_POSTURE, TRAJECTORY)]
+        values[f"metrics_differ_{at}"] = text.Claim(
+            "Which part is the larger thus depends on how the grips' distance is measured"
+            if said[0].text != said[1].text
+            else "Both metrics name the same part the larger",
+            tuple(r for claim in said for r in claim.rests_on),
+        )
+    return pd.DataFrame(rows)
+
+
 def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter "What drives the size effect": values, verdict words (Claims), tables."""
     summary, checks, crossed = (
@@ -678,7 +733,13 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         ) if chosen.any() else "not run in this build"  # fmt: skip
     values["like_size"] = text.named_measures(
         ranked_like_size(pd.read_csv(inputs["size_geometry.csv"])))  # fmt: skip
-    return values, {"size_tests": declared.assign(verdict=verdicts)}
+    shown = _metric_values(values, pd.read_csv(inputs["size_trajectory_tests.csv"],
+                                               dtype={"dose": str}))  # fmt: skip
+    lines = pd.read_csv(inputs["size_trajectory_separated.csv"])
+    values |= {"trajectory_gap_natural": float(lines["gap_natural"].mean()),
+               "trajectory_gap_swapped": float(lines["gap_swapped"].mean()),
+               "trajectory_family": FAMILY_TRAJECTORY}  # fmt: skip
+    return values, {"size_tests": declared.assign(verdict=verdicts), "size_metrics": shown}
 
 
 #: A signature's name in the book's words.

@@ -265,23 +265,40 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
             + "".join(f"; {int(r['estimable'])} with an estimate ({text.CLAIM_PARTS[r['mode']]}, "
                       f"{text.CLAIM_PARTS[r['cue']]})" for _, r in fewer.iterrows()),
             "index")  # fmt: skip
-    # this project's questions: the size study's declared tests at dose 0 (no size difference
-    # in the maps), under each cue timing
-    for (test, name, question), cue in itertools.product((
+    # this project's questions: the size study's declared tests, under each cue timing, at dose
+    # 0 (no size difference in the maps; its keys carry no dose), beside them at every other
+    # dose, then the dose contrast
+    doses = [d for d in dict.fromkeys(size["dose"].astype(str)) if " - " not in d]
+    for (test, name, question), cue, dose in itertools.product((
         ("size", "size", "Size's own part of the size effect, at no gap between the grips' "
                          "distances"),
         ("grip_distance", "grips", "The part of the size effect that the grips' distance "
                                    "carries"),
-    ), dict.fromkeys(size["cue"])):  # fmt: skip
-        chosen = size[(size["test"] == test) & (pd.to_numeric(size["dose"], errors="coerce") == 0)
-                      & (size["cue"] == cue)]  # fmt: skip
+        ("dose", "dose", "More size in the maps changes the size effect (dose contrast)"),
+    ), dict.fromkeys(size["cue"]), doses):  # fmt: skip
+        at = pd.to_numeric(size["dose"], errors="coerce")
+        first = float(dose) == 0
+        if test == "dose":
+            if not first:
+                continue
+            chosen = size[(size["test"] == test) & (size["cue"] == cue)]
+        else:
+            chosen = size[(size["test"] == test) & (at == float(dose)) & (size["cue"] == cue)]
         for _, row in chosen.head(1).iterrows():
-            prefix = f"score_size_{name}_{cue}"
+            where = "" if first or test == "dose" else f"{dose.replace('.', '')}_"
+            prefix = f"score_size_{name}_{where}{cue}"
             values_, cell = _tested(prefix, row)
             word = text.size_part_word(test, dict(row))
             values_[f"{prefix}_verdict"] = text.Claim(word, (f"index.{prefix}_estimate",
                                                              f"index.{prefix}_p_holm"))  # fmt: skip
-            claim = f"{question}; maps without size (dose 0), {text.CLAIM_PARTS[cue]}, closed loop"
+            maps = (
+                "natural runs, dose " + str(row["dose"])
+                if test == "dose"
+                else "maps without size (dose 0)"
+                if first
+                else f"size in the maps (dose {dose})"
+            )
+            claim = f"{question}; {maps}, {text.CLAIM_PARTS[cue]}, closed loop"
             scale = f"{int(row['replications'])} replications × {networks} networks"
             add(prefix, (values_, cell), claim, "not asked", scale, "size")
     own = variants[variants["run"] == variants["run"].iloc[0]].iloc[0]

@@ -169,6 +169,18 @@ def carrier(size_word: str, grip_word: str) -> str:
     return "the design cannot tell: neither part is shown"
 
 
+def larger_part(term: dict) -> str:
+    """Which part of the size effect is the larger, from the test of |size's part| - |the grips'
+    distance's part| over the replications (positive: size's own): said only where that
+    difference is shown."""
+    word = verdict_word(term)
+    if word == REPRODUCED:
+        return "size's own part is the larger"
+    if word == REVERSED:
+        return "the grips' distance's part is the larger"
+    return "neither part is shown to be the larger"
+
+
 def named_measures(measures) -> str:
     """The demonstrations' measures named in short, joined by "and"."""
     return listing((f"the {GEOMETRY_SHORT[m]}" for m in measures), "none of the measures")

@@ -18,6 +18,7 @@ TABLES = (
     "robot_confirmation",
     "robot_cells",
     "size_tests",
+    "size_metrics",
     "signatures",
     "words",
 )
