@@ -174,7 +174,7 @@ def larger_part(term: dict) -> str:
     distance's part| over the replications (positive: size's own): said only where that
     difference is shown."""
     word = verdict_word(term)
-    if word == REPRODUCED:
+    if word == CONFIRMED:
         return "size's own part is the larger"
     if word == REVERSED:
         return "the grips' distance's part is the larger"
