@@ -116,19 +116,21 @@ def test_every_pages_findings_rest_on_tests_of_the_build():
         for pair in assumed_in(page.read_text())
     ]
     assert len(assumed) >= 16
-    names = {
-        f"claims/{c}/{m}/{x}/{e}"
-        for c in ("first_step", "all_steps")
-        for m in ("teacher_forced", "closed_loop")
-        for x in ("rmse", "rmse_correct")
-        for e in ("congruency", "size")
-    }
-    names |= {
-        f"congruent_size/{c}/{m}"
-        for c in ("first_step", "all_steps")
-        for m in ("teacher_forced", "closed_loop")
-    }
-    assert {test for test, _ in assumed} <= names
+    cue, mode = "(first_step|all_steps)", "(teacher_forced|closed_loop)"
+    effect = "(congruency|size)"
+    named = [  # the tests verdict_table.verdict_rows names, family by family
+        rf"claims/{cue}/{mode}/(rmse|rmse_correct)/{effect}",
+        rf"congruent_size/{cue}/{mode}",
+        rf"run/{cue}/{mode}/(rmse|errors|rmse_correct)/{effect}",
+        rf"readings/{cue}/(fixed|grows)/(rmse|rmse_correct|wrong_grip|commitment)/{effect}",
+        rf"size/(size|grip_distance|dose)/[0-9.\-]+/{cue}",
+        r"signatures/(in_view|grows_with_rt|extinction|brief_exposure|advance_cueing)",
+        r"signature_errors/(in_view|extinction|brief_exposure)/[0-9]+",
+        rf"words/{cue}/{mode}/(rmse_correct|wrong_grip)/(congruency|size|equivalence)",
+        r"robot/(contact_time/congruency|held_vs_bar)",
+    ]
+    unknown = [t for t, _ in assumed if not any(re.fullmatch(n, t) for n in named)]
+    assert unknown == []
 
 
 @pytest.mark.reruns
@@ -157,3 +159,40 @@ def test_a_flipped_verdict_fails_the_book_naming_its_sentence(built, tmp_path):
     moved = re.findall(r"index\.md:\d+: WARNING: a finding's sentence no longer holds: (.*)", log)
     assert len(moved) == 1, log[-3000:]
     assert moved[0].startswith(f"{flipped} is 'none', not '{assumed[0][1]}'. The sentence: “On ")
+
+
+def test_each_chapters_tests_are_named_with_the_code_their_numbers_give():
+    """The chapters' tests join the claims' (verdict_table.study_rows): a run's test reads its
+    Holm p on the side of its estimate, a signature its word's code, the robot's share held its
+    interval against the bar."""
+    from icub_workflow.book_build.verdict_table import study_rows
+
+    test = {"estimate": -0.02, "p_holm": 0.01, "family": "exploration: closed loop"}
+    none = test | {"estimate": 0.02, "p_holm": 0.2}
+    anova = {
+        "contrasts": {
+            m: {"congruency": test, "size": none} for m in ("closed_loop", "teacher_forced")
+        }
+    }
+    anova |= {m: {"errors": {"congruency": none}, "correct_rt": {"size": test}}
+              for m in ("closed_loop", "teacher_forced")}  # fmt: skip
+    signatures = pd.DataFrame(
+        {"signature": ["grows_with_rt", "grows_with_rt", "brief_exposure"],
+         "condition": ["in view, all correct trials", "in view, slope", "masked"],
+         "verdict": [np.nan, "not shown", "reversed"], "family": "signatures",
+         "estimate": [0.02, -0.001, 0.01], "p_adjusted": [0.001, 0.3, 0.9]})  # fmt: skip
+    confirmation = pd.DataFrame({"seed_set": ["exploration", "confirmation"],
+                                 "ci_low": [0.95, 0.84], "ci_high": [0.99, 0.99]})  # fmt: skip
+    rows = {
+        r["test"]: r["code"]
+        for r in study_rows(
+            {"runs": {"first_step": anova}, "signatures": signatures, "confirmation": confirmation}
+        )
+    }
+    assert rows["run/first_step/closed_loop/rmse/congruency"] == "reversed"
+    assert rows["run/first_step/teacher_forced/rmse/size"] == "none"
+    assert rows["run/first_step/closed_loop/rmse_correct/size"] == "reversed"
+    assert rows["signatures/grows_with_rt"] == "none"
+    assert rows["signatures/brief_exposure"] == "reversed"
+    assert rows["signatures/in_view"] == "paper"
+    assert rows["robot/held_vs_bar"] == "none"  # the fresh networks' interval includes 0.9

@@ -124,7 +124,21 @@ rule verdicts:
         claims=rules.claims.output.summary,
         correct_sensitivity=rules.claims_correct.output.sensitivity,
         congruent_size=rules.claims_cells.output.added,
+        # the chapters' own tests: this run and its other cue timing, the readings, the size
+        # study, the signatures, the names and the robot's declared tests
+        runs=[BOOK_DATA["anova.json"], BOOK_DATA["ablation_anova.json"]],
+        readings=BOOK_DATA["readings_summary.csv"],
+        size_study=BOOK_DATA["size_declared.csv"],
+        signatures=BOOK_DATA["signatures_summary.csv"],
+        signature_errors=BOOK_DATA["signatures_errors.csv"],
+        words=BOOK_DATA["words_summary.csv"],
+        contact_time=BOOK_DATA["robot_contact_time.csv"],
+        confirmation=BOOK_DATA["robot_confirmation.csv"],
         code=script_code("verdicts"),
+    params:
+        # the cue timing of each run in `runs`: the config's own, then the other
+        cues=[config["network"]["categorisation_cue"], PLAN.config(PLAN.ablation)["network"][
+            "categorisation_cue"]],
     output:
         "data/book/verdicts.csv",
     log:

@@ -10,23 +10,41 @@ function decides both. Codes: ``paper``, ``reversed``, ``none``, ``not assessabl
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import pandas as pd
 
+from icub_affordance.analysis import confirmation as confirmation_science
+from icub_affordance.analysis import reading_tests
 from icub_affordance.analysis.paper_claims import direction
-from icub_affordance.analysis.verdicts import ALPHA
+from icub_affordance.analysis.verdicts import ALPHA, GRASPS
 from icub_affordance.outcome import Outcome
-from icub_workflow.book.words import DIRECTION_CODES
+from icub_workflow.book.words import DIRECTION_CODES, SIGNATURE_WORDS
 
 COLUMNS = ["test", "family", "code"]
+#: A signature's code from the word its table holds (``words.SIGNATURE_WORDS``).
+SIGNATURE_CODES = {word: DIRECTION_CODES[o] for o, word in SIGNATURE_WORDS.items()
+                   if o in DIRECTION_CODES}  # fmt: skip
+#: The robot's share held against the bar (``confirmation.bar_verdict``), as a code.
+BAR_CODES = {"above": "paper", "includes": "none", "below": "reversed"}
+
+
+def _code(estimate: float, p_holm: float) -> str:
+    """The declared tests' rule, for a table that holds numbers only."""
+    return DIRECTION_CODES[direction(estimate, p_holm, ALPHA)]
 
 
 def verdict_rows(
-    claims: pd.DataFrame, correct_sensitivity: pd.DataFrame, congruent_size: pd.DataFrame
+    claims: pd.DataFrame,
+    correct_sensitivity: pd.DataFrame,
+    congruent_size: pd.DataFrame,
+    studies: Mapping[str, object] | None = None,
 ) -> pd.DataFrame:
     """The declared tests of the paper's claims (``claims/{cue}/{mode}/{measure}/{effect}``),
     the correct-trial RMSE over every replication (``correct_all/{cue}/{mode}/{effect}``) and
     size among congruent trials, added after the results
-    (``congruent_size/{cue}/{mode}``, its ``Outcome`` codes)."""
+    (``congruent_size/{cue}/{mode}``, its ``Outcome`` codes); with ``studies``, the other
+    chapters' tests too (``study_rows``)."""
     rows = [
         {
             "test": f"claims/{r['cue']}/{r['mode']}/{r['measure']}/{r['effect']}",
@@ -39,7 +57,7 @@ def verdict_rows(
         {
             "test": f"correct_all/{r['cue']}/{r['mode']}/{r['effect']}",
             "family": r["family"],
-            "code": DIRECTION_CODES[direction(r["estimate"], r["p_holm"], ALPHA)],
+            "code": _code(r["estimate"], r["p_holm"]),
         }
         for r in correct_sensitivity.to_dict("records")
     ]
@@ -51,8 +69,110 @@ def verdict_rows(
         }
         for r in congruent_size.to_dict("records")
     ]
+    rows += study_rows(studies or {})
     table = pd.DataFrame(rows, columns=COLUMNS)
     doubled = table["test"][table["test"].duplicated()].tolist()
     if doubled:
         raise ValueError(f"tests named twice: {doubled}")
     return table
+
+
+def study_rows(studies: Mapping[str, object]) -> list[dict]:
+    """The chapters' own tests, each where ``studies`` has its table: ``runs`` (cue timing ->
+    that run's ``eval/anova.json``), ``readings``, ``size``, ``signatures``,
+    ``signature_errors``, ``words``, ``contact_time``, ``confirmation``."""
+    rows: list[dict] = []
+    for cue, anova in (studies.get("runs") or {}).items():
+        rows += run_rows(cue, anova)
+    if "readings" in studies:
+        rows += [
+            {
+                "test": f"readings/{r['cue']}/{r['goal_response']}/{r['measure']}/{r['effect']}",
+                "family": r["family"],
+                "code": DIRECTION_CODES.get(reading_tests.direction(r), "not assessable"),
+            }
+            for r in studies["readings"].to_dict("records")
+            if reading_tests.is_hypothesis(r["measure"])
+        ]
+    if "size" in studies:
+        rows += [
+            {
+                "test": f"size/{r['test']}/{str(r['dose']).replace(' ', '')}/{r['cue']}",
+                "family": r["family"],
+                "code": _code(r["estimate"], r["p_holm"]),
+            }
+            for r in studies["size"].to_dict("records")
+        ]
+    if "signatures" in studies:
+        table = studies["signatures"]
+        rows += [
+            {
+                "test": f"signatures/{r['signature']}",
+                "family": r["family"],
+                "code": SIGNATURE_CODES[r["verdict"]],
+            }
+            for r in table[table["verdict"].notna() & (table["verdict"] != "")].to_dict("records")
+        ]
+        view = table[table["condition"].str.startswith("in view, all")]
+        rows += [
+            {"test": "signatures/in_view", "family": r["family"],
+             "code": _code(r["estimate"], r["p_adjusted"])}
+            for r in view.to_dict("records")
+        ]  # fmt: skip
+    if "signature_errors" in studies:
+        rows += [
+            {
+                "test": f"signature_errors/{r['condition']}/{r['k']}",
+                "family": r["family"],
+                "code": _code(r["estimate"], r["p_adjusted"]),
+            }
+            for r in studies["signature_errors"].to_dict("records")
+        ]
+    if "words" in studies:
+        rows += [
+            {
+                "test": f"words/{r['cue']}/{r['mode']}/{r['measure']}/{r['test']}",
+                "family": r["family"],
+                "code": r["direction"],
+            }
+            for r in studies["words"].to_dict("records")
+        ]
+    if "contact_time" in studies:
+        rows += [
+            {"test": f"robot/contact_time/{r['effect']}", "family": r["family"],
+             "code": r["direction"]}
+            for r in studies["contact_time"].to_dict("records")
+        ]  # fmt: skip
+    if "confirmation" in studies:
+        table = studies["confirmation"]
+        rows += [
+            {
+                "test": "robot/held_vs_bar",
+                "family": "declared: the robot grasps",
+                "code": BAR_CODES[
+                    confirmation_science.bar_verdict(r["ci_low"], r["ci_high"], GRASPS)
+                ],
+            }
+            for r in table[table["seed_set"] == "confirmation"].head(1).to_dict("records")
+        ]
+    return rows
+
+
+def run_rows(cue: str, anova: Mapping) -> list[dict]:
+    """One run's congruency and size tests (its ``eval/anova.json``), each test mode on the RMSE
+    of all trials, the wrong-grip rate and the correct trials' RMSE
+    (``run/{cue}/{mode}/{measure}/{effect}``)."""
+    sources = {"rmse": lambda mode: anova["contrasts"][mode],
+               "errors": lambda mode: anova[mode]["errors"],
+               "rmse_correct": lambda mode: anova[mode]["correct_rt"]}  # fmt: skip
+    return [
+        {
+            "test": f"run/{cue}/{mode}/{measure}/{effect}",
+            "family": t["family"],
+            "code": _code(t["estimate"], t["p_holm"]),
+        }
+        for mode in ("closed_loop", "teacher_forced")
+        for measure, tests in ((m, source(mode)) for m, source in sources.items())
+        for effect, t in tests.items()
+        if effect in ("congruency", "size")
+    ]
