@@ -370,6 +370,93 @@ def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
     assert too_wide == {}
 
 
+#: The issue's floor: no figure's text smaller than this, in points, at the width its page shows it.
+SMALLEST_PT = 8
+
+#: Images the book shows that `figures.save` does not draw, so they carry no font record: the
+#: workflow's graph (Graphviz), the rendered robot and its eye's view, the robot's animations.
+NOT_SAVED = {"rulegraph.png", "figure1_scene.png", "figure1_eye.png", "robot_grasps.gif",
+             "robot_categorise.gif"}  # fmt: skip
+
+#: Run in each page after load: every image in the article, its source, natural and shown width.
+IMAGES = """<script>
+window.addEventListener("load", () => {
+  const shown = [...document.querySelectorAll("article img")].map((img) => ({
+    src: img.getAttribute("src"), natural: img.naturalWidth,
+    css: img.getBoundingClientRect().width}));
+  const out = document.createElement("pre");
+  out.id = "image-report";
+  out.textContent = JSON.stringify(shown);
+  document.body.appendChild(out);
+});
+</script>"""
+
+
+def png_text(page: Path, src: str) -> dict[str, str]:
+    """The text metadata of the image `src` of `page` (a file beside it, or a data: URI)."""
+    import base64
+    import io
+    from urllib.parse import unquote
+
+    from PIL import Image
+
+    if src.startswith("data:"):
+        data = io.BytesIO(base64.b64decode(src.split(",", 1)[1]))
+        return dict(getattr(Image.open(data), "text", {}))
+    with Image.open(page.parent / unquote(src.split("?")[0])) as image:
+        return dict(getattr(image, "text", {}))
+
+
+def figure_text_sizes(site: Path, chromium: str) -> list[dict]:
+    """Each image of each chapter of the built book in `site`, as headless Chromium shows it at
+    1280 px: its page, name, and its smallest text in points as seen (None: no font record).
+    The record's points at its dpi, scaled by shown over natural width: pt · dpi/96 · css/px."""
+    from icub_affordance.figures import DPI_KEY, SMALLEST_FONT_KEY
+
+    sizes = []
+    for name in toc_chapters():
+        page = site / f"{name}.html"
+        page.write_text(page.read_text().replace("</body>", IMAGES + "</body>"))
+        dom = subprocess.run(
+            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1280,2000",
+             "--virtual-time-budget=5000", "--dump-dom", page.as_uri()],
+            capture_output=True, text=True, timeout=120,
+        ).stdout  # fmt: skip
+        report = re.search(r'<pre id="image-report"[^>]*>(.*?)</pre>', dom, re.S)
+        assert report, f"{name}: the measuring script did not run"
+        for img in json.loads(html.unescape(report.group(1))):
+            meta = png_text(page, img["src"])
+            image = "inline image" if img["src"].startswith("data:") else Path(img["src"]).name
+            effective = None
+            if SMALLEST_FONT_KEY in meta and img["natural"]:
+                scale = img["css"] / img["natural"]
+                effective = float(meta[SMALLEST_FONT_KEY]) * float(meta[DPI_KEY]) / 96 * scale
+            sizes.append({"page": name, "image": image, "pt": effective})
+    return sizes
+
+
+@pytest.mark.dryrun
+@pytest.mark.tool("chromium")
+def test_every_figure_s_text_is_at_least_8_pt_at_the_page_s_width(built, tmp_path):
+    """Looked at in headless Chromium at 1280 px: each figure drawn by `figures.save` shows its
+    smallest text (tick labels included) at 8 pt or more; an image without the record is one
+    named in `NOT_SAVED`, so that a new figure cannot slip by unmeasured."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        assert os.environ.get(TOOL_TESTS["chromium"]) != "1", "asked for, but no chromium"
+        pytest.skip("Debian's chromium is not installed (apt-get install chromium)")
+    site = tmp_path / "html"
+    shutil.copytree(built / HTML, site)
+    sizes = figure_text_sizes(site, chromium)
+    assert sizes, "no image measured"
+    unrecorded = {f"{s['page']}: {s['image']}" for s in sizes if s["pt"] is None
+                  and s["image"] not in NOT_SAVED}  # fmt: skip
+    assert unrecorded == set(), "images not drawn by figures.save"
+    small = [f"{s['page']}: {s['image']} at {s['pt']:.1f} pt" for s in sizes
+             if s["pt"] is not None and s["pt"] < SMALLEST_PT]  # fmt: skip
+    assert small == []
+
+
 def test_the_declared_contact_time_row_follows_its_test_and_names_its_cells():
     cells = pd.DataFrame(
         [{"run": "fresh", "congruency": c, "size": s, "trials": 12,

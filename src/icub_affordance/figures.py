@@ -12,6 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.text  # noqa: E402
 import numpy as np  # noqa: E402
 
 from icub_affordance.files import atomic_path  # noqa: E402
@@ -26,16 +27,70 @@ LABELS = {
 }
 
 
+#: The book's text column at 1280 px is 740 CSS px, 7.7 in at 96 px per inch. A figure drawn this
+#: wide (less a margin for labels that stand out of its axes) and shown at the page's full width
+#: shows its text at least at the size it was drawn.
+COLUMN_IN = 6.8
+
+#: The PNG text keys under which `save` records the figure's smallest drawn text and its dpi,
+#: so that the book's test can tell how large that text is at the width a page shows it.
+SMALLEST_FONT_KEY, DPI_KEY = "smallest_font_pt", "dpi"
+
+
+#: Words for the names a figure would otherwise show as variables: test modes, cue timings and the
+#: measures (beside ``scores.LABELS``, which names the measures in the tables).
+WORDS = {
+    "closed_loop": "closed loop",
+    "teacher_forced": "teacher forced",
+    "first_step": "cue at the first step",
+    "all_steps": "cue at every step",
+    "rmse": "all-trial RMSE",
+    "rmse_per_grip_distance_null": "RMSE per grip distance, its null control",
+    "rmse_per_grip_distance_excess": "RMSE per grip distance, excess over its null control",
+}
+
+
+def words(name: str) -> str:
+    """A mode's, cue's or measure's name in words, for a figure's titles and labels."""
+    from icub_affordance.trials.scores import LABELS as MEASURES
+
+    return WORDS.get(name) or MEASURES.get(name) or name.replace("_", " ")
+
+
+def smallest_font_pt(fig: plt.Figure) -> float:
+    """The smallest font size (points) of any text the figure draws: tick labels, titles, axis
+    labels, legends, annotations. Found by drawing it, so that text never drawn (hidden axes,
+    ticks outside the view, empty strings) does not count."""
+    sizes: list[float] = []
+    draw = matplotlib.text.Text.draw
+
+    def recording(self, renderer, *args, **kwargs):
+        if self.get_visible() and self.get_text().strip():
+            sizes.append(float(self.get_fontsize()))
+        return draw(self, renderer, *args, **kwargs)
+
+    matplotlib.text.Text.draw = recording
+    try:
+        fig.canvas.draw()
+    finally:
+        matplotlib.text.Text.draw = draw
+    return min(sizes) if sizes else float("inf")
+
+
 def save(fig: plt.Figure, path: str | os.PathLike[str], dpi: int = 150) -> None:
+    """Every figure is written here, with its smallest text size and dpi in the PNG's metadata
+    (see `SMALLEST_FONT_KEY`): the book's test measures each figure at the page's width."""
+    smallest = smallest_font_pt(fig)
+    metadata = {SMALLEST_FONT_KEY: f"{smallest:g}", DPI_KEY: str(dpi)}
     with atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=dpi, bbox_inches="tight")
+        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", metadata=metadata)
     plt.close(fig)
 
 
 def figure3(stages: dict[str, dict[str, np.ndarray]], window: int, path) -> None:
     """Eye image (with the foveated window marked), Sobel edges, and the 10x10 visual input."""
     objects = list(stages)
-    fig, axes = plt.subplots(len(objects), 3, figsize=(8.5, 2.6 * len(objects)))
+    fig, axes = plt.subplots(len(objects), 3, figsize=(6.2, 1.95 * len(objects)))
     axes = np.atleast_2d(axes)
     for row, obj in zip(axes, objects, strict=True):
         eye, sobel, vmap = stages[obj]["eye"], stages[obj]["sobel"], stages[obj]["visual_map"]
@@ -55,33 +110,48 @@ def figure3(stages: dict[str, dict[str, np.ndarray]], window: int, path) -> None
         for ax in row:
             ax.set_xticks([])
             ax.set_yticks([])
-        row[2].set_xlabel(f"{int(vmap.sum())} edge cells", fontsize=9)
-    axes[0, 0].set_title("eye image (foveated window)", fontsize=10)
-    axes[0, 1].set_title("Sobel edges (max of R, G, B)", fontsize=10)
-    axes[0, 2].set_title("visual input (10 x 10)", fontsize=10)
+        row[2].set_xlabel(f"{int(vmap.sum())} edge cells", fontsize=9.5)
+    axes[0, 0].set_title("eye image\n(foveated window)", fontsize=10)
+    axes[0, 1].set_title("Sobel edges\n(max of R, G, B)", fontsize=10)
+    axes[0, 2].set_title("visual input\n(10 x 10)", fontsize=10)
     fig.tight_layout()
     save(fig, path)
 
 
 def filmstrip(
-    strips: dict[str, list[np.ndarray]], path, every: int = 1, labels: list[str] | None = None
+    strips: dict[str, list[np.ndarray]],
+    path,
+    every: int = 1,
+    labels: list[str] | None = None,
+    per_row: int = 6,
 ) -> None:
-    """One row of frames per demonstration, labelled with its time step (or ``labels``)."""
+    """One block of frames per demonstration, titled with it, each frame labelled with its time
+    step (or ``labels``); a block wraps after ``per_row`` frames (rows balanced), so that the
+    frames and their labels read at the text column's width."""
+    import textwrap
+
     rows = list(strips)
     n = len(strips[rows[0]][::every])
-    fig, axes = plt.subplots(len(rows), n, figsize=(1.6 * n, 1.45 * len(rows) + 0.3))
-    axes = np.atleast_2d(axes)
-    for r, title in enumerate(rows):
+    lines = -(-n // per_row)
+    cols = -(-n // lines)
+    frame_in = COLUMN_IN / cols
+    fig = plt.figure(
+        figsize=(COLUMN_IN, len(rows) * (lines * (0.75 * frame_in + 0.3) + 0.35)),
+        layout="constrained",
+    )
+    blocks = np.atleast_1d(fig.subfigures(len(rows), 1))
+    for block, title in zip(blocks, rows, strict=True):
+        axes = np.atleast_1d(block.subplots(lines, cols)).ravel()
+        for ax in axes:
+            ax.set_axis_off()
         for k, frame in enumerate(strips[title][::every]):
-            ax = axes[r, k]
+            ax = axes[k]
+            ax.set_axis_on()
             ax.imshow(frame)
             ax.set_xticks([])
             ax.set_yticks([])
-            if r == len(rows) - 1:
-                ax.set_xlabel(labels[k] if labels else f"step {k * every}", fontsize=8)
-        axes[r, 0].set_ylabel(title.split(",")[0], fontsize=8)
-        axes[r, n // 2].set_title(title, fontsize=9)
-    fig.tight_layout()
+            ax.set_xlabel(labels[k] if labels else f"step {k * every}", fontsize=8.5)
+        block.suptitle(textwrap.fill(title, 90), fontsize=9)
     save(fig, path)
 
 
@@ -89,25 +159,25 @@ def figure2_maps(object_act, task_act, goal_act, objects, tasks, path) -> None:
     """The three maps' activations: each object on the Object map, each task on the Task map,
     and each object x task on the Goal map (the inputs the network receives)."""
     n_obj = len(objects)
-    fig = plt.figure(figsize=(2.1 * n_obj, 9.0))
+    fig = plt.figure(figsize=(0.95 * COLUMN_IN, 9.0))
     grid = fig.add_gridspec(2 + len(tasks), n_obj)
 
     def show(ax, act, title):
         ax.imshow(act, cmap="magma", vmin=0, vmax=1)
-        ax.set_title(title, fontsize=8)
+        ax.set_title(title, fontsize=8.5)
         ax.set_xticks([])
         ax.set_yticks([])
 
     for i, obj in enumerate(objects):
-        show(fig.add_subplot(grid[0, i]), object_act[i], f"Object map: {LABELS.get(obj, obj)}")
+        show(fig.add_subplot(grid[0, i]), object_act[i], f"Object map:\n{LABELS.get(obj, obj)}")
     for k, task in enumerate(tasks):
-        show(fig.add_subplot(grid[1, k]), task_act[k], f"Task map: {task}")
+        show(fig.add_subplot(grid[1, k]), task_act[k], f"Task map:\n{task}")
     for k, task in enumerate(tasks):
         for i, obj in enumerate(objects):
             show(
                 fig.add_subplot(grid[2 + k, i]),
                 goal_act[i, k],
-                f"Goal map: {LABELS.get(obj, obj)}, {task}",
+                f"Goal map:\n{LABELS.get(obj, obj)}, {task}",
             )
     fig.tight_layout()
     save(fig, path)
@@ -119,7 +189,7 @@ def figure2_architecture(hidden: int, path) -> None:
     network's ``hidden`` units, whose output (the next posture) is fed back as proprioception."""
     from matplotlib.patches import FancyArrowPatch, FancyBboxPatch
 
-    fig, ax = plt.subplots(figsize=(8, 4.6))
+    fig, ax = plt.subplots(figsize=(0.8 * COLUMN_IN, 3.6))
     ax.set_xlim(0, 10)
     ax.set_ylim(0, 6)
     ax.axis("off")
@@ -137,7 +207,7 @@ def figure2_architecture(hidden: int, path) -> None:
         ax.add_patch(
             FancyBboxPatch((x, y), 2.0, 1.0, boxstyle="round,pad=0.05", fc=colour, ec="0.3")
         )
-        ax.text(x + 1.0, y + 0.5, text, ha="center", va="center", fontsize=8.5)
+        ax.text(x + 1.0, y + 0.5, text, ha="center", va="center", fontsize=8)
 
     def arrow(a, b):
         (xa, ya, *_), (xb, yb, *_) = boxes[a], boxes[b]
@@ -167,7 +237,7 @@ def figure2_architecture(hidden: int, path) -> None:
         )
     )  # fmt: skip
     ax.text(6.3, 0.55, "Jordan loop: output becomes\nthe next proprioceptive input",
-            fontsize=7.5, color="C3", ha="center")  # fmt: skip
+            fontsize=8, color="C3", ha="center")  # fmt: skip
     fig.tight_layout()
     save(fig, path)
 
@@ -192,7 +262,7 @@ def figure4(
         every = int(x[1] - x[0]) if len(x) > 1 else 1
         span = f"{window}-iteration" if every == 1 else f"{window * every}-iteration"
     mean = smooth.mean(axis=0)
-    fig, ax = plt.subplots(figsize=(7, 3.6))
+    fig, ax = plt.subplots(figsize=(0.85 * COLUMN_IN, 3.4))
     ax.fill_between(
         x,
         smooth.min(axis=0),
@@ -207,13 +277,13 @@ def figure4(
         phase1,
         ax.get_ylim()[1] * 0.95,
         "  phase 2: grasping + categorisation",
-        fontsize=8,
+        fontsize=9,
         va="top",
     )
     ax.set_xlabel("training iteration")
     ax.set_ylabel("RMSE (normalised joint angles)")
     ax.set_ylim(bottom=0)
-    ax.legend(fontsize=8, loc="upper right", bbox_to_anchor=(1.0, 0.85))
+    ax.legend(fontsize=9, loc="upper right", bbox_to_anchor=(1.0, 0.85))
     ax.grid(alpha=0.3)
     fig.tight_layout()
     save(fig, path)
@@ -223,7 +293,9 @@ def figure5(per_network: dict[str, dict[tuple[str, str], np.ndarray]], path) -> 
     """Mean RMSE of congruent and incongruent categorisation trials, large vs small objects,
     with standard errors over networks; one panel per test mode."""
     modes = list(per_network)
-    fig, axes = plt.subplots(1, len(modes), figsize=(4.2 * len(modes), 3.6), squeeze=False)
+    fig, axes = plt.subplots(
+        1, len(modes), figsize=(0.95 * COLUMN_IN, 3.2), squeeze=False, sharey=True
+    )
     for ax, mode in zip(axes[0], modes, strict=True):
         cells = per_network[mode]
         for size, colour, marker in (("large", "C0", "o"), ("small", "C3", "s")):
@@ -243,17 +315,17 @@ def figure5(per_network: dict[str, dict[tuple[str, str], np.ndarray]], path) -> 
             )
         ax.set_xticks([0, 1], ["congruent", "incongruent"])
         ax.set_xlim(-0.4, 1.4)
-        ax.set_ylabel("RMSE (stands for reaction time)")
         ax.set_title(mode.replace("_", " "), fontsize=10)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=9)
+    axes[0, 0].set_ylabel("RMSE (stands for reaction time)")
     fig.tight_layout()
     save(fig, path)
 
 
 def conflict_timecourse(per_step: dict[str, np.ndarray], path) -> None:
     """Per-step RMSE of congruent vs incongruent categorisation trials, mean +- SE over networks."""
-    fig, ax = plt.subplots(figsize=(6, 3.4))
+    fig, ax = plt.subplots(figsize=(0.7 * COLUMN_IN, 3.2))
     for (label, values), colour in zip(per_step.items(), ("C2", "C1", "C0", "C3"), strict=False):
         mean = values.mean(axis=0)
         sem = values.std(axis=0, ddof=1) / np.sqrt(len(values))
@@ -263,14 +335,14 @@ def conflict_timecourse(per_step: dict[str, np.ndarray], path) -> None:
     ax.set_xlabel("time step of the movement (output for step t)")
     ax.set_ylabel("RMSE")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8.5)
     fig.tight_layout()
     save(fig, path)
 
 
 def sweep_effects(points, path) -> None:
     """Congruency and size effects (mean and 95% interval over networks) of every sweep point."""
-    fig, axes = plt.subplots(1, 2, figsize=(10, 0.35 * len(points) + 1.6), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(COLUMN_IN, 0.38 * len(points) + 1.8), sharey=True)
     labels = points["point"].tolist()
     y = np.arange(len(labels))
     for ax, effect in zip(axes, ("congruency", "size"), strict=True):
@@ -286,9 +358,11 @@ def sweep_effects(points, path) -> None:
         ax.scatter(mean, y, c=colours, zorder=3)
         ax.axvline(0, color="0.3", lw=0.8)
         ax.set_xlabel(f"{effect} effect (RMSE difference)")
-        ax.set_title(f"{effect}: green = paper's direction, red = reversed (p < .05)", fontsize=8)
+        ax.set_title(
+            f"{effect}: green = paper's direction,\nred = reversed (p < .05)", fontsize=8.5
+        )
         ax.grid(alpha=0.3)
-    axes[0].set_yticks(y, labels, fontsize=7)
+    axes[0].set_yticks(y, labels, fontsize=8)
     fig.tight_layout()
     save(fig, path)
 
@@ -308,7 +382,10 @@ def readings_effects(summary, replications, path) -> None:
     colour = {Outcome.PAPER: "C2", Outcome.AGAINST: "C3", Outcome.NONE: "0.5",
               Outcome.CONSTANT: "0.5", Outcome.NOT_ASSESSABLE: "0.5"}  # fmt: skip
     fig, axes = plt.subplots(
-        len(measures), 2, figsize=(10, 1.0 + 0.55 * len(readings) * len(measures)), squeeze=False
+        len(measures),
+        2,
+        figsize=(0.88 * COLUMN_IN, 1.2 + 0.6 * len(readings) * len(measures)),
+        squeeze=False,
     )
     y = np.arange(len(readings))
 
@@ -347,14 +424,14 @@ def readings_effects(summary, replications, path) -> None:
                     label="null control: a constant error / grip distance",
                 )
                 if j == 0:
-                    ax.legend(fontsize=7, loc="best")
+                    ax.legend(fontsize=8, loc="best")
             ax.axvline(0, color="0.3", lw=0.8)
             ax.set_yticks(y, readings if j == 0 else [""] * len(readings), fontsize=8)
             ax.invert_yaxis()
-            ax.set_title(f"{measure}: {effect}", fontsize=9)
+            ax.set_title(f"{effect}: {words(measure)}", fontsize=9)
             ax.grid(alpha=0.3)
     fig.suptitle(
-        "difference in the paper's direction (> 0), 95% interval; green / red: Holm-adjusted "
+        "difference in the paper's direction (> 0), 95% interval;\ngreen / red: Holm-adjusted "
         "p < 0.05 in / against the paper's direction",
         fontsize=9,
     )
@@ -373,7 +450,7 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
     """Left: one network's mean hidden trajectories on its first two principal axes, per object
     and condition. Right: distance of categorisation trials' hidden states from the grasping
     trial of the same object and sequence, per step (mean and 95% interval over networks)."""
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.6))
+    fig, (left, right) = plt.subplots(2, 1, figsize=(COLUMN_IN, 8.6))
     mine = paths[paths["network"] == network]
     markers = dict(zip(LABELS, "osD^", strict=True))
     for (obj, condition), group in mine.groupby(["object", "condition"], sort=False):
@@ -383,7 +460,7 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
                      marker=markers.get(obj, "o"), s=40, zorder=3)  # fmt: skip
         left.annotate(
             f"{LABELS.get(obj, obj)}", (group["pc1"].iloc[-1], group["pc2"].iloc[-1]),
-            fontsize=7, color=style["color"], xytext=(3, 3), textcoords="offset points",
+            fontsize=8, color=style["color"], xytext=(3, 3), textcoords="offset points",
         )  # fmt: skip
     ev = explained[explained["network"] == network].iloc[0]
     left.set_xlabel(f"principal axis 1 ({ev['pc1']:.0%} of variance)")
@@ -392,7 +469,7 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
     for condition in ("grasping", "congruent", "incongruent"):
         style = CONDITION_STYLE[condition]
         left.plot([], [], color=style["color"], ls=style["ls"], label=condition)
-    left.legend(fontsize=8, frameon=False)
+    left.legend(fontsize=9, frameon=False)
     steps = divergence["step"]
     for condition in ("congruent", "incongruent"):
         style = CONDITION_STYLE[condition]
@@ -406,7 +483,7 @@ def hidden_representations(paths, explained, divergence, network: int, path) -> 
     right.set_xlabel("step")
     right.set_ylabel("distance from the grasping trial's hidden state")
     right.set_title("how far categorising takes the hidden layer from grasping", fontsize=10)
-    right.legend(fontsize=8, frameon=False)
+    right.legend(fontsize=9, frameon=False)
     fig.tight_layout()
     save(fig, path)
 
@@ -415,7 +492,7 @@ def robot_variants(variants, path) -> None:
     """The robot's grasping success (and categorisation success) against training iterations,
     one line per cue timing, target, number of hidden units and learning-rate schedule (hollow
     markers: annealed): the learning curve measured on the body."""
-    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(COLUMN_IN, 3.6), sharey=True)
     styles = {"sensed": "--", "commands": "-"}
     markers = {"first_step": "o", "all_steps": "^"}
     hiddens = sorted(variants["hidden"].unique())
@@ -435,11 +512,13 @@ def robot_variants(variants, path) -> None:
         ax.axhline(0.9, color="0.4", lw=0.8, ls=":")
         ax.set_xscale("log")
         ax.set_xlabel("training iterations")
-        ax.set_title(f"{task} trials: object held")
+        ax.set_title(f"{task} trials: object held", fontsize=10)
         ax.set_ylim(-0.02, 1.02)
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("success (share of trials)")
-    axes[1].legend(fontsize=6, loc="upper left")
+    handles, names = axes[1].get_legend_handles_labels()
+    fig.legend(handles, names, fontsize=8, loc="upper center", ncol=2, frameon=False,
+               bbox_to_anchor=(0.5, 0.0))  # fmt: skip
     fig.tight_layout()
     save(fig, path)
 
@@ -449,7 +528,7 @@ def robot_tolerance(tolerance, variants, path) -> None:
     tolerance (the demonstrations' mean plan with its arm targets offset; each trial a dot, and
     the success rate in bins of palm error) beside each robot variant's grasping trials (median
     palm error, success)."""
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(COLUMN_IN, 3.8))
     errors = tolerance["palm_error_mm"].to_numpy(dtype=float)
     held = tolerance["success"].astype(bool).to_numpy()
     jitter = np.random.default_rng(0).uniform(-0.03, 0.03, len(held))  # only to see the dots
@@ -477,11 +556,11 @@ def robot_tolerance(tolerance, variants, path) -> None:
     largest = max(errors.max(), variants["grasping_palm_error_mm"].max(), 1.0)
     ticks = [t for t in (0.5, 1, 2, 5, 10, 20, 50, 100, 200) if t <= largest * 1.5]
     ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
-    ax.set_xlabel("palm's distance from the demonstrator's at the end of the movement (mm, log)")
+    ax.set_xlabel("palm's distance from the demonstrator's at the end of the movement\n(mm, log)")
     ax.set_ylabel("object held (share of trials)")
     ax.set_ylim(-0.08, 1.08)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="center right", bbox_to_anchor=(1.0, 0.7))
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.28), frameon=False)
     fig.tight_layout()
     save(fig, path)
 
@@ -506,7 +585,7 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
     styles = {"natural": ("o-", "C0", "grips as demonstrated"),
               "swapped": ("D--", "C4", "grips swapped between the sizes")}  # fmt: skip
     fig, axes = plt.subplots(
-        len(measures) + 2, len(cues), figsize=(4.2 * len(cues), 2.4 * (len(measures) + 2)),
+        len(measures) + 2, len(cues), figsize=(0.9 * COLUMN_IN, 2.7 * (len(measures) + 2)),
         squeeze=False,
     )  # fmt: skip
     for j, cue in enumerate(cues):
@@ -524,14 +603,14 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
         ax.axhline(0, color="0.3", lw=0.8)
         ax.axvline(0, color="0.3", lw=0.8, ls=":")
         measure = crossed["measure"].iloc[0] if len(crossed) else ""
-        ax.set_title(f"{measure}: each replication's two runs, cue {cue.replace('_', ' ')}",
+        ax.set_title(f"{words(measure)}, {words(cue)}:\neach replication's two runs",
                      fontsize=9)  # fmt: skip
-        ax.set_xlabel("gap: large − small object's grips' distance (circle: natural,"
-                      " diamond: swapped)", fontsize=7)  # fmt: skip
+        ax.set_xlabel("gap: large − small object's grips'\ndistance (circle: natural,"
+                      " diamond: swapped)", fontsize=8)  # fmt: skip
         ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
         ax.grid(alpha=0.3)
         if j == 0:
-            ax.legend(fontsize=7, loc="best")
+            ax.legend(fontsize=8, loc="best")
         for i, measure in enumerate(measures, start=1):
             ax = axes[i, j]
             rows = summary[(summary["cue"] == cue) & (summary["measure"] == measure)]
@@ -555,13 +634,13 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
             removed = reps[reps["dose"] == "removed"]
             ax.scatter([x["removed"]] * len(removed), removed["estimate"], s=6, c="0.45", zorder=3)
             ax.axhline(0, color="0.3", lw=0.8)
-            ax.set_title(f"{measure}, cue {cue.replace('_', ' ')}", fontsize=9)
+            ax.set_title(f"{words(measure)},\n{words(cue)}", fontsize=9)
             ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
             ax.set_xticks([x["removed"], *(x[d] for d in doses)],
-                          ["none", *(f"{d:g}" for d in doses)], fontsize=7)  # fmt: skip
+                          ["none", *(f"{d:g}" for d in doses)], fontsize=8)  # fmt: skip
             ax.grid(alpha=0.3)
             if i == 1 and j == 0:
-                ax.legend(fontsize=7, loc="best")
+                ax.legend(fontsize=8, loc="best")
         ax = axes[-1, j]
         checks = manipulation[(manipulation["cue"] == cue) & (manipulation["dose"] != "removed")]
         mean_ratio = checks.groupby(["shape", "map", "dose"], sort=False)["ratio"].mean()
@@ -575,14 +654,14 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
             )
         ax.axhline(2, color="0.4", lw=0.8, ls=":")
         ax.set_ylabel("large / small\nactive units", fontsize=8)
-        ax.set_xlabel("nominal dose (delivered: the Goal map's ln large/small units)", fontsize=8)
+        ax.set_xlabel("nominal dose (delivered: the Goal map's\nln large/small units)", fontsize=8)
         natural = summary[(summary["cue"] == cue) & (summary["dose"] != "removed")]
         delivered = natural.groupby("dose", sort=False)["delivered_dose"].mean()
         labels = [f"{d:g}\n({delivered[d]:.2f})" for d in doses]
-        ax.set_xticks([x["removed"], *(x[d] for d in doses)], ["none", *labels], fontsize=7)
+        ax.set_xticks([x["removed"], *(x[d] for d in doses)], ["none", *labels], fontsize=8)
         ax.grid(alpha=0.3)
         if j == 0:
-            ax.legend(fontsize=7, loc="best")
+            ax.legend(fontsize=8, loc="best")
     fig.tight_layout()
     save(fig, path)
 
@@ -609,11 +688,13 @@ def signatures_figure(trials, quantiles: int, path) -> None:
         g = table.groupby(by)[column]
         return g.mean(), g.std(ddof=1) / np.sqrt(g.count())
 
-    fig, axes = plt.subplots(1, 3, figsize=(12.5, 3.6))
+    fig = plt.figure(figsize=(COLUMN_IN, 6.6))
+    grid = fig.add_gridspec(2, 2)
+    axes = [fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])]
     mean, sem = unit_means(bin_effects(trials, quantiles, left_out=False), "bin", "effect")
     axes[0].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color="C0")
     axes[0].set_xticks(range(1, quantiles + 1))
-    axes[0].set_xlabel("reaction-time bin (correct trials, fastest first)")
+    axes[0].set_xlabel("reaction-time bin\n(correct trials, fastest first)")
     axes[0].set_ylabel("incongruent - congruent RMSE")
     axes[0].set_title("(a) the effect over reaction time", fontsize=10)
     effects = replication_effects(trials, left_out=False)
@@ -627,7 +708,7 @@ def signatures_figure(trials, quantiles: int, path) -> None:
         axes[1].errorbar(mean.index, mean, yerr=sem, marker="o", capsize=4, color=colour,
                          label=f"{label} after k steps")  # fmt: skip
     axes[1].set_xticks(range(1, IN_VIEW + 1))
-    axes[1].set_xlabel("steps the object is seen (9: in view)")
+    axes[1].set_xlabel("steps the object is seen\n(9: in view)")
     axes[1].set_ylabel("incongruent - congruent RMSE")
     axes[1].set_title("(b) the effect when the object goes", fontsize=10)
     axes[1].legend(fontsize=8)
@@ -640,7 +721,7 @@ def signatures_figure(trials, quantiles: int, path) -> None:
         mean, sem = unit_means(effects, "cell", column)
         axes[2].errorbar(range(len(mean)), mean, yerr=sem, marker="o", capsize=4, color=colour,
                          linestyle="none", label=label)  # fmt: skip
-    axes[2].set_xticks(range(len(labels)), labels, fontsize=7)
+    axes[2].set_xticks(range(len(labels)), labels, fontsize=8)
     axes[2].set_ylabel("wrong-grip rate")
     axes[2].set_title("(c) errors, apart", fontsize=10)
     axes[2].legend(fontsize=8)
@@ -665,13 +746,13 @@ def claims_forest(summary, path, legend: dict) -> None:
     from matplotlib.patches import Patch
 
     effects = list(dict.fromkeys(summary["effect"]))
-    fig, axes = plt.subplots(1, len(effects), figsize=(5.2 * len(effects), 4.2), sharey=True)
+    fig, axes = plt.subplots(1, len(effects), figsize=(COLUMN_IN, 4.6), sharey=True)
     axes = np.atleast_1d(axes)
     names = {"rmse": "all-trial RMSE", "rmse_correct": "correct-trial RMSE",
              "closed_loop": "closed loop", "teacher_forced": "teacher forced",
              "first_step": "cue at the first step", "all_steps": "cue at every step"}  # fmt: skip
-    titles = {"congruency": "congruency (incongruent − congruent)",
-              "size": "size (small − large)"}  # fmt: skip
+    titles = {"congruency": "congruency\n(incongruent − congruent)",
+              "size": "size\n(small − large)"}  # fmt: skip
     for ax, effect in zip(axes, effects, strict=True):
         rows = summary[summary["effect"] == effect].reset_index(drop=True)
         y = np.arange(len(rows))[::-1]
@@ -686,13 +767,13 @@ def claims_forest(summary, path, legend: dict) -> None:
             ax.plot(row["estimate"], yi, "o", color=colour, ms=6)
         labels = [f"{names[r['cue']]}, {names[r['mode']]}\n{names[r['measure']]} "
                   f"({int(r['estimable'])} repl.)" for _, r in rows.iterrows()]  # fmt: skip
-        ax.set_yticks(y, labels, fontsize=7.5)
+        ax.set_yticks(y, labels, fontsize=8)
         ax.set_xlim(-1.15 * reach, 1.15 * reach)
         ax.set_title(titles.get(effect, effect), fontsize=10)
-        ax.set_xlabel("difference in RMSE (paper's direction shaded)")
+        ax.set_xlabel("difference in RMSE\n(paper's direction shaded)")
         ax.grid(axis="x", alpha=0.3)
     handles = [Patch(color=c, label=legend[d]) for d, c in DIRECTION_COLOURS.items()]
-    fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8, frameon=False)
+    fig.legend(handles=handles, loc="lower center", ncol=4, fontsize=8.5, frameon=False)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
     save(fig, path)
 
@@ -706,10 +787,10 @@ def words_effects(by_form, replications, path) -> None:
 
     panels = list(dict.fromkeys(zip(by_form["measure"], by_form["mode"], strict=True)))
     cues = list(dict.fromkeys(by_form["cue"]))
-    labels = [f"{cue.replace('_', ' ')}: {form}" for cue in cues for form in FORMS]
+    labels = [f"{words(cue)}: {form}" for cue in cues for form in FORMS]
     y = np.arange(len(labels))
     fig, axes = plt.subplots(
-        len(panels), 2, figsize=(10, 1.0 + 0.32 * len(labels) * len(panels)), squeeze=False
+        len(panels), 2, figsize=(COLUMN_IN, 1.0 + 0.36 * len(labels) * len(panels)), squeeze=False
     )
     for i, (measure, mode) in enumerate(panels):
         for j, effect in enumerate(("congruency", "size")):
@@ -734,11 +815,10 @@ def words_effects(by_form, replications, path) -> None:
             ax.set_yticks(y)
             ax.set_yticklabels(labels if j == 0 else [])
             ax.invert_yaxis()
-            ax.set_title(f"{effect}: {measure.replace('_', ' ')}, {mode.replace('_', ' ')}",
-                         fontsize=9)  # fmt: skip
+            ax.set_title(f"{effect}: {words(measure)},\n{words(mode)}", fontsize=9)
             ax.tick_params(labelsize=8)
     for ax in axes[-1]:
-        ax.set_xlabel("effect (positive: the paper's direction)")
+        ax.set_xlabel("effect\n(positive: the paper's direction)")
     fig.tight_layout()
     save(fig, path)
 
@@ -762,8 +842,10 @@ def claim_cells(cells, declared, cues, path) -> None:
     }
     grips = {"power": "#1f77b4", "precision": "#d95f02"}
     rows = {"rmse": "RMSE, all trials", "wrong_rate": "wrong-grip rate"}
-    fig = plt.figure(figsize=(12, 9))
-    grid = fig.add_gridspec(3, len(conditions), height_ratios=(1, 0.8, 0.8), hspace=0.6, wspace=0.4)
+    fig = plt.figure(figsize=(COLUMN_IN, 9.6))
+    grid = fig.add_gridspec(
+        3, len(conditions), height_ratios=(1, 0.8, 0.8), hspace=0.75, wspace=0.5
+    )
     x = {"large": 0.0, "small": 1.0}
     for j, (cue, mode) in enumerate(conditions):
         for i, (value, label) in enumerate(rows.items()):
@@ -799,13 +881,13 @@ def claim_cells(cells, declared, cues, path) -> None:
             if i == 0:
                 tests = declared[(declared["cue"] == cue) & (declared["mode"] == mode)]
                 tests = tests[tests["measure"] == "rmse"].set_index("effect")["estimate"]
-                said = ", ".join(f"{e} {tests[e]:+.4f}".replace("-", "−") for e in tests.index)
-                ax.set_title(f"{names[cue]}\n{names[mode]}\n{said}", fontsize=9)
+                said = "\n".join(f"{e} {tests[e]:+.4f}".replace("-", "−") for e in tests.index)
+                ax.set_title(f"{names[cue]}\n{names[mode]}\n{said}", fontsize=8.5)
     wrong = cells[(cells["mode"] == "closed_loop") & (cells["congruent"] == False)]  # noqa: E712
     for k, (value, label) in enumerate(
         {
-            "wrong_commitment": "how far towards the other grip (0: the grip asked, 1: the other)",
-            "wrong_cost": "their RMSE less that of the same cell's correct trials",
+            "wrong_commitment": "how far towards the other grip\n(0: the grip asked, 1: the other)",
+            "wrong_cost": "their RMSE less that of\nthe same cell's correct trials",
         }.items()
     ):
         ax = fig.add_subplot(grid[2, 2 * k : 2 * k + 2])
@@ -820,7 +902,7 @@ def claim_cells(cells, declared, cues, path) -> None:
                 )
                 if np.isfinite(err).all():
                     ax.errorbar(xi, cell["mean"], yerr=err, fmt="none", color="black", capsize=2)
-        ax.set_xticks([0, 1], ["large object", "small object"], fontsize=9)
+        ax.set_xticks([0, 1], ["large\nobject", "small\nobject"], fontsize=9)
         ax.tick_params(labelsize=9)
         ax.set_title(f"closed loop, wrong-grip trials:\n{label}", fontsize=9)
         ax.grid(axis="y", alpha=0.3)
@@ -841,9 +923,9 @@ def claim_cells(cells, declared, cues, path) -> None:
     fig.legend(
         handles=key,
         loc="upper center",
-        ncol=5,
+        ncol=3,
         fontsize=9,
         frameon=False,
-        bbox_to_anchor=(0.5, 1.0),
+        bbox_to_anchor=(0.5, 1.03),
     )
     save(fig, path)
