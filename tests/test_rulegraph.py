@@ -54,13 +54,13 @@ def test_the_drawing_shows_the_direct_needs_in_columns(tmp_path):
 
 
 def test_no_two_boxes_of_the_drawing_overlap():
-    """Columns of boxes of different widths: boxes of one column a row apart, columns side by
-    side without touching, every box inside the drawing."""
+    """Layers of boxes of different widths, top to bottom: a layer wider than the drawing wraps,
+    boxes of a line ``gap`` apart, lines a row apart, every box inside the drawing."""
     from icub_workflow.rulegraph_figure import placed
 
     columns = [["a", "bb"], ["ccc", "d", "e"], ["f"]]
     box = {"a": 0.5, "bb": 1.2, "ccc": 2.0, "d": 0.4, "e": 0.9, "f": 0.7}
-    centre, (width, height) = placed(columns, box, row=0.3, gap=0.2)
+    centre, (width, height) = placed(columns, box, width=3.0, row=0.3, gap=0.2)
     names = list(box)
     for i, m in enumerate(names):
         for n in names[i + 1 :]:
@@ -71,7 +71,9 @@ def test_no_two_boxes_of_the_drawing_overlap():
     for name, (x, y) in centre.items():
         assert 0 < x - box[name] / 2 and x + box[name] / 2 < width, name
         assert 0 < y - 0.15 and y + 0.15 < height, name
-    assert centre["f"][1] == centre["d"][1] == height / 2  # a column is centred
+    # "ccc", "d" fill a line of 3.0 in, "e" wraps below them; "f" is the last layer's line
+    assert centre["ccc"][1] == centre["d"][1] > centre["e"][1] > centre["f"][1]
+    assert centre["a"][1] > centre["ccc"][1] and width == 3.1
 
 
 def test_a_text_that_is_no_rule_graph_is_refused():

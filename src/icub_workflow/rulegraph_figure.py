@@ -1,5 +1,5 @@
 """The DAG drawn for the book's reproduction page: the rules of ``data/book/rulegraph.dot`` (rule
-``rulegraph``) left to right, each arrow a direct need, laid out the same on every build."""
+``rulegraph``) top to bottom, each arrow a direct need, laid out the same on every build."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import networkx as nx  # noqa: E402
 
-from icub_affordance.figures import save  # noqa: E402
+from icub_affordance.figures import COLUMN_IN, save  # noqa: E402
 
 
 def rule_graph(dot: str) -> nx.DiGraph:
@@ -52,29 +52,43 @@ def layers(graph: nx.DiGraph, sweeps: int = 3) -> list[list[str]]:
 
 
 def placed(
-    columns: list[list[str]], box: dict[str, float], row: float = 0.27, gap: float = 0.32
+    columns: list[list[str]],
+    box: dict[str, float],
+    width: float,
+    row: float = 0.45,
+    gap: float = 0.12,
 ) -> tuple[dict[str, tuple[float, float]], tuple[float, float]]:
-    """Each rule's box centre (inches) and the drawing's size: the columns left to right, each
-    as wide as its widest box (``box``: a rule's box width) and ``gap`` apart, each column's
-    rules ``row`` apart and centred on the middle, so that no two boxes overlap."""
-    widths = [max(box[name] for name in column) for column in columns]
-    size = (sum(widths) + gap * (len(columns) - 1) + 0.1, max(map(len, columns)) * row + 0.1)
-    centre, left = {}, 0.05
-    for column, width in zip(columns, widths, strict=True):
-        top = size[1] / 2 + (len(column) - 1) * row / 2
-        for k, name in enumerate(column):
-            centre[name] = (left + width / 2, top - k * row)
-        left += width + gap
+    """Each rule's box centre (inches) and the drawing's size: the layers (``columns``) top to
+    bottom, each in lines of boxes (``box``: a rule's box width) ``gap`` apart, a line wrapping
+    before it would be wider than ``width``, each line centred and ``row`` below the last, so
+    that no two boxes overlap and the drawing fits a page's text column."""
+    lines: list[list[str]] = []
+    for column in columns:
+        line: list[str] = []
+        for name in column:
+            if line and sum(box[n] + gap for n in line) + box[name] > width:
+                lines.append(line)
+                line = []
+            line.append(name)
+        lines.append(line)
+    size = (width + 0.1, len(lines) * row + 0.1)
+    centre = {}
+    for k, line in enumerate(lines):
+        left = 0.05 + (width - sum(box[n] for n in line) - gap * (len(line) - 1)) / 2
+        for name in line:
+            centre[name] = (left + box[name] / 2, size[1] - 0.05 - row / 2 - k * row)
+            left += box[name] + gap
     return centre, size
 
 
 def draw_rulegraph(dot: str, path: str | os.PathLike[str]) -> None:
-    """The rule graph ``dot``, drawn left to right to ``path`` (PNG): one box per rule, none
-    overlapping another (``placed``), and each arrow from the right edge of a rule's box to the
-    left edge of the box of the rule that needs it."""
+    """The rule graph ``dot``, drawn top to bottom to ``path`` (PNG), as wide as the book's text
+    column so that its names read at the page's width: one box per rule, none overlapping
+    another (``placed``), and each arrow from the bottom of a rule's box to the top of the box
+    of the rule that needs it."""
     graph = rule_graph(dot)
     columns = layers(graph)
-    font = 7.5  # points
+    font = 8.5  # points
     fig = plt.figure(figsize=(1, 1))
     renderer = fig.canvas.get_renderer()
     probe = fig.text(0, 0, "", fontsize=font)
@@ -83,16 +97,17 @@ def draw_rulegraph(dot: str, path: str | os.PathLike[str]) -> None:
         probe.set_text(name)
         box[name] = probe.get_window_extent(renderer).width / fig.dpi + 0.12
     probe.remove()
-    centre, size = placed(columns, box)
+    centre, size = placed(columns, box, COLUMN_IN)
     fig.set_size_inches(*size)
     ax = fig.add_axes((0, 0, 1, 1))
     ax.set_xlim(0, size[0])
     ax.set_ylim(0, size[1])
     ax.axis("off")
+    half = 0.11  # half a box's height, inches
     for a, b in graph.edges:
         (xa, ya), (xb, yb) = centre[a], centre[b]
         ax.annotate(
-            "", xy=(xb - box[b] / 2, yb), xytext=(xa + box[a] / 2, ya),
+            "", xy=(xb, yb + half), xytext=(xa, ya - half),
             arrowprops=dict(arrowstyle="-|>", color="0.6", lw=0.6, shrinkA=0, shrinkB=0,
                             mutation_scale=7),
         )  # fmt: skip

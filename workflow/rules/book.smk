@@ -172,7 +172,7 @@ rule rulegraph:
 
 
 rule rulegraph_figure:
-    """The DAG drawn for the book's reproduction page: the rules left to right, each arrow a
+    """The DAG drawn for the book's reproduction page: the rules top to bottom, each arrow a
     direct need (plot only)."""
     input:
         dot=rules.rulegraph.output[0],
