@@ -13,6 +13,7 @@ matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.text  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 from icub_affordance.files import atomic_path  # noqa: E402
@@ -45,6 +46,8 @@ WORDS = {
     "first_step": "cue at the first step",
     "all_steps": "cue at every step",
     "rmse": "all-trial RMSE",
+    "fixed": "Goal map fixed",
+    "grows": "Goal map grows",
     "rmse_per_grip_distance_null": "RMSE per grip distance, its null control",
     "rmse_per_grip_distance_excess": "RMSE per grip distance, excess over its null control",
 }
@@ -55,6 +58,14 @@ def words(name: str) -> str:
     from icub_affordance.trials.scores import LABELS as MEASURES
 
     return WORDS.get(name) or MEASURES.get(name) or name.replace("_", " ")
+
+
+def wrapped(text: str, width: int = 34) -> str:
+    """A panel's title in lines of at most ``width`` characters: side by side panels' titles
+    at the column's width do not run into each other."""
+    import textwrap
+
+    return "\n".join(textwrap.fill(part, width) for part in text.split("\n"))
 
 
 def smallest_font_pt(fig: plt.Figure) -> float:
@@ -426,9 +437,11 @@ def readings_effects(summary, replications, path) -> None:
                 if j == 0:
                     ax.legend(fontsize=8, loc="best")
             ax.axvline(0, color="0.3", lw=0.8)
-            ax.set_yticks(y, readings if j == 0 else [""] * len(readings), fontsize=8)
+            shown = [",\n".join(words(part) for part in r.split("+")) for r in readings]
+            ax.set_yticks(y, shown if j == 0 else [""] * len(readings), fontsize=8)
+            ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
             ax.invert_yaxis()
-            ax.set_title(f"{effect}: {words(measure)}", fontsize=9)
+            ax.set_title(wrapped(f"{effect}: {words(measure)}"), fontsize=9)
             ax.grid(alpha=0.3)
     fig.suptitle(
         "difference in the paper's direction (> 0), 95% interval;\ngreen / red: Holm-adjusted "
@@ -603,7 +616,7 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
         ax.axhline(0, color="0.3", lw=0.8)
         ax.axvline(0, color="0.3", lw=0.8, ls=":")
         measure = crossed["measure"].iloc[0] if len(crossed) else ""
-        ax.set_title(f"{words(measure)}, {words(cue)}:\neach replication's two runs",
+        ax.set_title(wrapped(f"{words(measure)}, {words(cue)}: each replication's two runs"),
                      fontsize=9)  # fmt: skip
         ax.set_xlabel("gap: large − small object's grips'\ndistance (circle: natural,"
                       " diamond: swapped)", fontsize=8)  # fmt: skip
@@ -634,13 +647,11 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
             removed = reps[reps["dose"] == "removed"]
             ax.scatter([x["removed"]] * len(removed), removed["estimate"], s=6, c="0.45", zorder=3)
             ax.axhline(0, color="0.3", lw=0.8)
-            ax.set_title(f"{words(measure)},\n{words(cue)}", fontsize=9)
+            ax.set_title(wrapped(f"{words(measure)}, {words(cue)}"), fontsize=9)
             ax.set_ylabel("size effect\n(> 0: large lower)", fontsize=8)
             ax.set_xticks([x["removed"], *(x[d] for d in doses)],
                           ["none", *(f"{d:g}" for d in doses)], fontsize=8)  # fmt: skip
             ax.grid(alpha=0.3)
-            if i == 1 and j == 0:
-                ax.legend(fontsize=8, loc="best")
         ax = axes[-1, j]
         checks = manipulation[(manipulation["cue"] == cue) & (manipulation["dose"] != "removed")]
         mean_ratio = checks.groupby(["shape", "map", "dose"], sort=False)["ratio"].mean()
@@ -662,7 +673,9 @@ def dose_response(summary, replications, manipulation, crossed, path) -> None:
         ax.grid(alpha=0.3)
         if j == 0:
             ax.legend(fontsize=8, loc="best")
-    fig.tight_layout()
+    handles, labels = axes[1, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=8.5, loc="upper center", ncol=2, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / fig.get_figheight()))
     save(fig, path)
 
 
@@ -815,8 +828,9 @@ def words_effects(by_form, replications, path) -> None:
             ax.set_yticks(y)
             ax.set_yticklabels(labels if j == 0 else [])
             ax.invert_yaxis()
-            ax.set_title(f"{effect}: {words(measure)},\n{words(mode)}", fontsize=9)
+            ax.set_title(wrapped(f"{effect}: {words(measure)}, {words(mode)}"), fontsize=9)
             ax.tick_params(labelsize=8)
+            ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(5))
     for ax in axes[-1]:
         ax.set_xlabel("effect\n(positive: the paper's direction)")
     fig.tight_layout()
