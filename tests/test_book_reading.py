@@ -480,3 +480,33 @@ def test_the_scorecard_puts_each_dose_beside_the_dose_0_rows_then_the_contrast()
     size = table.loc[table["chapter"] == "size", "claim or question"].tolist()
     assert len(size) == 4
     assert "(dose 0)" in size[0] and "(dose 0.6)" in size[1] and "dose contrast" in size[3]
+
+
+def article_words(page: Path) -> str:
+    """A built page's article, tables and folded sections included, as plain text."""
+    article = re.search(r"<article.*?</article>", page.read_text(), re.S)
+    text = re.sub(
+        r"<(script|style)\b.*?</\1>", " ", article.group(0) if article else "", flags=re.S
+    )
+    return re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", " ", text))).replace("’", "'")
+
+
+def retired_in(text: str) -> list[str]:
+    """The retired verdict words (book.words.RETIRED) a text still uses, each once."""
+    from icub_workflow.book.words import RETIRED
+
+    return [word for word in RETIRED if re.search(rf"\b{re.escape(word)}\b", text)]
+
+
+def test_the_book_and_the_readme_speak_only_the_five_verdict_words(built):
+    """Issue 69: the verdict words the book once used (reproduced, shown, opposite, falls short,
+    not known, not testable, ...) are gone from every page, tables and dropdowns included, and
+    from the README; the five that replace them are defined once, on the front page."""
+    from icub_workflow.book.words import VERDICTS
+
+    pages = {name: article_words(built / HTML / f"{name}.html") for name in toc_chapters()}
+    assert {name: retired_in(text) for name, text in pages.items() if retired_in(text)} == {}
+    assert retired_in((REPO / "README.md").read_text()) == []
+    definitions = re.search(r"Five words(.*?)How to read the scorecard", pages["index"])
+    assert definitions, "the front page defines the five words in one section"
+    assert all(word.capitalize() in definitions.group(1) for word in VERDICTS)

@@ -136,6 +136,9 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         word = words.REACTIVATION_WORDS[row["direction"]]
         values[f"{key}_verdict"] = text.Claim(word, (f"words.{key}_estimate",
                                                      f"words.{key}_p_holm"))  # fmt: skip
+        # the scorecard's word for it, one of the five (the row names what is tested)
+        values[f"{key}_word"] = text.Claim(words.CLAIM_WORDS[row["direction"]],
+                                           values[f"{key}_verdict"].rests_on)  # fmt: skip
     verdicts = {k.removeprefix("react_").removesuffix("_verdict"): v for k, v in values.items()
                 if k.startswith("react_") and k.endswith("_verdict")}  # fmt: skip
     values["react_verdict"] = text.Claim(
@@ -178,8 +181,11 @@ def score_rows(values: Mapping) -> tuple[dict, list[dict]]:
                      "chapter": "words"})  # fmt: skip
     cues = [k.removeprefix("react_").removesuffix("_estimate") for k in values
             if k.startswith("react_") and k.endswith("_estimate")]  # fmt: skip
-    word = values["react_verdict"]
-    said["score_words_reactivation_verdict"] = text.Claim(word.text, word.rests_on)
+    word = text.Claim(
+        text.by_cue({cue: values[f"react_{cue}_word"].text for cue in cues}),
+        tuple(r for cue in cues for r in values[f"react_{cue}_word"].rests_on),
+    )
+    said["score_words_reactivation_verdict"] = word
     rows.append({"claim or question": "A name's hidden state is nearer its own object's image "
                                       "state than the others'",
                  "paper": "not asked",

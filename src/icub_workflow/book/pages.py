@@ -753,7 +753,7 @@ SIGNATURE_NAMES = {"grows_with_rt": "The effect grows with reaction time",
 #: effect fades in people (here: the scripts that write results import ``words``, and a
 #: word added there would rerun them).
 EXTINCTION_LEVEL_WORDS = {Outcome.PAPER: "smaller than in view, as in people",
-                          Outcome.AGAINST: "larger than in view, the opposite of people",
+                          Outcome.AGAINST: "larger than in view, unlike people",
                           Outcome.NONE: "not shown to differ from in view",
                           Outcome.NOT_ASSESSABLE: words.NOT_ASSESSABLE}  # fmt: skip
 
@@ -812,7 +812,7 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
         for stat in ("estimate", "ci_low", "ci_high", "p_adjusted"):
             values[f"in_view_{stat}"] = float(row[stat])
         found = row["p_adjusted"] < science.ALPHA
-        word = ("is shown (incongruent slower)" if row["estimate"] > 0 else "is reversed") if (
+        word = ("is confirmed (incongruent slower)" if row["estimate"] > 0 else "is reversed") if (
             found) else "is not shown"  # fmt: skip
         values["in_view_verdict"] = text.Claim(
             word,
