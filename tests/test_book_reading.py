@@ -144,7 +144,7 @@ def test_each_scorecard_verdict_follows_its_test():
     # beside the dose-0 rows: the other dose's and the dose contrast's
     assert base["score_size_size_06_first_step_verdict"] == "confirmed"
     assert base["score_size_dose_first_step_verdict"] == "confirmed"
-    assert base["score_robot_own_verdict"] == "not shown"
+    assert base["score_robot_own_verdict"] == "reversed"
     assert base["score_robot_best_verdict"] == "confirmed"
     # a signature's row shows the verdict its chapter's test gave
     # (icub_affordance.analysis.signature_tests)

@@ -30,8 +30,8 @@ RETIRED = ("reproduced", "shown, opposite", "opposite", "not known", "falls shor
 REPRODUCED = SHOWN = CONFIRMED
 NOT_TESTABLE = NOT_ASSESSABLE
 #: The robot rows of the scorecard: the bar (``verdicts.GRASPS``) against the 95% interval of
-#: the share held; an interval wholly below the bar is "not shown" too (the interval is beside).
-BAR_WORDS = {"above": CONFIRMED, "includes": NOT_SHOWN, "below": NOT_SHOWN}
+#: the share held: above it, confirmed; wholly below it, found the other way.
+BAR_WORDS = {"above": CONFIRMED, "includes": NOT_SHOWN, "below": REVERSED}
 
 # -- a test's p against ALPHA, on the side of its estimate -------------------------------------
 
