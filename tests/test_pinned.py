@@ -124,6 +124,7 @@ def test_every_pages_findings_rest_on_tests_of_the_build():
         rf"run/{cue}/{mode}/(rmse|errors|rmse_correct)/{effect}",
         rf"readings/{cue}/(fixed|grows)/(rmse|rmse_correct|wrong_grip|commitment)/{effect}",
         rf"size/(size|grip_distance|dose)/[0-9.\-]+/{cue}",
+        rf"size_metric/(final_posture|trajectory_rms)/(size|grip_distance|size_larger)/[0-9.]+/{cue}",
         r"signatures/(in_view|grows_with_rt|extinction|brief_exposure|advance_cueing)",
         r"signature_errors/(in_view|extinction|brief_exposure)/[0-9]+",
         rf"words/{cue}/{mode}/(rmse_correct|wrong_grip)/(congruency|size|equivalence)",

@@ -129,6 +129,7 @@ rule verdicts:
         runs=[BOOK_DATA["anova.json"], BOOK_DATA["ablation_anova.json"]],
         readings=BOOK_DATA["readings_summary.csv"],
         size_study=BOOK_DATA["size_declared.csv"],
+        size_metrics=BOOK_DATA["size_trajectory_tests.csv"],
         signatures=BOOK_DATA["signatures_summary.csv"],
         signature_errors=BOOK_DATA["signatures_errors.csv"],
         words=BOOK_DATA["words_summary.csv"],

@@ -18,6 +18,7 @@ with redirect_log(snakemake.log[0]):
         },
         "readings": pd.read_csv(inputs.readings),
         "size": pd.read_csv(inputs.size_study),
+        "size_metrics": pd.read_csv(inputs.size_metrics),
         "signatures": pd.read_csv(inputs.signatures, keep_default_na=False, na_values=[""]),
         "signature_errors": pd.read_csv(inputs.signature_errors),
         "words": pd.read_csv(inputs.words),

@@ -34,6 +34,11 @@ def _code(estimate: float, p_holm: float) -> str:
     return DIRECTION_CODES[direction(estimate, p_holm, ALPHA)]
 
 
+def _dose(dose: object) -> str:
+    """A dose as a test's name holds it: ``0``, ``0.6``, ``0.6-0`` (a contrast)."""
+    return f"{dose:g}" if isinstance(dose, float | int) else str(dose).replace(" ", "")
+
+
 def verdict_rows(
     claims: pd.DataFrame,
     correct_sensitivity: pd.DataFrame,
@@ -79,7 +84,8 @@ def verdict_rows(
 
 def study_rows(studies: Mapping[str, object]) -> list[dict]:
     """The chapters' own tests, each where ``studies`` has its table: ``runs`` (cue timing ->
-    that run's ``eval/anova.json``), ``readings``, ``size``, ``signatures``,
+    that run's ``eval/anova.json``), ``readings``, ``size``,
+    ``size_metrics`` (the second metric's, added after results), ``signatures``,
     ``signature_errors``, ``words``, ``contact_time``, ``confirmation``."""
     rows: list[dict] = []
     for cue, anova in (studies.get("runs") or {}).items():
@@ -97,11 +103,20 @@ def study_rows(studies: Mapping[str, object]) -> list[dict]:
     if "size" in studies:
         rows += [
             {
-                "test": f"size/{r['test']}/{str(r['dose']).replace(' ', '')}/{r['cue']}",
+                "test": f"size/{r['test']}/{_dose(r['dose'])}/{r['cue']}",
                 "family": r["family"],
                 "code": _code(r["estimate"], r["p_holm"]),
             }
             for r in studies["size"].to_dict("records")
+        ]
+    if "size_metrics" in studies:
+        rows += [
+            {
+                "test": f"size_metric/{r['metric']}/{r['test']}/{_dose(r['dose'])}/{r['cue']}",
+                "family": r["family"],
+                "code": _code(r["estimate"], r["p_holm"]),
+            }
+            for r in studies["size_metrics"].to_dict("records")
         ]
     if "signatures" in studies:
         table = studies["signatures"]
