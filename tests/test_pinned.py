@@ -197,3 +197,23 @@ def test_each_chapters_tests_are_named_with_the_code_their_numbers_give():
     assert rows["signatures/brief_exposure"] == "reversed"
     assert rows["signatures/in_view"] == "paper"
     assert rows["robot/held_vs_bar"] == "none"  # the fresh networks' interval includes 0.9
+
+
+def test_the_distractors_tests_are_named_with_their_tables_direction():
+    """The distractor's tests (issue 73) join the verdict table as
+    ``distractor/{lam}/{cue}/{mode}/{measure}/{effect}``, their code the sign their table
+    holds (positive: the grip compatible with the object faster), each in its family."""
+    from icub_workflow.book_build.verdict_table import study_rows
+
+    keys = {"cue": "first_step", "mode": "teacher_forced", "measure": "rmse"}
+    summary = pd.DataFrame(
+        [keys | {"lam": 0.25, "effect": "congruency", "direction": 1, "family": "declared"},
+         keys | {"lam": 0.5, "effect": "compatibility", "direction": -1, "family": "declared"},
+         keys | {"lam": -0.25, "effect": "compatibility", "direction": 0, "family": "inhibition"}]
+    )  # fmt: skip
+    rows = {r["test"]: (r["code"], r["family"]) for r in study_rows({"distractor": summary})}
+    assert rows == {
+        "distractor/0.25/first_step/teacher_forced/rmse/congruency": ("paper", "declared"),
+        "distractor/0.5/first_step/teacher_forced/rmse/compatibility": ("reversed", "declared"),
+        "distractor/-0.25/first_step/teacher_forced/rmse/compatibility": ("none", "inhibition"),
+    }

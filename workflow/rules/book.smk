@@ -92,6 +92,10 @@ _GROWS = PLAN.first_reading_run("grows")
 if _GROWS is not None and config["soms"]["goal_response"] != "grows":
     BOOK_DATA["readings_grows_soms.npz"] = PLAN.path(PLAN.stage_run(_GROWS, "soms"), "soms/soms.npz")
 
+# the distractor's declared tests (signatures.md), when the build makes them (distractor.run)
+if config["distractor"]["run"]:
+    BOOK_DATA["distractor_summary.csv"] = "data/distractor/summary.csv"
+
 # With `--config robustness=True` the book also shows the sweep and its cost (reproduce.md);
 # without, that page says that this build did not run them.
 if PLAN.robustness:
@@ -107,6 +111,8 @@ if PLAN.robustness:
 # data file the book stages (BOOK_DATA); the pages only glue and display them. It reads no figure.
 FINDINGS_READS = [name for name in BOOK_DATA if not name.endswith((".png", ".gif"))]
 FINDINGS_TABLES = [*TABLES, *(FULL_SCALE_TABLES if PLAN.robustness else ())]
+# the distractor's tables (signatures.md), when the build makes its tests (distractor.run)
+FINDINGS_TABLES += ["distractor", "distractor_cells"] if config["distractor"]["run"] else []
 FINDINGS_CONFIG = [
     "seed", "object_sizes_m", "vision", "demos", "soms", "network", "robustness", "sweep", "readings",
     "robot", "size_dose", "signatures", "confirmation", "names", "words",
@@ -135,6 +141,9 @@ rule verdicts:
         words=BOOK_DATA["words_summary.csv"],
         contact_time=BOOK_DATA["robot_contact_time.csv"],
         confirmation=BOOK_DATA["robot_confirmation.csv"],
+        # the distractor's declared tests, when the build makes them (config distractor.run)
+        **({"distractor": BOOK_DATA["distractor_summary.csv"]} if config["distractor"]["run"]
+           else {}),
         code=script_code("verdicts"),
     params:
         # the cue timing of each run in `runs`: the config's own, then the other

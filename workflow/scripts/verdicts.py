@@ -24,6 +24,7 @@ with redirect_log(snakemake.log[0]):
         "words": pd.read_csv(inputs.words),
         "contact_time": pd.read_csv(inputs.contact_time),
         "confirmation": pd.read_csv(inputs.confirmation),
+        **({"distractor": pd.read_csv(inputs.distractor)} if "distractor" in inputs.keys() else {}),
     }
     table = verdict_rows(
         pd.read_csv(inputs.claims),

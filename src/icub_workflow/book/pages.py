@@ -839,6 +839,82 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     return values, {"signatures": pd.DataFrame(rows)}
 
 
+#: The distractor's cells in short, for its tables (signatures.md, "Two objects at once").
+DISTRACTOR_CUES = {"first_step": "first step", "all_steps": "every step"}
+DISTRACTOR_MODES = {"teacher_forced": "forced", "closed_loop": "closed loop"}
+DISTRACTOR_MEASURES = {"rmse": "all trials", "rmse_correct": "correct trials"}
+#: Each distractor test's sign, in words: positive is the grip compatible with the object faster.
+DISTRACTOR_SIGNS = {
+    Outcome.PAPER: "positive",
+    Outcome.AGAINST: "negative",
+    Outcome.NONE: words.NOT_SHOWN,
+    Outcome.NOT_ASSESSABLE: words.NOT_ASSESSABLE,
+}
+
+
+def distractor_name(row: Mapping) -> str:
+    """A distractor test's findings key: ``distractor_{lam}_{cue}_{mode}_{measure}_{effect}``,
+    the weight without its point and its minus an ``m`` (-0.25: ``m025``)."""
+    lam = f"{float(row['lam']):g}".replace("-", "m").replace(".", "")
+    return "_".join(["distractor", lam, *(str(row[k]) for k in ("cue", "mode", "measure",
+                                                                  "effect"))])  # fmt: skip
+
+
+def distractor_values(summary: pd.DataFrame) -> tuple[dict, dict[str, pd.DataFrame]]:
+    """A distractor at test (config ``distractor``): each test's estimate, interval and Holm p
+    (``distractor_name``), each effect's signs counted per family (a ``Claim`` on the Holm p's:
+    ``distractor_{effect}_declared``, ``..._inhibition``), and the cells' table: an estimate
+    and its interval, in parentheses where Holm p is not below alpha."""
+    tests = summary.assign(
+        name=[distractor_name(r) for r in summary.to_dict("records")],
+        sign=[DISTRACTOR_SIGNS[Outcome(int(d))] for d in summary["direction"]],
+    )
+    values: dict = {}
+    rows: dict[tuple, dict] = {}
+    for r in tests.to_dict("records"):
+        values |= {f"{r['name']}_{stat}": float(r[stat])
+                   for stat in ("estimate", "ci_low", "ci_high", "p_holm")}  # fmt: skip
+        shown = f"{r['estimate']:+.4f} [{r['ci_low']:+.4f}, {r['ci_high']:+.4f}]"
+        cell = rows.setdefault((r["lam"], r["cue"], r["mode"], r["measure"]), {
+            "λ": f"{float(r['lam']):g}", "cue": DISTRACTOR_CUES[r["cue"]],
+            "mode": DISTRACTOR_MODES[r["mode"]], "measure": DISTRACTOR_MEASURES[r["measure"]],
+        })  # fmt: skip
+        cell[r["effect"]] = shown if r["sign"] in ("positive", "negative") else f"({shown})"
+    for part, chosen in (("declared", tests["lam"] > 0), ("inhibition", tests["lam"] < 0)):
+        family = tests[chosen]
+        values[f"distractor_{part}_family"] = str(family["family"].iloc[0])
+        values[f"distractor_{part}_size"] = int(family["family_size"].iloc[0])
+        for effect, group in family.groupby("effect"):
+            counts = group["sign"].value_counts()
+            values[f"distractor_{effect}_{part}"] = text.Claim(
+                ", ".join(f"{word} in {counts[word]}" for word in DISTRACTOR_SIGNS.values()
+                          if word in counts) + f" of {len(group)} cells",
+                tuple(f"signatures.{n}_p_holm" for n in group["name"]))  # fmt: skip
+    values["distractor_replications"] = int(tests["replications"].min())
+    order = sorted(rows, key=lambda k: (k[0] < 0, abs(k[0]), list(DISTRACTOR_CUES).index(k[1]),
+                                        list(DISTRACTOR_MODES).index(k[2]), k[3]))  # fmt: skip
+    table = pd.DataFrame([rows[k] for k in order]).rename(
+        columns={"congruency": "target congruency", "compatibility": "distractor compatibility"}
+    )
+    cells = table[table["λ"].astype(float) > 0]
+    short = {}  # the declared family's cells, estimates only: one row per cue x mode x measure
+    for _, r in cells.iterrows():
+        row = short.setdefault(
+            (r["cue"], r["mode"], r["measure"]),
+            {"cue": r["cue"], "mode": r["mode"], "measure": r["measure"]},
+        )
+        for effect, label in (("target congruency", "target"),
+                              ("distractor compatibility", "distractor")):  # fmt: skip
+            est = r[effect].split(" [")[0]
+            row[f"{label}, λ {r['λ']}"] = est + (")" if est.startswith("(") else "")
+    short_table = pd.DataFrame(list(short.values()))
+    effects = sorted(short_table.columns[3:], key=lambda c: (not c.startswith("target"), c))
+    return values, {
+        "distractor": table,
+        "distractor_cells": short_table[[*short_table.columns[:3], *effects]],
+    }
+
+
 def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
                   scale: dict[str, dict[str, int]], sweep_jobs: Mapping[str, object] | None = None
                   ) -> tuple[dict, dict[str, pd.DataFrame]]:  # fmt: skip
@@ -870,6 +946,9 @@ def page_findings(inputs: Mapping[str, str], config: dict, ablation_cue: str,
         "signatures": signatures(inputs, config), "words": words_page(inputs, config),
     }.items():  # fmt: skip
         pages[page], tables = values, tables | shown
+    if "distractor_summary.csv" in inputs:  # config distractor.run: signatures.md's last section
+        values, shown = distractor_values(pd.read_csv(inputs["distractor_summary.csv"]))
+        pages["signatures"], tables = pages["signatures"] | values, tables | shown
     said, rows = score_rows(pages["words"])
     score_values |= said
     score_table = pd.concat([score_table, pd.DataFrame(rows)], ignore_index=True)

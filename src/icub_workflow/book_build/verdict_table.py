@@ -86,7 +86,9 @@ def study_rows(studies: Mapping[str, object]) -> list[dict]:
     """The chapters' own tests, each where ``studies`` has its table: ``runs`` (cue timing ->
     that run's ``eval/anova.json``), ``readings``, ``size``,
     ``size_metrics`` (the second metric's, added after results), ``signatures``,
-    ``signature_errors``, ``words``, ``contact_time``, ``confirmation``."""
+    ``signature_errors``, ``words``, ``contact_time``, ``confirmation``, ``distractor`` (its
+    summary.csv: a code from its ``direction``, positive the grip compatible with the object
+    faster, whatever people's direction for the effect)."""
     rows: list[dict] = []
     for cue, anova in (studies.get("runs") or {}).items():
         rows += run_rows(cue, anova)
@@ -169,6 +171,16 @@ def study_rows(studies: Mapping[str, object]) -> list[dict]:
                 ],
             }
             for r in table[table["seed_set"] == "confirmation"].head(1).to_dict("records")
+        ]
+    if "distractor" in studies:
+        rows += [
+            {
+                "test": f"distractor/{float(r['lam'])}/{r['cue']}/{r['mode']}/{r['measure']}/"
+                f"{r['effect']}",
+                "family": r["family"],
+                "code": DIRECTION_CODES[Outcome(int(r["direction"]))],
+            }
+            for r in studies["distractor"].to_dict("records")
         ]
     return rows
 
