@@ -129,6 +129,7 @@ def test_every_pages_findings_rest_on_tests_of_the_build():
         r"signature_errors/(in_view|extinction|brief_exposure)/[0-9]+",
         rf"words/{cue}/{mode}/(rmse_correct|wrong_grip)/(congruency|size|equivalence)",
         r"robot/(contact_time/congruency|held_vs_bar)",
+        rf"distractor/-?[0-9.]+/{cue}/{mode}/(rmse|rmse_correct)/(congruency|compatibility)",
     ]
     unknown = [t for t, _ in assumed if not any(re.fullmatch(n, t) for n in named)]
     assert unknown == []
