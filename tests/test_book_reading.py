@@ -212,8 +212,22 @@ def test_where_every_replication_disagrees_with_the_confirmation_the_scorecard_s
         inputs[0] = correct
         _, table = scorecard.scorecard(*inputs, sensitivity=sensitivity_rows(p_holm))
         row = table[table["claim or question"].str.startswith("Congruent")].iloc[0]
-        said = "over every replication, none left out (exploration), not shown in closed loop"
-        assert (said in row["this build"]) == differs, row["this build"]
+        # led by every replication's verdicts, the declared ones beside them
+        every = "over every replication (exploration), teacher forced: confirmed under both"
+        assert row["this build"].startswith(every), row["this build"]
+        assert ("closed loop: not shown with the cue at the first step" in row["this build"]) \
+            == differs, row["this build"]  # fmt: skip
+        assert ". Declared (confirmatory), teacher forced: " in row["this build"]
+        assert row["verdict"].startswith("every replication: confirmed in ")
+        assert "; declared: confirmed in 4 of 4" in row["verdict"]
+    # a declared test on fewer replications says what they were selected on
+    inputs[0] = correct.assign(estimable=np.where(correct["mode"] == "closed_loop", 5, 10))
+    _, table = scorecard.scorecard(*inputs, sensitivity=sensitivity_rows())
+    row = table[table["claim or question"].str.startswith("Congruent")].iloc[0]
+    assert row["this build"].endswith("on the replications with a correct trial in every cell: "
+                                      "5 of 10 (closed loop, cue at the first step), 5 of 10 "
+                                      "(closed loop, cue at every step)")  # fmt: skip
+    assert row["measured at"] == "10 replications × 12 networks per condition"
     _, claims = scorecard.claims_values(
         correct, correct.assign(power_at_least=0.9), sensitivity_rows(0.3), cell_counts()
     )

@@ -13,6 +13,7 @@ from conftest import load_config
 from scipy import stats
 
 from icub_affordance.analysis.name_effects import (
+    FAMILY_DIFFERENCE,
     declared_tests,
     error_cells,
     form_summary,
@@ -21,6 +22,7 @@ from icub_affordance.analysis.name_effects import (
     reactivation_tests,
     word_tests,
 )
+from icub_affordance.analysis.statistics import holm
 from icub_affordance.outcome import Outcome
 from icub_affordance.vocabulary import FORMS
 
@@ -269,3 +271,10 @@ def test_what_qualifies_a_verdict_is_recomputed_beside_each_test():
             assert pd.isna(row["image_effect"])
         else:
             assert table.loc[[_], list(table.columns[len(tests.columns) :])].isna().all(axis=None)
+    # the differences' own t's, Holm over the equivalence rows, in a family added after results
+    shown = table[table["test"] == "equivalence"]
+    assert shown["p_difference_holm"].astype(float).tolist() == pytest.approx(
+        holm(shown["p_difference"].to_numpy(float)).tolist(), nan_ok=True
+    )
+    assert set(shown["difference_family"].dropna()) <= {FAMILY_DIFFERENCE}
+    assert "added after results" in FAMILY_DIFFERENCE

@@ -194,8 +194,11 @@ SAME = 1e-12
 #: The columns ``qualifiers`` adds to the family's rows.
 QUALIFIER_COLUMNS: tuple[str, ...] = (
     "image_effect", "image_inside_margin", "difference_below_alpha", "same_as_congruency",
-    "only_incongruent_small",
+    "only_incongruent_small", "p_difference_holm", "difference_family",
 )  # fmt: skip
+#: The family of the name-minus-image differences' own t's, Holm within it: the equivalence rows
+#: say where a difference is shown too, which was asked after the results were seen.
+FAMILY_DIFFERENCE = "exploration: name − image difference (added after results)"
 
 
 def qualifiers(
@@ -207,7 +210,9 @@ def qualifiers(
     - an equivalence row: the image's own congruency effect over the replications
       (``image_effect``, from ``form_summary``), whether it lies inside the margin too
       (``image_inside_margin``: a name with no effect would then pass as well), and whether
-      the difference's own unadjusted p is below ``alpha`` (``difference_below_alpha``);
+      the difference's own unadjusted p is below ``alpha`` (``difference_below_alpha``), and
+      that p Holm-adjusted over the equivalence rows (``p_difference_holm``, in
+      ``FAMILY_DIFFERENCE``, added after results);
     - a size row: whether its estimate is the congruency test's number (``same_as_congruency``:
       the same cells read by both contrasts) and whether the name alone, in its cue timing and
       mode, made wrong grips, all of them in the incongruent small cell
@@ -235,6 +240,10 @@ def qualifiers(
             rates = mine.groupby(["congruent", "size"])["wrong_grip"].mean()
             carrying = {(str(c), str(z)) for (c, z), rate in rates.items() if rate > 0}
             out.at[i, "only_incongruent_small"] = carrying == {("False", "small")}
+    tested = out.index[(out["test"] == "equivalence") & np.isfinite(out["p_difference"])]
+    for i, p in zip(tested, holm(out.loc[tested, "p_difference"].to_numpy(float)), strict=True):
+        out.at[i, "p_difference_holm"] = float(p)
+        out.at[i, "difference_family"] = FAMILY_DIFFERENCE
     return out
 
 

@@ -88,6 +88,24 @@ def _same_errors(summary: pd.DataFrame) -> dict:
     }
 
 
+def row_note(row, alpha: float) -> str:
+    """What qualifies a test's verdict, in its own row: an equivalence whose difference is itself
+    shown (its t Holm-adjusted in ``name_effects.FAMILY_DIFFERENCE``, added after results), or
+    whose image effect lies inside the margin, so that a name with no effect would pass too; a
+    size effect that is the congruency effect's number, the same wrong grips read by size."""
+    said = ""
+    if row["test"] == "equivalence" and row["direction"] == "paper":
+        p = float(row.get("p_difference_holm", np.nan))
+        if np.isfinite(p) and p < alpha:
+            said += f", and a difference shown (p {p:.2g}, added after results)"
+        if str(row["image_inside_margin"]) == "True":
+            said += "; tells little: the image's effect is inside the margin"
+    elif row["test"] == "size" and str(row["same_as_congruency"]) == "True":
+        where = " in one cell" if str(row["only_incongruent_small"]) == "True" else ""
+        said += f": the congruency effect's errors{where}, read by size"
+    return said
+
+
 def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str, pd.DataFrame]]:
     """The chapter's values (each test's numbers and ``text.Claim`` verdict, per kind of test
     the count of verdicts over its conditions and what qualifies them, the reactivation per cue
@@ -122,7 +140,7 @@ def words_page(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
             "margin": "–" if not np.isfinite(row["margin"]) else f"±{row['margin']:g}",
             "replications with an estimate": f"{int(row['estimable'])} of "
                                              f"{int(row['replications'])}",
-            "Holm p": row["p_holm"], "verdict": word,
+            "Holm p": row["p_holm"], "verdict": word + row_note(row, alpha),
         })  # fmt: skip
     for test, group in summary.groupby("test", sort=False):
         said = [ORDER[test][d] for d in group["direction"]]

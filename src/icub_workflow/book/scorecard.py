@@ -55,12 +55,13 @@ def claims_values(
     replications: pd.DataFrame | None = None,
 ) -> tuple[dict, pd.DataFrame]:
     """The confirmatory family's values (``claim_<cue>_<mode>_<measure>_<effect>_*``: estimate,
-    interval, Holm p, verdict, power) and its table, a row per declared test; beside each
-    correct-trial test, the fewest networks carrying a cell per mapping (``cells``:
-    data/claims/correct_cells.csv) in the replications the test used (``replications``:
-    data/claims/replications.csv, those with an estimate; every replication where it is not
-    given) and the estimate over every replication (``sensitivity``: correct_sensitivity.csv,
-    exploration; ``sens_<cue>_<mode>_<effect>_*``)."""
+    interval, Holm p, verdict, power) and its table, a row per declared test. Each correct-trial
+    test leads with its estimate over every replication (``sensitivity``: correct_sensitivity.csv,
+    exploration; ``sens_<cue>_<mode>_<effect>_*``), since the declared test leaves out the
+    replications with a cell without a correct trial; beside it, the fewest networks carrying a
+    cell per mapping (``cells``: data/claims/correct_cells.csv) in the replications the test used
+    (``replications``: data/claims/replications.csv, those with an estimate; every replication
+    where it is not given)."""
     values: dict[str, object] = sensitivity_values(sensitivity)
     rows = []
     keyed = power.set_index(["cue", "mode", "measure", "effect"])
@@ -76,6 +77,7 @@ def claims_values(
         rows.append({
             "claim": text.CLAIM_PARTS[row["effect"]], "measure": text.CLAIM_PARTS[row["measure"]],
             "cue": text.CLAIM_PARTS[row["cue"]], "test": text.CLAIM_PARTS[row["mode"]],
+            "over every replication (exploration)": _sensitivity_cell(values, row),
             "estimate [95% interval]": interval(row),
             "replications with an estimate": f"{int(row['estimable'])} of "
                                              f"{int(row['replications'])}",
@@ -84,7 +86,6 @@ def claims_values(
             "fewest networks per cell (A / B)": fewest_per_mapping(
                 cells, row, used_seeds(replications, row))
             if row["measure"] == "rmse_correct" else "–",
-            "over every replication (exploration)": _sensitivity_cell(values, row),
         })  # fmt: skip
     for (mode, measure), group in summary.groupby(["mode", "measure"], sort=False):
         both = [
@@ -153,6 +154,29 @@ def _sensitivity_cell(values: dict, row) -> str:
         f"{est:+.4f} [{low:+.4f}, {high:+.4f}], {values[f'{key}_replications']} "
         f"replications; Holm p {p:.2g}: {values[f'{key}_verdict'].text}"
     )
+
+
+def _every_replication(group: pd.DataFrame, sens: dict) -> tuple[dict, str, text.Claim] | None:
+    """A correct-trial claim's verdicts over every replication, none left out (exploration), by
+    test mode as the declared ones are read (``by_condition``): the values they rest on, the
+    words by mode, and their count. None for the paper's measure or without the estimates: the
+    scorecard leads with these because the declared test leaves out a replication with a cell
+    without a correct trial, which is the effect under test."""
+    keys = [sens_key(r) for _, r in group.iterrows()]
+    if (group["measure"] != "rmse_correct").any() or any(f"{k}_verdict" not in sens
+                                                         for k in keys):  # fmt: skip
+        return None
+    said = {f"{k}_{s}": sens[f"{k}_{s}"] for k in keys for s in ("estimate", "p_holm")}
+    rests = tuple(f"index.{k}_p_holm" for k in keys)
+    modes, every = [], []
+    for mode in _ordered(group, "mode", MODE_ORDER):
+        rows = group[group["mode"] == mode]
+        by = {cue: sens[f"{sens_key(r)}_verdict"].text
+              for cue in _ordered(rows, "cue", CUE_ORDER)
+              for _, r in rows[rows["cue"] == cue].iterrows()}  # fmt: skip
+        modes.append(f"{text.CLAIM_PARTS[mode]}: {text.by_cue(by)}")
+        every += by.values()
+    return said, "; ".join(modes), text.Claim(text.condition_count(every), rests)
 
 
 def differing(summary: pd.DataFrame, values: dict) -> list[tuple[pd.Series, str]]:
@@ -250,20 +274,31 @@ def scorecard(claims: pd.DataFrame, learning: pd.DataFrame, size: pd.DataFrame,
             for mode in _ordered(group, "mode", MODE_ORDER)
         )
         fewer = group[group["estimable"] < group["replications"]]
-        modes += " (confirmatory)"
         sens = {} if sensitivity is None else sensitivity_values(sensitivity)
-        for row, word in differing(group, sens):
-            key = sens_key(row)
-            said |= {f"{key}_{k}": sens[f"{key}_{k}"] for k in ("estimate", "p_holm")}
-            modes += (f"; but over every replication, none left out (exploration), "
-                      f"{word} in {text.CLAIM_PARTS[row['mode']]} with the "
-                      f"{text.CLAIM_PARTS[row['cue']]}")  # fmt: skip
+        led = _every_replication(group, sens)
+        selected = ""
+        if led is None:
+            modes += " (confirmatory)"
+        else:  # led by every replication; the declared verdicts beside, with their selection
+            said |= led[0]
+            said[f"{prefix}_verdict"] = text.Claim(
+                f"every replication: {led[2].text}; declared: {said[f'{prefix}_verdict'].text}",
+                led[2].rests_on + said[f"{prefix}_verdict"].rests_on,
+            )
+            if not fewer.empty:
+                selected = "; on the replications with a correct trial in every cell: " + ", ".join(
+                    f"{int(r['estimable'])} of {int(r['replications'])} "
+                    f"({text.CLAIM_PARTS[r['mode']]}, {text.CLAIM_PARTS[r['cue']]})"
+                    for _, r in fewer.iterrows())  # fmt: skip
+            modes = (f"over every replication (exploration), {led[1]}. Declared (confirmatory), "
+                     f"{modes}{selected}")  # fmt: skip
         add(prefix, (said, modes),
             f"{text.CLAIM_PARTS[effect]}: {text.CLAIM_PARTS[measure]}",
             PAPER_SAYS[effect] + PAPER_MEASURE[measure],
             f"{int(group['replications'].max())} replications × {networks} networks per condition"
-            + "".join(f"; {int(r['estimable'])} with an estimate ({text.CLAIM_PARTS[r['mode']]}, "
-                      f"{text.CLAIM_PARTS[r['cue']]})" for _, r in fewer.iterrows()),
+            + ("" if selected else "".join(
+                f"; {int(r['estimable'])} with an estimate ({text.CLAIM_PARTS[r['mode']]}, "
+                f"{text.CLAIM_PARTS[r['cue']]})" for _, r in fewer.iterrows())),
             "index")  # fmt: skip
     # this project's questions: the size study's declared tests, under each cue timing, at dose
     # 0 (no size difference in the maps; its keys carry no dose), beside them at every other
