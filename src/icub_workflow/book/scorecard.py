@@ -179,17 +179,6 @@ def _every_replication(group: pd.DataFrame, sens: dict) -> tuple[dict, str, text
     return said, "; ".join(modes), text.Claim(text.condition_count(every), rests)
 
 
-def differing(summary: pd.DataFrame, values: dict) -> list[tuple[pd.Series, str]]:
-    """The correct-trial tests whose confirmatory verdict and estimate over every replication
-    disagree, with the latter's word."""
-    found = []
-    for _, row in summary[summary["measure"] == "rmse_correct"].iterrows():
-        said = values.get(f"{sens_key(row)}_verdict")
-        if said is not None and words.SAME_WORD.get(row["direction"]) != said.text:
-            found.append((row, said.text))
-    return found
-
-
 #: The test modes, the one the paper's text describes first (book/notes.md, "Which test mode is
 #: the paper's"), and the cue timings.
 MODE_ORDER = ("teacher_forced", "closed_loop")
