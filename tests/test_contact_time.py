@@ -126,3 +126,12 @@ def test_the_split_by_mapping_and_object_adds_up_to_the_declared_estimate():
     assert between["estimate"] == pytest.approx(mapping.loc["B", "estimate"]
                                                 - mapping.loc["A", "estimate"])  # fmt: skip
     assert between["df"] == declared["df"]  # the declared fit's own term
+
+
+def test_the_split_with_no_network_touching_every_cell_is_not_assessable():
+    """A small configuration (the test build's four networks) may leave no network with a
+    contact in all four cells: the split then has its difference row only, not assessable,
+    rather than failing the build."""
+    split = congruency_split(made_up(untouched=8), DECLARATION)
+    assert list(split["split"]) == ["congruency x mapping"]
+    assert np.isnan(split["p"]).all() and (split["direction"] == Outcome.NOT_ASSESSABLE).all()

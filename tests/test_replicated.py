@@ -24,6 +24,7 @@ FAMILIES = (
     "name_effects",
     "reading_tests",
     "size_study",
+    "distractor_tests",
 )
 #: The one function's own module, the statistics it is made of, and one run's tests over its
 #: networks (a replication's own estimate, which the families then test over replications).

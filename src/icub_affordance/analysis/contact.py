@@ -110,8 +110,10 @@ def congruency_split(trials: pd.DataFrame, declaration: Mapping[str, Any]) -> pd
         touched = df[df["contact_time"].notna()]
         units = per_network_contrasts(touched, "contact_time").index
         used = touched[touched["network"].isin(units)]
+        cells4 = pd.MultiIndex.from_product([("congruent", "incongruent"), ("large", "small")])
         time = used.pivot_table(index="network", columns=["congruency", "size"],
-                                values="contact_time")  # fmt: skip
+                                values="contact_time").reindex(columns=cells4)  # fmt: skip
+        # (no network touched in all four cells: no mapping row, the difference not assessable)
         mapping = used.groupby("network")["mapping"].first().reindex(time.index)
         by_size = {s: time[("incongruent", s)] - time[("congruent", s)] for s in ("large", "small")}
         effect = (by_size["large"] + by_size["small"]) / 2
