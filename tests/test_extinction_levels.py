@@ -92,3 +92,17 @@ def test_the_chapter_says_which_way_each_level_goes_against_people():
     assert said.rests_on == tuple(f"signatures.blank_k{k}_p_holm" for k in (1, 3, 5, 7))
     assert "k = 1" not in values["blank_tested"] and "k = 7" in values["blank_tested"]
     assert values["blank_family"] == ADDED_FAMILY and values["blank_k3_of"] == 10
+
+
+def test_a_build_with_no_level_estimated_says_so():
+    """The test build's few networks may leave every blanking level without an estimate: the
+    chapter's values still exist and say so (the book does not fail on it)."""
+    from icub_workflow.book.pages import extinction_level_values
+
+    columns = ["k", "in_view", "blanked", "replications", "of", "estimate", "ci_low", "ci_high"]
+    empty = pd.DataFrame(columns=[*columns, "p", "p_holm", "family", "direction"])
+    values = extinction_level_values(empty)
+    assert values["blank_levels"] == "no level has an estimate"
+    assert (
+        values["blank_tested"] == "none tested" and "added after results" in values["blank_family"]
+    )

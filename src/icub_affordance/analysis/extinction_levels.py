@@ -45,10 +45,12 @@ def extinction_levels(trials: pd.DataFrame, least: int, alpha: float = ALPHA) ->
         means = {"in_view": both["effect"].mean(), "blanked": both["blanked"].mean()}
         tested = {key: term[key] for key in ("estimate", "ci_low", "ci_high", "df", "p")}
         rows.append({"k": int(k), **means, "replications": len(both), **tested})
-    table = pd.DataFrame(rows)
+    # (a build with no estimate at any level, the test build's few networks: no row)
+    table = pd.DataFrame(rows, columns=["k", "in_view", "blanked", "replications", "estimate",
+                                        "ci_low", "ci_high", "df", "p"])  # fmt: skip
     table["of"] = trials["replication"].nunique()
     table["family"] = ADDED_FAMILY
-    table["p_holm"] = holm(table["p"])
+    table["p_holm"] = holm(table["p"]) if len(table) else []
     table["direction"] = [
         int(direction(PEOPLE_DIRECTION * e, p, alpha))
         for e, p in zip(table["estimate"], table["p_holm"], strict=True)

@@ -763,7 +763,9 @@ def extinction_level_values(levels: pd.DataFrame) -> dict:
     difference, interval, Holm p within its family and replications (``blank_k{k}_...``), and
     ``blank_levels``, the levels by which way they go against people (a ``Claim`` on their
     Holm p)."""
-    values: dict = {"blank_family": str(levels["family"].iloc[0])}
+    from icub_affordance.analysis.extinction_levels import ADDED_FAMILY
+
+    values: dict = {"blank_family": ADDED_FAMILY}
     said: dict[str, list[str]] = {}
     for _, row in levels.iterrows():
         k = int(row["k"])
@@ -773,9 +775,11 @@ def extinction_level_values(levels: pd.DataFrame) -> dict:
         word = EXTINCTION_LEVEL_WORDS[Outcome(int(row["direction"]))]
         said.setdefault(word, []).append(str(k))
     rests = tuple(f"signatures.blank_k{int(k)}_p_holm" for k in levels["k"])
-    values["blank_levels"] = text.Claim(
-        "; ".join(f"at k = {text.listing(ks, '')} {word}" for word, ks in said.items()), rests
-    )
+    values["blank_levels"] = (
+        text.Claim("; ".join(f"at k = {text.listing(ks, '')} {word}" for word, ks in said.items()),
+                   rests)
+        if said else "no level has an estimate"
+    )  # fmt: skip
     tested = levels[np.isfinite(levels["p_holm"].astype(float))]
     values["blank_tested"] = text.listing(
         [f"{r.estimate:+.4f} [{r.ci_low:+.4f}, {r.ci_high:+.4f}] at k = {r.k} (Holm p "
