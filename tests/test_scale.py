@@ -86,14 +86,17 @@ def test_sweep_tables_count_significant_replications():
 
     from icub_affordance.analysis.sweep import sweep_tables
 
-    def trials(effect):
+    def trials(effect, spread):
+        """Four networks whose congruency effects are ``effect`` +- ``spread`` (mean ``effect``),
+        with a small size effect of alternating sign."""
         rows = []
         for net in range(4):
+            sign = (-1) ** net
             for cong, size, base in (
                 ("True", "large", 0.05),
-                ("True", "small", 0.05),
-                ("False", "large", 0.05 + effect),
-                ("False", "small", 0.05 + effect),
+                ("True", "small", 0.05 + 0.0005 * sign),
+                ("False", "large", 0.05 + effect + spread * sign),
+                ("False", "small", 0.05 + effect + spread * sign + 0.0005 * sign),
             ):
                 rows.append(
                     {
@@ -107,16 +110,6 @@ def test_sweep_tables_count_significant_replications():
                 )
         return pd.DataFrame(rows)
 
-    def anova(p):
-        return {
-            "closed_loop": {
-                "repeated_measures": {
-                    "congruency": {"p": p, "eta_p2": 0.6 if p < 0.05 else 0.3},
-                    "size": {"p": 0.5, "eta_p2": 0.0},
-                }
-            }
-        }
-
     points = {
         f"s{i}": {
             "seed": i,
@@ -126,18 +119,20 @@ def test_sweep_tables_count_significant_replications():
         }
         for i in range(3)
     }
+    # s0 consistent (significant), s1 noisy (not), s2 consistent the other way (reversed)
     per_point, summary = sweep_tables(
-        points,
-        {"s0": trials(0.02), "s1": trials(0.03), "s2": trials(-0.02)},
-        {"s0": anova(0.01), "s1": anova(0.2), "s2": anova(0.01)},
+        points, {"s0": trials(0.02, 0.001), "s1": trials(0.03, 0.1), "s2": trials(-0.02, 0.001)}
     )
     assert per_point["congruency_effect"].round(6).tolist() == [0.02, 0.03, -0.02]
     assert per_point["congruency_significant"].tolist() == [True, False, False]
     assert per_point["congruency_reversed"].tolist() == [False, False, True]
+    assert per_point["congruency_p"].tolist()[1] > 0.05
     assert summary.loc[0, "replications"] == 3
     assert summary.loc[0, "congruency_n_significant"] == 1
     assert summary.loc[0, "congruency_n_reversed"] == 1
-    assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(0.5)
+    assert summary.loc[0, "congruency_eta_p2"] == pytest.approx(
+        per_point["congruency_eta_p2"].mean()
+    )
 
 
 def counts_and_inputs(result, rule="book"):

@@ -386,14 +386,15 @@ class RunPlan:
         size-free, demonstrations and SOMs (unless it reads an earlier run's, ``stage_run``),
         its networks, and (``tests``) the in-silico tests, ANOVAs and Figure 5. A robot variant
         is tested on the robot only: its in-silico closed loop would feed a servo target back
-        as the posture reached (icub_affordance.trials.in_silico)."""
+        as the posture reached (icub_affordance.trials.in_silico). A sweep point's ANOVAs and
+        Figure 5 no page reads: its trials alone, which the sweep's summary analyses."""
         steps = []
         if self.makes(run, "maps") and self.config(run)["size_free_input"]:
             steps.append("size_free_maps")
         steps += [stage for stage in ("demos", "soms") if self.makes(run, stage)]
         steps.append("train")
         if tests and not self.trained_for_robot(run):
-            steps += ["evaluate", "stats", "figure5"]
+            steps += ["evaluate"] if run in self.sweep else ["evaluate", "stats", "figure5"]
         return steps
 
     def built_steps(self, run: str) -> list[str]:

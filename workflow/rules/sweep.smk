@@ -3,7 +3,8 @@
 #   snakemake --profile workflow/profiles/slurm sweep     the same on a cluster
 # A point is a run (common.smk: PLAN.sweep) of one seed and one value of each swept setting: a
 # whole replication, whose seed reseeds the demonstrations, the SOMs and the networks. Its
-# networks are trained, tested and analysed by the rules of every run, in its folder (PLAN.folder).
+# networks are trained and tested by the rules of every run, in its folder (PLAN.folder); its
+# ANOVA is the summary's, as no page reads a point's own stats or Figure 5 (RunPlan.steps).
 # Its cost is read from those jobs' own records, their benchmark files (book.smk:
 # sweep_job_records); the wall time against the number of replications is measured from outside
 # the DAG, `python benchmarks/sweep_cost.py` (no job starts Snakemake).
@@ -13,7 +14,6 @@ rule sweep_summary:
     """Each point's congruency and size effects, with 95% intervals, and how many are significant."""
     input:
         trials=[PLAN.path(run, "eval/trials.csv") for run in PLAN.sweep],
-        anova=[PLAN.path(run, "eval/anova.json") for run in PLAN.sweep],
         code=script_code("sweep_summary"),
     output:
         points="data/sweep/points.csv",

@@ -1,7 +1,5 @@
 """The sweep's per-point effects and the summary over replications."""
 
-import json
-
 import pandas as pd
 
 from icub_affordance.analysis.sweep import sweep_tables
@@ -13,10 +11,7 @@ with redirect_log(snakemake.log[0]):
         n: pd.read_csv(p, keep_default_na=False)
         for n, p in zip(names, snakemake.input.trials, strict=True)
     }
-    anovas = {
-        n: json.loads(open(p).read()) for n, p in zip(names, snakemake.input.anova, strict=True)
-    }
-    per_point, summary = sweep_tables(dict(snakemake.params.points), trials, anovas)
+    per_point, summary = sweep_tables(dict(snakemake.params.points), trials)
     for table, path in ((per_point, snakemake.output.points), (summary, snakemake.output.summary)):
         with atomic_path(path) as tmp:
             table.to_csv(tmp, index=False, float_format="%.6g")

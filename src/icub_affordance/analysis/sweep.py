@@ -1,9 +1,11 @@
 """The sweep's tables: per point of the parameter sweep, each network's congruency and size effects
-with their intervals and the point's repeated-measures ANOVA; per setting, over its replications,
-the mean effects and how many replications are significant in the paper's direction or reversed.
+with their intervals and the point's repeated-measures ANOVA (computed here, as the run's own
+``anova.json`` would hold it: a sweep point writes no stats of its own, no page reads them); per
+setting, over its replications, the mean effects and how many replications are significant in the
+paper's direction or reversed.
 
-Apart from the analysis of one run's trials (``trial_effects``) because only the sweep's summary
-reads it: editing it reruns that summary alone.
+Apart from the analysis of one run's trials (``trial_effects``, whose ANOVA it calls) because
+only the sweep's summary reads it: editing it reruns that summary alone.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ from __future__ import annotations
 import pandas as pd
 
 from icub_affordance.analysis.statistics import mean_ci
-from icub_affordance.analysis.trial_effects import categorisation_trials
+from icub_affordance.analysis.trial_effects import categorisation_trials, repeated_measures_anova
 
 
 def network_effects(trials: pd.DataFrame, mode: str = "closed_loop") -> pd.DataFrame:
@@ -29,7 +31,7 @@ def network_effects(trials: pd.DataFrame, mode: str = "closed_loop") -> pd.DataF
 
 
 def sweep_tables(
-    points: dict[str, dict], trials: dict[str, pd.DataFrame], anovas: dict[str, dict]
+    points: dict[str, dict], trials: dict[str, pd.DataFrame]
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
     """One row per point (effects with 95% intervals over its networks, RM-ANOVA p and partial
     eta squared), and one row per setting (over its replications: mean effect with 95% interval,
@@ -38,10 +40,11 @@ def sweep_tables(
     rows = []
     for name, point in points.items():
         effects = network_effects(trials[name])
+        anovas = repeated_measures_anova(categorisation_trials(trials[name], "closed_loop"))
         row = {"point": name, **point}
         for effect, key in (("congruency", "congruency_effect"), ("size", "size_effect")):
             mean, lo, hi = mean_ci(effects[key].to_numpy())
-            anova = anovas[name]["closed_loop"]["repeated_measures"][effect]
+            anova = anovas[effect]
             p = anova["p"]
             row |= {
                 f"{effect}_effect": mean,
