@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.decide import decide
 from icub_affordance.analysis.replicated import over_replications
 from icub_affordance.analysis.statistics import holm
 from icub_affordance.outcome import Outcome
@@ -85,11 +86,7 @@ def family_of(lam: float, declaration: Mapping[str, Any]) -> str:
 def direction(estimate: float, p_holm: float, alpha: float) -> Outcome:
     """A test's outcome against people's direction for the target (positive: compatible
     faster); the distractor's expectation per selection is set beside it (``summary``)."""
-    if not np.isfinite(p_holm):
-        return Outcome.NOT_ASSESSABLE
-    if p_holm >= alpha:
-        return Outcome.NONE
-    return Outcome.PAPER if estimate > 0 else Outcome.AGAINST
+    return decide(estimate, p_holm, alpha)
 
 
 def summary(estimates: pd.DataFrame, declaration: Mapping[str, Any], least: int) -> pd.DataFrame:

@@ -12,8 +12,10 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.decide import significant
 from icub_affordance.analysis.statistics import group_regression, holm
 from icub_affordance.analysis.trial_effects import CODING, trial_conditions
+from icub_affordance.analysis.verdicts import ALPHA
 
 
 def pca(states: np.ndarray, components: int = 2) -> tuple[np.ndarray, np.ndarray]:
@@ -87,12 +89,12 @@ def divergence(hidden: dict[str, np.ndarray], trials: pd.DataFrame, mode: str = 
     return long, summary
 
 
-def first_divergent_step(summary: pd.DataFrame, alpha: float = 0.05) -> int | None:
+def first_divergent_step(summary: pd.DataFrame, alpha: float = ALPHA) -> int | None:
     """The first step from which incongruent trials stay significantly further from grasping,
     by the steps' Holm-adjusted p."""
-    significant = (summary["p_holm"] < alpha) & (summary["difference"] > 0)
+    shown = significant(summary["p_holm"], alpha) & (summary["difference"] > 0)
     for i in range(len(summary)):
-        if significant.iloc[i:].all():
+        if shown.iloc[i:].all():
             return int(summary["step"].iloc[i])
     return None
 

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.decide import decide_equivalence, significant
 from icub_affordance.analysis.paper_claims import direction
 from icub_affordance.analysis.replicated import over_replications
 from icub_affordance.analysis.statistics import equivalence, holm
@@ -135,9 +136,7 @@ def word_tests(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.Da
 def _equivalent(p_holm: float, alpha: float) -> Outcome:
     """An equivalence test's ``Outcome``: ``PAPER`` (within the margin: the names' effect as
     the images', Tucker & Ellis 2004) when its adjusted p is below alpha, else ``NONE``."""
-    if not np.isfinite(p_holm):
-        return Outcome.NOT_ASSESSABLE
-    return Outcome.PAPER if p_holm < alpha else Outcome.NONE
+    return decide_equivalence(p_holm, alpha)
 
 
 def reactivation(
@@ -232,7 +231,7 @@ def qualifiers(
             effect = float(image[cell])
             out.at[i, "image_effect"] = effect
             out.at[i, "image_inside_margin"] = bool(abs(effect) < row["margin"])
-            out.at[i, "difference_below_alpha"] = bool(row["p_difference"] < alpha)
+            out.at[i, "difference_below_alpha"] = bool(significant(row["p_difference"], alpha))
         elif row["test"] == "size":
             congruency = by_test.get((*cell, "congruency"), np.nan)
             out.at[i, "same_as_congruency"] = bool(abs(row["estimate"] - congruency) < SAME)

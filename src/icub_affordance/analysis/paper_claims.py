@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from icub_affordance.analysis.decide import decide
 from icub_affordance.outcome import Outcome
 
 if TYPE_CHECKING:
@@ -242,11 +243,7 @@ def confirm(estimates: pd.DataFrame, declaration: Mapping[str, Any]) -> pd.DataF
 def direction(estimate: float, p_holm: float, alpha: float) -> Outcome:
     """A declared test's ``Outcome``: significant in the paper's direction (positive: incongruent
     or small higher) or against it; neither; no test (``NOT_ASSESSABLE``)."""
-    if not np.isfinite(p_holm):
-        return Outcome.NOT_ASSESSABLE
-    if p_holm >= alpha:
-        return Outcome.NONE
-    return Outcome.PAPER if estimate > 0 else Outcome.AGAINST
+    return decide(estimate, p_holm, alpha)
 
 
 #: The columns a pilot table must have (config ``confirmation.pilot``).

@@ -10,6 +10,8 @@ from collections.abc import Mapping
 import numpy as np
 import pandas as pd
 
+from icub_affordance.analysis.decide import significant
+
 from . import text, words
 from .scorecard import interval
 
@@ -96,7 +98,7 @@ def row_note(row, alpha: float) -> str:
     said = ""
     if row["test"] == "equivalence" and row["direction"] == "paper":
         p = float(row.get("p_difference_holm", np.nan))
-        if np.isfinite(p) and p < alpha:
+        if significant(p, alpha):
             said += f", and a difference shown (p {p:.2g}, added after results)"
         if str(row["image_inside_margin"]) == "True":
             said += "; tells little: the image's effect is inside the margin"

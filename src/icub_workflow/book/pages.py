@@ -14,6 +14,7 @@ import pandas as pd
 from icub_affordance.analysis import confirmation as confirmation_science
 from icub_affordance.analysis import reading_tests as readings_science
 from icub_affordance.analysis import verdicts as science
+from icub_affordance.analysis.decide import significant
 from icub_affordance.analysis.robot_effects import FACTOR_LEVELS, INTERACTION, record_table
 from icub_affordance.analysis.size_study import (
     FAMILY_MOTOR_ADDED,
@@ -215,7 +216,7 @@ def carrying_cell(effect: dict) -> str | None:
     congruency's within one size only, so the two meet in one cell ("incongruent_small"); None
     otherwise, or without simple effects (``robot_effects.variant_effects``)."""
     simple = effect.get("simple") or {}
-    shown = [k for k, t in simple.items() if t["p_holm"] < science.ALPHA]
+    shown = [k for k, t in simple.items() if significant(t["p_holm"])]
     size_in = [k.removeprefix("size_in_") for k in shown if k.startswith("size_in_")]
     congruency_in = [k.removeprefix("congruency_in_") for k in shown if k.startswith("congr")]
     if len(size_in) == 1 and len(congruency_in) == 1:
@@ -727,7 +728,7 @@ def size_study(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     values |= dict(zip(keys, motor["p_holm"].astype(float), strict=True))
     for family, name in ((FAMILY_MOTOR_PLANNED, "planned"), (FAMILY_MOTOR_ADDED, "added")):
         chosen = (motor["family"] == family).to_numpy()
-        found = motor.loc[chosen & (motor["p_holm"] < science.ALPHA).to_numpy(), "geometry"]
+        found = motor.loc[chosen & significant(motor["p_holm"]).to_numpy(), "geometry"]
         values[f"motor_found_{name}"] = text.Claim(
             text.named_measures(found.unique()), tuple("size." + keys[chosen])
         ) if chosen.any() else "not run in this build"  # fmt: skip
@@ -815,7 +816,7 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     for _, row in overall.iterrows():  # the in-view effect whose shape the signatures test
         for stat in ("estimate", "ci_low", "ci_high", "p_adjusted"):
             values[f"in_view_{stat}"] = float(row[stat])
-        found = row["p_adjusted"] < science.ALPHA
+        found = significant(row["p_adjusted"])
         word = ("is confirmed (incongruent slower)" if row["estimate"] > 0 else "is reversed") if (
             found) else "is not shown"  # fmt: skip
         values["in_view_verdict"] = text.Claim(
@@ -827,7 +828,7 @@ def signatures(inputs: Mapping[str, str], config: dict) -> tuple[dict, dict[str,
     values |= {"wrong_congruent": float(view["wrong_congruent"]),
                "wrong_incongruent": float(view["wrong_incongruent"]),
                "wrong_p_adjusted": float(view["p_adjusted"])}  # fmt: skip
-    depends = view["p_adjusted"] < science.ALPHA
+    depends = significant(view["p_adjusted"])
     values["errors_verdict"] = text.Claim(
         "depend on congruency" if depends else "are not shown to depend on congruency",
         ("signatures.wrong_p_adjusted",),

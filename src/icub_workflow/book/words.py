@@ -7,9 +7,9 @@ and the signatures' summaries)."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 
+from icub_affordance.analysis.decide import decide, significant
 from icub_affordance.analysis.verdicts import ALPHA
 from icub_affordance.outcome import Outcome
 
@@ -40,12 +40,7 @@ def verdict_word(term: Mapping, alpha: float = ALPHA) -> str:
     """A test in the paper's direction (a positive estimate) is "confirmed", against it
     "reversed", where its p adjusted within its family is below ``alpha``; else "not shown"
     (which is not "no difference") or, with no p, "not assessable"."""
-    p = term.get("p_holm", term["p"])
-    if not math.isfinite(p):
-        return NOT_ASSESSABLE
-    if p >= alpha:
-        return NOT_SHOWN
-    return CONFIRMED if term["estimate"] > 0 else REVERSED
+    return CLAIM_OUTCOME_WORDS[decide(term["estimate"], term.get("p_holm", term["p"]), alpha)]
 
 
 def shown_word(term: Mapping, alpha: float = ALPHA) -> str:
@@ -75,7 +70,7 @@ def robot_word(paper_direction: bool | None, significant: bool) -> str:
 
 def below_alpha(p: float, said: str, otherwise: str = "not shown") -> str:
     """``said`` where ``p`` is below ALPHA, else ``otherwise``."""
-    return said if p < ALPHA else otherwise
+    return said if significant(p) else otherwise
 
 
 # -- the declared tests' directions (icub_affordance.analysis.paper_claims.direction) --------------
