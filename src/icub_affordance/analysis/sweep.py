@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import pandas as pd
 
+from icub_affordance.analysis.decide import significant
 from icub_affordance.analysis.statistics import mean_ci
 from icub_affordance.analysis.trial_effects import categorisation_trials, repeated_measures_anova
 
@@ -52,8 +53,8 @@ def sweep_tables(
                 f"{effect}_ci_high": hi,
                 f"{effect}_p": p,
                 f"{effect}_eta_p2": anova["eta_p2"],
-                f"{effect}_significant": bool(p < 0.05 and mean > 0),
-                f"{effect}_reversed": bool(p < 0.05 and mean < 0),
+                f"{effect}_significant": bool(significant(p) and mean > 0),
+                f"{effect}_reversed": bool(significant(p) and mean < 0),
             }
         rows.append(row)
     per_point = pd.DataFrame(rows)
