@@ -80,6 +80,7 @@ rule claims_correct:
         trials=CLAIM_TRIALS,  # the files in the folders named above (measured_inputs)
         cues=[row["cue"] for row in PLAN.claim_rows],
         seeds=[row["seed"] for row in PLAN.claim_rows],
+        least=config["confirmation"]["min_replications"],  # the one minimum
     log:
         "data/logs/claims/correct.log",
     benchmark:

@@ -16,6 +16,6 @@ with redirect_log(snakemake.log[0]):
         )
     )
     counts = cells(trials)
-    table = sensitivity(trials, counts)
+    table = sensitivity(trials, counts, least=snakemake.params.least)
     write_tables([(snakemake.output.cells, counts), (snakemake.output.sensitivity, table)])
     print(table.to_string())

@@ -186,18 +186,27 @@ def fit(data: pd.DataFrame) -> dict[str, dict[str, float]]:
     return out
 
 
-def sensitivity(trials: pd.DataFrame, counts: pd.DataFrame | None = None) -> pd.DataFrame:
+def sensitivity(
+    trials: pd.DataFrame, counts: pd.DataFrame | None = None, least: int = 2
+) -> pd.DataFrame:
     """Per cue x mode x effect (``EFFECTS``), the mixed model's estimate over every replication
     (``fit`` on ``observations``; ``SENSITIVITY_COLUMNS``): the replications in the trials and
     those with an observation, the networks and observations used, the fewest networks that
     carried a cell under one mapping in any replication (``cells``), the t test, Holm's p
     over every test of the table (``FAMILY``). ``trials``: the trials tables with ``cue`` and
-    ``seed`` columns; ``counts``: ``cells(trials)``, when the caller has it already."""
+    ``seed`` columns; ``counts``: ``cells(trials)``, when the caller has it already; ``least``:
+    the declared minimum of replications with an observation (``replicated.assessable``, the one
+    rule of every test over replications): below it the estimate stands without a test."""
+    from icub_affordance.analysis.replicated import assessable
+
     counts = cells(trials) if counts is None else counts
     rows = []
     for (cue, mode), chosen in trials.groupby(["cue", "mode"], sort=False):
         data = observations(chosen, mode)
         result = fit(data)
+        if not assessable(int(data[REPLICATION].nunique()), least):
+            untested = dict.fromkeys(("se", "z", "ci_low", "ci_high", "p"), float("nan"))
+            result = {effect: r | untested for effect, r in result.items()}
         mask = (counts["cue"] == cue) & (counts["mode"] == mode)
         for effect in EFFECTS:
             rows.append(
