@@ -47,4 +47,11 @@ DECLARED = (
             "committed before the data it tests exist"
         ),
     ),
+    Declaration(
+        test="distractor",
+        commit="13c505d",
+        # the distractor's trials and tests (rule distractor), made on the confirmation's
+        # networks only after the declaration (issue 73); first recorded in b88831d
+        inputs=("data/distractor/*",),
+    ),
 )
