@@ -103,6 +103,8 @@ def test_a_robot_variant_is_a_run_trained_and_tested_on_the_robot_alone(built, t
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
     shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_contact_time_split")  # the contact split reads them too (issue 70)
+    shown.add("verdicts")  # names the robot's declared tests for the book's sentences
     assert set(jobs) <= shown, jobs
     assert "data/runs/robot_sensed_h20_it1200/embodied/all/trials.csv" in result.stdout
 
@@ -140,6 +142,8 @@ def test_a_robot_variant_of_the_other_cue_timing_reuses_the_cue_ablation(built, 
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
     shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_contact_time_split")  # the contact split reads them too (issue 70)
+    shown.add("verdicts")  # names the robot's declared tests for the book's sentences
     shown.add("robot_animation")  # films the variant's networks 0.. (listed in robot.default)
     assert set(jobs) <= shown, jobs
 
@@ -166,6 +170,8 @@ def test_a_robot_variant_with_the_annealed_rate_is_a_run_of_its_own(built, tmp_p
     shown.add("other_scale")  # the other scale's plan, which reads the robot's settings
     shown.add("robot_contact_time")  # reads the joined fresh trials robot_confirmation rewrites
     shown.add("robot_confirmation")  # reads the joined trials (the exploration's share)
+    shown.add("robot_contact_time_split")  # the contact split reads them too (issue 70)
+    shown.add("verdicts")  # names the robot's declared tests for the book's sentences
     assert set(jobs) <= shown, jobs
 
 

@@ -593,7 +593,7 @@ def test_the_matrix_verdicts_and_phrases_follow_holm_p(tmp_path):
     shown = summ.assign(p_holm=holm_p, diff=summ["diff"].abs())
     cell = ("RMSE", "congruency", "every · fixed")
     for table, word, listed in (
-        (shown, "reproduced", True),
+        (shown, "confirmed", True),
         (shown.assign(p_holm=np.where(key, 0.2, shown["p_holm"])), "not shown", False),
         (shown.assign(diff=np.where(key, -shown["diff"], shown["diff"])), "reversed", False),
     ):

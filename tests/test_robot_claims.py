@@ -234,7 +234,7 @@ def test_the_issues_size_effect_counted_once_is_not_significant():
 
 @pytest.mark.heavy
 def test_a_contrast_verdict_follows_its_sign_and_its_adjusted_p():
-    assert verdict(effects(), "best_success_congruency") == "reproduced"  # congruent held more
+    assert verdict(effects(), "best_success_congruency") == "confirmed"  # congruent held more
     row = rows(effects())["held", "congruency"]
     assert row["test"] == "t, 12 nets" and approx(row, p=0.02, p_holm=0.04)
     flipped = effects()
@@ -250,7 +250,7 @@ def test_a_contrast_verdict_follows_its_sign_and_its_adjusted_p():
     assert verdict(in_family(lifted), "best_success_congruency") == "not shown"
     assert approx(rows(in_family(lifted))["held", "congruency"], p_holm=0.06)
     # contact time: longer when incongruent is the paper's direction
-    assert verdict(effects(), "best_contact_time_congruency") == "reproduced"
+    assert verdict(effects(), "best_contact_time_congruency") == "confirmed"
     faster = effects()
     faster["v"]["contact_time"]["tests"]["congruency"] = contrast(-0.08, 0.01, networks=8)
     assert verdict(in_family(faster), "best_contact_time_congruency") == "reversed"
@@ -277,7 +277,7 @@ def test_an_exact_verdict_follows_its_counts_and_its_p():
     assert verdict(in_family(swapped), "best_success_size") == "not shown"
     strong = effects()
     strong["v"]["success"]["tests"]["size"] = exact([[19, 5], [15, 9]], p=0.01)
-    assert verdict(in_family(strong), "best_success_size") == "reproduced"
+    assert verdict(in_family(strong), "best_success_size") == "confirmed"
     # equal shares are not shown to differ: only an equivalence test says "no difference"
     same = effects(SAME)
     assert same["v"]["success"]["tests"]["size"]["table"] == [[19, 5], [19, 5]]
@@ -288,7 +288,7 @@ def test_an_exact_verdict_follows_its_counts_and_its_p():
 
 @pytest.mark.heavy
 def test_an_effect_that_cannot_be_estimated_says_so():
-    assert verdict(effects(), "best_contact_time_size") == "not estimable"
+    assert verdict(effects(), "best_contact_time_size") == "not assessable"
     row = rows(effects())["contact, s", "size"]
     assert row["test"] == "none" and approx(row, estimate=None, p=None, p_holm=None)
     values = pages._best_effects(effects()["v"])
@@ -308,8 +308,8 @@ def test_the_required_grip_term_and_the_misses_rest_on_the_cells_and_objects():
     ]
     assert page["best_success_interaction_estimate"] == pytest.approx(1 / 3)
     assert page["best_success_interaction_p"] == pytest.approx(0.004)
-    assert page["best_success_interaction"] == "shown"
-    assert page["best_contact_time_interaction"] == "not tested"
+    assert page["best_success_interaction"] == "confirmed"
+    assert page["best_contact_time_interaction"] == "not assessable"
     assert np.isnan(page["best_contact_time_interaction_p"])
     weak = effects()
     weak["v"]["success"]["tests"]["congruency:size"] = contrast(1 / 3, 0.045)

@@ -4,22 +4,18 @@
 # (Snakefile: ON_REQUEST); else `snakemake -c1 distractor` asks for it.
 
 
-def distractor_replications():
-    """Each of the confirmation's replications (RunPlan.claim_rows): its run's seed, model
-    inputs, settings and weights."""
-    return [
-        {
-            "seed": PLAN.config(row["run"])["seed"],
-            **model_inputs({"folder": PLAN.folder(row["run"])}),
-            "grip_distance": PLAN.config(row["run"])["grip_distance"],
-            "network": settings(PLAN.config(row["run"])["network"]),
-            "weights": weights_files(row["run"]),
-        }
-        for row in PLAN.claim_rows
-    ]
-
-
-DISTRACTOR_REPLICATIONS = distractor_replications()
+# each of the confirmation's replications (RunPlan.claim_rows): its run's seed, model inputs,
+# settings and weights
+DISTRACTOR_REPLICATIONS = [
+    {
+        "seed": PLAN.config(row["run"])["seed"],
+        **model_inputs({"folder": PLAN.folder(row["run"])}),
+        "grip_distance": PLAN.config(row["run"])["grip_distance"],
+        "network": settings(PLAN.config(row["run"])["network"]),
+        "weights": weights_files(row["run"]),
+    }
+    for row in PLAN.claim_rows
+]
 
 
 rule distractor:
