@@ -356,6 +356,20 @@ window.addEventListener("load", () => {
 </script>"""
 
 
+def looked_at(page: Path, script: str, report_id: str, chromium: str) -> list:
+    """What ``script``, run in ``page`` after load in headless Chromium at 1280 px, reports in
+    its ``<pre id=report_id>`` (JSON); the page is the copy's, changed in place."""
+    page.write_text(page.read_text().replace("</body>", script + "</body>"))
+    dom = subprocess.run(
+        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1280,2000",
+         "--virtual-time-budget=5000", "--dump-dom", page.as_uri()],
+        capture_output=True, text=True, timeout=120,
+    ).stdout  # fmt: skip
+    report = re.search(rf'<pre id="{report_id}"[^>]*>(.*?)</pre>', dom, re.S)
+    assert report, f"{page.stem}: the measuring script did not run"
+    return json.loads(html.unescape(report.group(1)))
+
+
 @pytest.mark.dryrun
 @pytest.mark.tool("chromium")
 def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
@@ -369,16 +383,7 @@ def test_no_table_or_figure_is_wider_than_the_text_column(built, tmp_path):
     shutil.copytree(built / HTML, site)
     too_wide = {}
     for name in toc_chapters():
-        page = site / f"{name}.html"
-        page.write_text(page.read_text().replace("</body>", MEASURE + "</body>"))
-        dom = subprocess.run(
-            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1280,2000",
-             "--virtual-time-budget=5000", "--dump-dom", page.as_uri()],
-            capture_output=True, text=True, timeout=120,
-        ).stdout  # fmt: skip
-        report = re.search(r'<pre id="width-report"[^>]*>(.*?)</pre>', dom, re.S)
-        assert report, f"{name}: the measuring script did not run"
-        found = json.loads(html.unescape(report.group(1)))
+        found = looked_at(site / f"{name}.html", MEASURE, "width-report", chromium)
         if found:
             too_wide[name] = found
     assert too_wide == {}
@@ -430,15 +435,7 @@ def figure_text_sizes(site: Path, chromium: str) -> list[dict]:
     sizes = []
     for name in toc_chapters():
         page = site / f"{name}.html"
-        page.write_text(page.read_text().replace("</body>", IMAGES + "</body>"))
-        dom = subprocess.run(
-            [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1280,2000",
-             "--virtual-time-budget=5000", "--dump-dom", page.as_uri()],
-            capture_output=True, text=True, timeout=120,
-        ).stdout  # fmt: skip
-        report = re.search(r'<pre id="image-report"[^>]*>(.*?)</pre>', dom, re.S)
-        assert report, f"{name}: the measuring script did not run"
-        for img in json.loads(html.unescape(report.group(1))):
+        for img in looked_at(page, IMAGES, "image-report", chromium):
             meta = png_text(page, img["src"])
             image = "inline image" if img["src"].startswith("data:") else Path(img["src"]).name
             effective = None

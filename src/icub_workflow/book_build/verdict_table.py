@@ -92,74 +92,41 @@ def study_rows(studies: Mapping[str, object]) -> list[dict]:
     rows: list[dict] = []
     for cue, anova in (studies.get("runs") or {}).items():
         rows += run_rows(cue, anova)
+    by_p = {  # a table read by its p (Holm within its family), on the estimate's side
+        "size": lambda r: f"size/{r['test']}/{_dose(r['dose'])}/{r['cue']}",
+        "size_metrics": lambda r: (
+            f"size_metric/{r['metric']}/{r['test']}/{_dose(r['dose'])}/{r['cue']}"
+        ),
+    }
     if "readings" in studies:
-        rows += [
-            {
-                "test": f"readings/{r['cue']}/{r['goal_response']}/{r['measure']}/{r['effect']}",
-                "family": r["family"],
-                "code": DIRECTION_CODES.get(reading_tests.direction(r), "not assessable"),
-            }
-            for r in studies["readings"].to_dict("records")
-            if reading_tests.is_hypothesis(r["measure"])
-        ]
-    if "size" in studies:
-        rows += [
-            {
-                "test": f"size/{r['test']}/{_dose(r['dose'])}/{r['cue']}",
-                "family": r["family"],
-                "code": _code(r["estimate"], r["p_holm"]),
-            }
-            for r in studies["size"].to_dict("records")
-        ]
-    if "size_metrics" in studies:
-        rows += [
-            {
-                "test": f"size_metric/{r['metric']}/{r['test']}/{_dose(r['dose'])}/{r['cue']}",
-                "family": r["family"],
-                "code": _code(r["estimate"], r["p_holm"]),
-            }
-            for r in studies["size_metrics"].to_dict("records")
-        ]
+        readings = studies["readings"]
+        rows += _named(
+            readings[readings["measure"].map(reading_tests.is_hypothesis)],
+            lambda r: f"readings/{r['cue']}/{r['goal_response']}/{r['measure']}/{r['effect']}",
+            lambda r: DIRECTION_CODES.get(reading_tests.direction(r), "not assessable"),
+        )
+    for study, test in by_p.items():
+        if study in studies:
+            rows += _named(studies[study], test, lambda r: _code(r["estimate"], r["p_holm"]))
     if "signatures" in studies:
         table = studies["signatures"]
-        rows += [
-            {
-                "test": f"signatures/{r['signature']}",
-                "family": r["family"],
-                "code": SIGNATURE_CODES[r["verdict"]],
-            }
-            for r in table[table["verdict"].notna() & (table["verdict"] != "")].to_dict("records")
-        ]
-        view = table[table["condition"].str.startswith("in view, all")]
-        rows += [
-            {"test": "signatures/in_view", "family": r["family"],
-             "code": _code(r["estimate"], r["p_adjusted"])}
-            for r in view.to_dict("records")
-        ]  # fmt: skip
+        verdicts = table[table["verdict"].notna() & (table["verdict"] != "")]
+        rows += _named(verdicts, lambda r: f"signatures/{r['signature']}",
+                       lambda r: SIGNATURE_CODES[r["verdict"]])  # fmt: skip
+        rows += _named(table[table["condition"].str.startswith("in view, all")],
+                       lambda r: "signatures/in_view",
+                       lambda r: _code(r["estimate"], r["p_adjusted"]))  # fmt: skip
     if "signature_errors" in studies:
-        rows += [
-            {
-                "test": f"signature_errors/{r['condition']}/{r['k']}",
-                "family": r["family"],
-                "code": _code(r["estimate"], r["p_adjusted"]),
-            }
-            for r in studies["signature_errors"].to_dict("records")
-        ]
+        rows += _named(studies["signature_errors"],
+                       lambda r: f"signature_errors/{r['condition']}/{r['k']}",
+                       lambda r: _code(r["estimate"], r["p_adjusted"]))  # fmt: skip
     if "words" in studies:
-        rows += [
-            {
-                "test": f"words/{r['cue']}/{r['mode']}/{r['measure']}/{r['test']}",
-                "family": r["family"],
-                "code": r["direction"],
-            }
-            for r in studies["words"].to_dict("records")
-        ]
+        rows += _named(studies["words"],
+                       lambda r: f"words/{r['cue']}/{r['mode']}/{r['measure']}/{r['test']}",
+                       lambda r: r["direction"])  # fmt: skip
     if "contact_time" in studies:
-        rows += [
-            {"test": f"robot/contact_time/{r['effect']}", "family": r["family"],
-             "code": r["direction"]}
-            for r in studies["contact_time"].to_dict("records")
-        ]  # fmt: skip
+        rows += _named(studies["contact_time"], lambda r: f"robot/contact_time/{r['effect']}",
+                       lambda r: r["direction"])  # fmt: skip
     if "confirmation" in studies:
         table = studies["confirmation"]
         rows += [
@@ -173,16 +140,17 @@ def study_rows(studies: Mapping[str, object]) -> list[dict]:
             for r in table[table["seed_set"] == "confirmation"].head(1).to_dict("records")
         ]
     if "distractor" in studies:
-        rows += [
-            {
-                "test": f"distractor/{float(r['lam'])}/{r['cue']}/{r['mode']}/{r['measure']}/"
-                f"{r['effect']}",
-                "family": r["family"],
-                "code": DIRECTION_CODES[Outcome(int(r["direction"]))],
-            }
-            for r in studies["distractor"].to_dict("records")
-        ]
+        rows += _named(studies["distractor"],
+                       lambda r: f"distractor/{float(r['lam'])}/{r['cue']}/{r['mode']}/"
+                       f"{r['measure']}/{r['effect']}",
+                       lambda r: DIRECTION_CODES[Outcome(int(r["direction"]))])  # fmt: skip
     return rows
+
+
+def _named(table: pd.DataFrame, test, code) -> list[dict]:
+    """A table's rows as tests: named by ``test(row)``, in their family, coded ``code(row)``."""
+    return [{"test": test(r), "family": r["family"], "code": code(r)}
+            for r in table.to_dict("records")]  # fmt: skip
 
 
 def run_rows(cue: str, anova: Mapping) -> list[dict]:
